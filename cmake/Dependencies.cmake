@@ -1,0 +1,31 @@
+# Every dependency comes from Debian 12's archive (scripts/install-deps.sh); nothing is vendored.
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(OpenMP REQUIRED)
+find_package(nlohmann_json 3.11 REQUIRED)
+find_package(CLI11 2.1 REQUIRED)
+find_package(muparser REQUIRED)
+find_package(PNG REQUIRED)
+find_package(OpenMesh REQUIRED)
+find_package(BLAS REQUIRED)
+
+# MUMPS (sequential) and UMFPACK ship no CMake package in Debian: locate them directly.
+find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
+find_path(MUMPS_SEQ_MPI_INCLUDE_DIR mpi.h PATHS /usr/include/mumps_seq NO_DEFAULT_PATH REQUIRED)
+find_library(DMUMPS_LIBRARY dmumps_seq REQUIRED)
+find_library(MUMPS_COMMON_LIBRARY mumps_common_seq REQUIRED)
+find_library(MUMPS_PORD_LIBRARY pord_seq REQUIRED)
+find_library(MUMPS_MPISEQ_LIBRARY mpiseq_seq REQUIRED)
+find_path(UMFPACK_INCLUDE_DIR umfpack.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(UMFPACK_LIBRARY umfpack REQUIRED)
+find_library(AMD_LIBRARY amd REQUIRED)
+find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
+find_library(METIS_LIBRARY metis REQUIRED)
+
+# Dependencies used only inside the library's sources: linked privately, never exported.
+add_library(fairsurf_private_deps INTERFACE)
+target_include_directories(fairsurf_private_deps SYSTEM INTERFACE
+  ${MUMPS_INCLUDE_DIR} ${MUMPS_SEQ_MPI_INCLUDE_DIR} ${UMFPACK_INCLUDE_DIR})
+target_link_libraries(fairsurf_private_deps INTERFACE
+  OpenMP::OpenMP_CXX nlohmann_json::nlohmann_json muparser::muparser PNG::PNG OpenMeshCore
+  ${DMUMPS_LIBRARY} ${MUMPS_COMMON_LIBRARY} ${MUMPS_PORD_LIBRARY} ${MUMPS_MPISEQ_LIBRARY}
+  ${UMFPACK_LIBRARY} ${AMD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY} ${METIS_LIBRARY} BLAS::BLAS)

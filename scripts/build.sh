@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Installs the dependencies (scripts/install-deps.sh) and builds fairsurf into build/ (Release).
+# The CLI ends up at build/bin/fairsurf. Extra arguments are passed to CMake's configure step.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@"
+cmake --build build -j "$(nproc)"

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs fairsurf's build and test dependencies from Debian 12's archive. Idempotent: packages that
+# are already present are left alone, and apt-get runs only when something is missing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev            # dense + sparse linear algebra, unsupported GMRES/ILUT
+  libopenmesh-dev          # halfedge editing for patch construction
+  libsuitesparse-dev       # UMFPACK (umfpack_dl) sparse LU
+  libmumps-seq-dev         # sequential MUMPS sparse LU (the default solver)
+  libmetis-dev             # fill-reducing ordering for UMFPACK
+  libopenblas-dev          # BLAS under MUMPS/UMFPACK (reference BLAS is 4-5x slower)
+  libcli11-dev             # command-line parsing
+  nlohmann-json3-dev       # --json output and logs
+  libmuparser-dev          # user formulas f(H,K)
+  libpng-dev               # PNG encoding for `fairsurf render`
+  libomp-dev               # OpenMP runtime headers
+  libgtest-dev libgmock-dev
+  libbenchmark-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ "${#missing[@]}" -gt 0 ]; then
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+echo "install-deps: all ${#packages[@]} packages present"

@@ -1,0 +1,25 @@
+#include "test_support.h"
+
+namespace fairsurf::test {
+
+std::string data_path(const std::string& name) { return std::string(FAIRSURF_DATA_DIR) + "/" + name; }
+
+std::string cli_path() { return FAIRSURF_CLI; }
+
+Mesh regular_grid(int nx, int ny, double h) {
+  Mesh m;
+  m.V.resize((nx + 1) * (ny + 1), 3);
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) m.V.row(j * (nx + 1) + i) << i * h, j * h, 0.0;
+  m.F.resize(2 * nx * ny, 3);
+  int f = 0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = j * (nx + 1) + i, b = a + 1, c = a + nx + 1, d = c + 1;
+      m.F.row(f++) << a, b, d;  // counter-clockwise seen from +z
+      m.F.row(f++) << a, d, c;
+    }
+  return m;
+}
+
+}  // namespace fairsurf::test

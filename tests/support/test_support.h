@@ -1,0 +1,21 @@
+// Test support shared by every test program: paths to bundled data and the CLI, and small
+// generated meshes. Analytic-surface generators for the numerical tests live beside this file.
+#pragma once
+
+#include <fairsurf/mesh.h>
+
+#include <string>
+
+namespace fairsurf::test {
+
+/// Absolute path of a mesh bundled in the repository's data/ folder.
+std::string data_path(const std::string& name);
+
+/// Absolute path of the built `fairsurf` CLI.
+std::string cli_path();
+
+/// A planar (nx+1) by (ny+1) vertex grid on [0, nx*h] x [0, ny*h], every quad split along the
+/// same diagonal, so that interior vertices have valence 6. Vertex (i, j) has index j*(nx+1)+i.
+Mesh regular_grid(int nx, int ny, double h = 1.0);
+
+}  // namespace fairsurf::test
