@@ -1,0 +1,54 @@
+// fairsurf — reading and writing meshes: OBJ, OFF, PLY (ASCII and binary), STL (ASCII and binary).
+//
+// The format is chosen by the file extension (case-insensitive). Reading is raw first: the file is
+// parsed into a polygon soup in file order, so that nothing is dropped silently (OpenMesh's readers
+// drop non-manifold faces with only a warning); vertex order is preserved exactly. Writing is atomic:
+// the file is written to a temporary file beside the target and renamed into place.
+#pragma once
+
+#include <fairsurf/mesh.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace fairsurf {
+
+/// A polygon soup exactly as stored in a file.
+struct RawMesh {
+  Vertices V;                              ///< #V by 3, in file order
+  std::vector<int> polygon_offsets{0};     ///< #P+1 offsets into polygon_indices
+  std::vector<int> polygon_indices;        ///< 0-based vertex indices, unchecked
+  std::map<std::string, Eigen::VectorXd> vertex_scalars;  ///< extra PLY vertex properties
+  Colors vertex_colors;                    ///< empty or #V by 3
+};
+
+/// What reading did beyond parsing, for the caller to report.
+struct ReadReport {
+  int polygons_triangulated = 0;   ///< polygons with more than 3 corners fanned into triangles
+  int triangles_added = 0;         ///< triangles those polygons became beyond one each
+  std::vector<std::string> notes;  ///< human-readable remarks (ignored lines, texture indices, ...)
+};
+
+/// Parses `path` into a polygon soup. Throws IoError (missing, unreadable, unknown extension) or
+/// ParseError (malformed or truncated, with the line or byte offset where it broke).
+RawMesh read_raw(const std::filesystem::path& path, ReadReport* report = nullptr);
+
+/// Triangulates a soup (polygons fanned from their first corner) into a Mesh; indices are copied as
+/// they are (validate() reports out-of-range ones). Polygons with fewer than 3 corners throw
+/// ParseError.
+Mesh triangulate(const RawMesh& raw, ReadReport* report = nullptr);
+
+/// read_raw followed by triangulate. No validation and no repair: vertex order is the file's.
+Mesh read_mesh(const std::filesystem::path& path, ReadReport* report = nullptr);
+
+struct WriteOptions {
+  bool binary = true;  ///< PLY and STL: binary (little-endian) or ASCII; ignored for OBJ and OFF
+};
+
+/// Writes `mesh` atomically in the format named by the extension of `path`. ASCII coordinates use
+/// 17 significant digits, so a round trip is exact. PLY carries vertex_scalars and vertex_colors.
+/// Throws IoError if the file cannot be written; the target is then left untouched.
+void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const WriteOptions& options = {});
+
+}  // namespace fairsurf
