@@ -77,7 +77,8 @@ constexpr std::size_t kTriangleBytes = 50;
 RawMesh read_binary(const Source& source, ReadReport& report) {
   const std::string_view bytes = source.bytes;
   if (bytes.size() < kHeaderBytes)
-    source.fail("file too short for a binary STL (" + std::to_string(bytes.size()) + " bytes, header needs 84)");
+    source.fail("unexpected end of file in the 84-byte binary STL header (" + std::to_string(bytes.size()) +
+                " bytes)");
   const std::uint64_t count = load_uint32(bytes.data() + 80);
   const std::uint64_t present = (bytes.size() - kHeaderBytes) / kTriangleBytes;
   if (present < count)
