@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace fairsurf {
 namespace {
@@ -120,28 +121,47 @@ void check_size(const QuadraticFits& fits, const Vertices& V, const char* functi
                           " vertices");
 }
 
-// Pattern N(i) ∪ {i} (empty rows where not fitted), copied into every operator.
-void build_pattern(const QuadraticFits& fits, SparseOperator& m) {
+// Row offsets of the pattern N(i) ∪ {i} (empty rows where not fitted).
+std::vector<int> pattern_offsets(const QuadraticFits& fits) {
   const int n = fits.num_vertices();
-  m.resize(n, n);
-  long nnz = 0;
+  std::vector<int> outer(n + 1, 0);
   for (int i = 0; i < n; ++i)
-    if (fits.neighbourhood[i] != Neighbourhood::kNotFitted) nnz += fits.neighbours.size(i) + 1;
-  m.resizeNonZeros(nnz);
-  std::fill(m.valuePtr(), m.valuePtr() + nnz, 0.0);
-  int* outer = m.outerIndexPtr();
-  int* inner = m.innerIndexPtr();
-  outer[0] = 0;
+    outer[i + 1] = outer[i] + (fits.neighbourhood[i] == Neighbourhood::kNotFitted
+                                   ? 0
+                                   : fits.neighbours.size(i) + 1);
+  return outer;
+}
+
+// Every operator of `ops`, in a fixed order: L∆, L□, G_x, G_y, G_z, D_x, D_y, D_z.
+std::array<SparseOperator*, 8> all_operators(SurfaceOperators& ops) {
+  return {&ops.laplace,         &ops.giaquinta,       &ops.gradient[0],        &ops.gradient[1],
+          &ops.gradient[2],     &ops.second_gradient[0], &ops.second_gradient[1],
+          &ops.second_gradient[2]};
+}
+
+// Sizes every operator for the pattern and writes its column indices (N(i) with i inserted in
+// order). Rows are filled in parallel, so the pages of the large arrays are first touched by the
+// threads that later write their values.
+void build_patterns(const QuadraticFits& fits, SurfaceOperators& ops) {
+  const int n = fits.num_vertices();
+  const std::vector<int> outer = pattern_offsets(fits);
+  const auto matrices = all_operators(ops);
+  for (SparseOperator* m : matrices) {
+    m->resize(n, n);
+    m->resizeNonZeros(outer.back());
+    std::copy(outer.begin(), outer.end(), m->outerIndexPtr());
+  }
+#pragma omp parallel for schedule(dynamic, 512)
   for (int i = 0; i < n; ++i) {
-    int pos = outer[i];
-    if (fits.neighbourhood[i] != Neighbourhood::kNotFitted) {
-      const auto row = fits.neighbours.row(i);
-      const auto split = std::lower_bound(row.begin(), row.end(), i);
-      pos = static_cast<int>(std::copy(row.begin(), split, inner + pos) - inner);
-      inner[pos++] = i;
-      pos = static_cast<int>(std::copy(split, row.end(), inner + pos) - inner);
+    if (outer[i] == outer[i + 1]) continue;
+    const auto row = fits.neighbours.row(i);
+    const auto split = std::lower_bound(row.begin(), row.end(), i);
+    for (SparseOperator* m : matrices) {
+      int* inner = m->innerIndexPtr() + outer[i];
+      inner = std::copy(row.begin(), split, inner);
+      *inner++ = i;
+      std::copy(split, row.end(), inner);
     }
-    outer[i + 1] = pos;
   }
 }
 
@@ -162,11 +182,9 @@ void write_operator_row(const QuadraticFits& fits, int i, const LocalGeometry* g
   const int start = ops.laplace.outerIndexPtr()[i];
   const int end = ops.laplace.outerIndexPtr()[i + 1];
   if (start == end) return;
-  std::array<double*, 8> values = {ops.laplace.valuePtr() + start, ops.giaquinta.valuePtr() + start};
-  for (int c = 0; c < 3; ++c) {
-    values[2 + c] = ops.gradient[c].valuePtr() + start;
-    values[5 + c] = ops.second_gradient[c].valuePtr() + start;
-  }
+  const auto matrices = all_operators(ops);
+  std::array<double*, 8> values;
+  for (int q = 0; q < 8; ++q) values[q] = matrices[q]->valuePtr() + start;
   if (geo == nullptr) {
     for (double* v : values) std::fill(v, v + (end - start), 0.0);
     return;
@@ -198,20 +216,16 @@ void write_operator_row(const QuadraticFits& fits, int i, const LocalGeometry* g
 SurfaceOperators compute_operators(const QuadraticFits& fits, const Vertices& V) {
   check_size(fits, V, "compute_operators");
   SurfaceOperators ops;
-  build_pattern(fits, ops.laplace);
-  ops.giaquinta = ops.laplace;
-  for (int c = 0; c < 3; ++c) ops.gradient[c] = ops.second_gradient[c] = ops.laplace;
+  build_patterns(fits, ops);
   update_operators(fits, V, ops);
   return ops;
 }
 
 void update_operators(const QuadraticFits& fits, const Vertices& V, SurfaceOperators& ops) {
   check_size(fits, V, "update_operators");
-  bool matches = same_pattern(fits, ops.laplace) && same_pattern(fits, ops.giaquinta);
-  for (int c = 0; c < 3; ++c)
-    matches = matches && same_pattern(fits, ops.gradient[c]) &&
-              same_pattern(fits, ops.second_gradient[c]);
-  if (!matches)
+  const auto matrices = all_operators(ops);
+  if (!std::all_of(matrices.begin(), matrices.end(),
+                   [&](const SparseOperator* m) { return same_pattern(fits, *m); }))
     throw InvalidArgument("update_operators: the operators were not built from these fits' pattern");
   evaluate_vertices(fits, V, ops.geometry,
                     [&](int i, const LocalGeometry* geo) { write_operator_row(fits, i, geo, ops); });

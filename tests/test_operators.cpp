@@ -295,3 +295,78 @@ TEST(Operators, SingleOperatorsConvergeAtLeastAtFirstOrderOnJitteredTori) {
   EXPECT_GE(p.gradient, 1.5);
   EXPECT_GE(p.second_gradient, 0.8);
 }
+
+TEST(Operators, NormalWeightedMatricesLinearizeHAndKWithFrozenStencils) {
+  // METHOD §5: for x' = x + d n with the stencils frozen, ½ n_i·(L∆x')_i = H_i + ½(A_H d)_i and
+  // ½ n_i·(L□x')_i = K_i + ½(A_K d)_i, exactly (the stencils are linear in the positions).
+  const auto torus = test::torus_grid(40, 20, 1.0, 0.4, 0.2);
+  const Mesh& m = torus.mesh;
+  const Evaluated e = evaluate(m);
+  const Vertices& n = e.ops.geometry.normal;
+  Eigen::VectorXd d(m.num_vertices());
+  for (int i = 0; i < d.size(); ++i) d[i] = 0.01 * std::sin(torus.uv(i, 0)) * std::cos(2 * torus.uv(i, 1));
+  const Vertices moved = m.V + d.asDiagonal() * n;
+  SparseOperator A_H, A_K;
+  normal_weighted(e.ops.laplace, n, A_H);
+  normal_weighted(e.ops.giaquinta, n, A_K);
+  ASSERT_EQ(A_H.nonZeros(), e.ops.laplace.nonZeros());
+  const Eigen::MatrixX3d LX = e.ops.laplace * moved, BX = e.ops.giaquinta * moved;
+  const Eigen::VectorXd AHd = A_H * d, AKd = A_K * d;
+  double worst_H = 0.0, worst_K = 0.0;
+  for (int i = 0; i < d.size(); ++i) {
+    worst_H = std::max(worst_H, std::abs(0.5 * n.row(i).dot(LX.row(i)) - e.ops.geometry.H[i] - 0.5 * AHd[i]));
+    worst_K = std::max(worst_K, std::abs(0.5 * n.row(i).dot(BX.row(i)) - e.ops.geometry.K[i] - 0.5 * AKd[i]));
+  }
+  EXPECT_LT(worst_H, 1e-12 * e.ops.geometry.H.cwiseAbs().maxCoeff());
+  EXPECT_LT(worst_K, 1e-12 * e.ops.geometry.K.cwiseAbs().maxCoeff());
+  // Same pattern, diagonal untouched, storage reused on the next call.
+  const double* values = A_H.valuePtr();
+  normal_weighted(e.ops.laplace, n, A_H);
+  EXPECT_EQ(A_H.valuePtr(), values);
+  EXPECT_EQ((Eigen::VectorXd(A_H.diagonal()) - Eigen::VectorXd(e.ops.laplace.diagonal())).norm(), 0.0);
+  EXPECT_THROW(normal_weighted(e.ops.laplace, Vertices(3, 3), A_H), InvalidArgument);
+}
+
+TEST(Operators, UpdateInPlaceEqualsAFreshEvaluation) {
+  const Mesh m = test::ellipsoid(3, 1.0, 0.8, 0.6);
+  Evaluated e = evaluate(m);
+  const double* values = e.ops.laplace.valuePtr();
+  const int* columns = e.ops.giaquinta.innerIndexPtr();
+  Vertices moved = m.V;
+  for (int i = 0; i < moved.rows(); ++i) moved.row(i) *= 1.0 + 0.03 * std::cos(2.0 * moved(i, 0));
+  refit_quadratics(e.fits, moved);
+  update_operators(e.fits, moved, e.ops);
+  EXPECT_EQ(e.ops.laplace.valuePtr(), values);
+  EXPECT_EQ(e.ops.giaquinta.innerIndexPtr(), columns);
+  const Topology topo = build_topology(m.F, m.num_vertices());
+  const SurfaceOperators fresh = compute_operators(fit_quadratics(moved, m.F, topo), moved);
+  EXPECT_EQ((fresh.laplace - e.ops.laplace).norm(), 0.0);
+  EXPECT_EQ((fresh.giaquinta - e.ops.giaquinta).norm(), 0.0);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ((fresh.gradient[c] - e.ops.gradient[c]).norm(), 0.0);
+    EXPECT_EQ((fresh.second_gradient[c] - e.ops.second_gradient[c]).norm(), 0.0);
+  }
+  EXPECT_EQ((fresh.geometry.H - e.ops.geometry.H).norm(), 0.0);
+  EXPECT_EQ((fresh.geometry.area - e.ops.geometry.area).norm(), 0.0);
+  // The vertex areas are topology.h's.
+  EXPECT_EQ((vertex_areas(moved, m.F) - e.ops.geometry.area).norm(), 0.0);
+  // Operators from other fits are refused.
+  const Mesh other = test::icosphere(2);
+  const Evaluated o = evaluate(other);
+  EXPECT_THROW(update_operators(o.fits, other.V, e.ops), InvalidArgument);
+}
+
+TEST(Operators, StencilRowsAnnihilateConstantsAndHaveTheNeighbourhoodPattern) {
+  const Mesh m = test::open_cylinder(20, 8, 1.0, 1.0);
+  const Evaluated e = evaluate(m);
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(m.num_vertices());
+  EXPECT_LT((e.ops.laplace * ones).cwiseAbs().maxCoeff(), 1e-10);
+  EXPECT_LT((e.ops.giaquinta * ones).cwiseAbs().maxCoeff(), 1e-10);
+  for (int i = 0; i < m.num_vertices(); ++i) {
+    std::vector<int> expected(e.fits.neighbours.row(i).begin(), e.fits.neighbours.row(i).end());
+    expected.insert(std::lower_bound(expected.begin(), expected.end(), i), i);
+    std::vector<int> actual;
+    for (SparseOperator::InnerIterator it(e.ops.gradient[1], i); it; ++it) actual.push_back(it.index());
+    ASSERT_EQ(actual, expected) << i;
+  }
+}

@@ -8,9 +8,10 @@
 //   (u_j, v_j) = ((x_j − x_i)·e1, (x_j − x_i)·e2), weights 1/r_j² with r_j² = u_j² + v_j².
 // The fit is linear in the data: a = C_i (x_j − x_i)_j, where C_i = (BᵀWB)⁻¹BᵀW is 5 × |N(i)|
 // (rows: the coefficients a1..a5; B has rows (u, v, u², uv, v²)). The same C_i fits any scalar f
-// from (f_j − f_i). Columns of B are scaled by (s, s, s², s², s²), s = rms r_j, before the
-// symmetric eigen-decomposition of the 5 × 5 scaled normal matrix, which gives a pseudo-inverse and
-// the 2-norm condition number of the scaled weighted least-squares problem, sqrt(λmax/λmin).
+// from (f_j − f_i). Columns of B are scaled by (s, s, s², s², s²), s = rms r_j, and the 5 × 5 scaled
+// normal matrix M = BₛᵀWBₛ is inverted by Cholesky; the recorded condition number is that of the
+// scaled weighted least-squares problem, estimated as sqrt(κ₁(M)) = sqrt(‖M‖₁‖M⁻¹‖₁) (within a
+// factor √5 of the 2-norm condition of W^½Bₛ).
 //
 // Neighbourhoods (METHOD §3.1): the 1-ring for an interior vertex of valence ≥ 5 whose 1-ring fit
 // has condition ≤ FitOptions::max_one_ring_condition; otherwise the 2-ring (1- and 2-ring vertices).
@@ -64,7 +65,8 @@ struct FitOptions {
   double max_one_ring_condition = 1e3;
   /// A fit whose condition number exceeds this is flagged kIllConditioned.
   double max_condition = 1e5;
-  /// A fit whose scaled normal matrix has λmin ≤ singular_tolerance · λmax is kDegenerate.
+  /// A fit whose scaled normal matrix is not positive definite, or has κ₁(M) ≥ 1/singular_tolerance,
+  /// is kDegenerate.
   double singular_tolerance = 1e-13;
 };
 
@@ -78,11 +80,11 @@ struct QuadraticFits {
   std::vector<Neighbourhood> neighbourhood;  ///< #V: which N(i) and why
   /// 5 × nnz(neighbours): the column of C_i for the k-th neighbour of row i is
   /// coefficients[5·(neighbours.offsets[i] + k) + r], r = 0..4 for a1..a5.
-  std::vector<double> coefficients;
+  Eigen::VectorXd coefficients;
   Vertices frame_normal;      ///< #V by 3: N0 (zero where not fitted or degenerate)
   Vertices frame_tangent1;    ///< #V by 3: e1
   Vertices frame_tangent2;    ///< #V by 3: e2 = N0 × e1
-  Eigen::VectorXd condition;  ///< #V: sqrt(λmax/λmin) of the scaled normal matrix (∞ if singular)
+  Eigen::VectorXd condition;  ///< #V: sqrt(κ₁(M)) of the scaled normal matrix M (∞ if singular)
   std::vector<FitStatus> status;  ///< #V
 
   // What re-fitting on new positions needs, copied so that the fits stand alone.
