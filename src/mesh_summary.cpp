@@ -35,6 +35,7 @@ MeshSummary summarize(const Mesh& mesh, const ValidationReport& report) {
     if (mesh.V.row(v).allFinite()) s.bounding_box.extend(mesh.V.row(v).transpose());
   }
   s.edges = static_cast<int>(topo.edges.rows());
+  for (int e = 0; e < s.edges; ++e) s.boundary_edges += topo.is_boundary_edge(e);
   for (const auto& loop : loops) s.boundary_loop_lengths.push_back(static_cast<int>(loop.size()));
   s.components = components.count;
   s.euler_characteristic = s.referenced_vertices - s.edges + static_cast<int>(F.rows());

@@ -19,8 +19,10 @@ struct MeshSummary {
   int referenced_vertices = 0;  ///< vertices used by a well-formed face
   int faces = 0;                ///< #F, every face record
   int edges = 0;                ///< undirected edges of the well-formed faces
-  /// Number of edges of each boundary loop (topology.h boundary_loops order). On a non-manifold
-  /// border the split into loops is only indicative.
+  int boundary_edges = 0;       ///< edges with exactly one face
+  /// Length in edges of each boundary loop (topology.h boundary_loops order). On a non-manifold
+  /// border (a vertex with more than two border edges) boundary_loops splits the border into
+  /// chains that need not close; the figure is then the chain's vertex count and only indicative.
   std::vector<int> boundary_loop_lengths;
   int components = 0;  ///< groups of faces connected through shared vertices
   /// V - E + F over referenced vertices and well-formed faces, summed over all components.
