@@ -1,9 +1,13 @@
 #include <fairsurf/errors.h>
+#include <fairsurf/io.h>
 #include <fairsurf/mesh_summary.h>
+#include <fairsurf/topology.h>
 #include <fairsurf/validate.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -369,4 +373,167 @@ TEST(MeshSummary, ReferencedVerticesAndNonFiniteVerticesInTheBox) {
   EXPECT_EQ(s.referenced_vertices, 4);
   EXPECT_EQ(s.euler_characteristic, 2);  // unreferenced vertices do not count
   EXPECT_EQ(s.bounding_box.max(), Eigen::Vector3d(9, 9, 9));
+}
+
+// ---- Bundled meshes (data/README.md): documented defects and topology figures ----
+
+namespace {
+
+struct Loaded {
+  Mesh mesh;
+  ValidationReport report;
+  MeshSummary summary;
+};
+
+Loaded load(const std::string& name) {
+  Loaded l;
+  l.mesh = read_mesh(test::data_path(name));
+  l.report = validate(l.mesh);
+  l.summary = summarize(l.mesh, l.report);
+  return l;
+}
+
+std::vector<int> sorted(std::vector<int> v) {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+}  // namespace
+
+TEST(ValidateData, StanfordBunnyZipperRes2) {
+  const Loaded l = load("stanford_bunny_zipper_res2.ply");
+  EXPECT_EQ(l.summary.vertices, 8171);
+  EXPECT_EQ(l.summary.faces, 16301);
+  EXPECT_EQ(l.report.non_manifold_edges.count, 150);
+  EXPECT_EQ(l.report.duplicate_faces.count, 87);
+  EXPECT_EQ(l.report.unreferenced_vertices.count, 25);
+  EXPECT_EQ(l.report.non_manifold_vertices.count, 0);
+  EXPECT_FALSE(l.report.manifold());
+  EXPECT_FALSE(l.summary.genus.has_value());
+}
+
+TEST(ValidateData, LagrangeProut) {
+  const Loaded l = load("lagrange_prout.obj");
+  EXPECT_EQ(l.summary.vertices, 1023);
+  EXPECT_EQ(l.summary.faces, 1937);
+  EXPECT_EQ(l.report.non_manifold_edges.count, 20);
+  EXPECT_EQ(l.report.non_manifold_vertices.count, 4);
+  EXPECT_EQ(l.report.duplicate_faces.count, 5);
+  EXPECT_EQ(l.report.inconsistent_orientation_edges.count, 18);
+}
+
+TEST(ValidateData, HourglassIcoHasOneNonManifoldVertex) {
+  const Loaded l = load("hourglass_ico.obj");
+  EXPECT_EQ(l.summary.vertices, 23);
+  EXPECT_EQ(l.summary.faces, 40);
+  EXPECT_EQ(l.report.non_manifold_vertices.count, 1);
+  EXPECT_EQ(l.report.non_manifold_edges.count, 0);
+  EXPECT_TRUE(l.summary.boundary_loop_lengths.empty());
+  // Every other finding is absent: the one defect is the shared vertex.
+  int others = 0;
+  for (const auto& named : named_findings(l.report))
+    if (named.finding != &l.report.non_manifold_vertices) others += named.finding->count;
+  EXPECT_EQ(others, 0);
+}
+
+TEST(ValidateData, TripleVierbeinHasTwentyNonManifoldEdges) {
+  const Loaded l = load("triple_vierbein.obj");
+  EXPECT_EQ(l.summary.vertices, 75);
+  EXPECT_EQ(l.summary.faces, 108);
+  EXPECT_EQ(l.report.non_manifold_edges.count, 20);
+}
+
+TEST(ValidateData, CgalDegtriSlidingHasFourZeroAreaTriangles) {
+  const Loaded l = load("cgal_degtri_sliding.off");
+  EXPECT_EQ(l.summary.vertices, 8);
+  EXPECT_EQ(l.summary.faces, 8);
+  EXPECT_EQ(l.report.degenerate_faces.count, 4);
+  EXPECT_EQ(l.summary.boundary_loop_lengths.size(), 1u);
+}
+
+TEST(ValidateData, CubeSoupIsSixComponentsWithSixteenDuplicatePositions) {
+  const Loaded l = load("cube_soup.obj");
+  EXPECT_EQ(l.summary.vertices, 24);
+  EXPECT_EQ(l.summary.faces, 12);
+  EXPECT_EQ(l.summary.components, 6);
+  EXPECT_EQ(l.report.duplicate_vertex_positions.count, 16);
+  EXPECT_EQ(l.summary.boundary_loop_lengths.size(), 6u);
+}
+
+TEST(ValidateData, MoebiusIsManifoldButNonOrientable) {
+  const Loaded l = load("moebius_160_10.ply");
+  EXPECT_EQ(l.summary.vertices, 1600);
+  EXPECT_EQ(l.summary.faces, 2880);
+  EXPECT_TRUE(l.report.manifold());
+  EXPECT_FALSE(l.report.orientable());
+  EXPECT_EQ(l.report.non_orientable_components.count, 1);
+  EXPECT_EQ(l.report.inconsistent_orientation_edges.count, 9);
+  EXPECT_EQ(l.summary.boundary_loop_lengths, (std::vector<int>{320}));
+  EXPECT_EQ(l.summary.euler_characteristic, 0);
+}
+
+// The manifold meshes of data/README.md's table: #V, #F, boundary loops (with their lengths where
+// the README gives them), components; all clean, orientable, and genus as documented.
+struct ManifoldCase {
+  const char* file;
+  int vertices, faces;
+  int loops;
+  std::vector<int> loop_lengths;  // sorted; empty when the README does not give them
+  int components;
+  int genus;
+  int unreferenced;
+};
+
+class ValidateManifoldData : public ::testing::TestWithParam<ManifoldCase> {};
+
+TEST_P(ValidateManifoldData, MatchesTheDataReadme) {
+  const ManifoldCase& c = GetParam();
+  const Loaded l = load(c.file);
+  EXPECT_EQ(l.summary.vertices, c.vertices);
+  EXPECT_EQ(l.summary.faces, c.faces);
+  EXPECT_EQ(static_cast<int>(l.summary.boundary_loop_lengths.size()), c.loops);
+  if (!c.loop_lengths.empty()) {
+    EXPECT_EQ(sorted(l.summary.boundary_loop_lengths), c.loop_lengths);
+  }
+  EXPECT_EQ(l.summary.components, c.components);
+  EXPECT_TRUE(l.report.manifold());
+  EXPECT_TRUE(l.report.orientable());
+  EXPECT_EQ(l.report.inconsistent_orientation_edges.count, 0);
+  EXPECT_EQ(l.report.unreferenced_vertices.count, c.unreferenced);
+  EXPECT_EQ(l.summary.genus, c.genus);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Readme, ValidateManifoldData,
+    ::testing::Values(
+        ManifoldCase{"stanford_bunny_zipper.obj", 35947, 69451, 5, {}, 1, 0, 1113},
+        ManifoldCase{"cgal_mech_holes_shark.off", 5246, 10192, 4, {48, 80, 80, 96}, 1, 0, 0},
+        ManifoldCase{"demosthenes_scan_lowres.obj", 8394, 16719, 1, {67}, 1, 0, 0},
+        ManifoldCase{"airplane_holes.obj", 8519, 16747, 27, {}, 1, 0, 0},
+        ManifoldCase{"airplane.obj", 8730, 17456, 0, {}, 1, 0, 0},
+        ManifoldCase{"blub_open.obj", 5857, 11648, 1, {64}, 1, 0, 0},
+        ManifoldCase{"blub.obj", 7106, 14208, 0, {}, 1, 0, 0},
+        ManifoldCase{"spot.obj", 2930, 5856, 0, {}, 1, 0, 0},
+        ManifoldCase{"torus.obj", 2304, 4608, 0, {}, 1, 1, 0},
+        ManifoldCase{"sphere_16k.off", 16070, 32136, 0, {}, 1, 0, 0},
+        ManifoldCase{"hammer_rawscan.obj", 30082, 60160, 0, {}, 1, 0, 0},
+        ManifoldCase{"fairing_cross.off", 4983, 9762, 4, {52, 52, 52, 52}, 1, 0, 0},
+        ManifoldCase{"hemisphere.off", 1861, 3600, 1, {120}, 1, 0, 0},
+        ManifoldCase{"hand_lowres.obj", 810, 1602, 1, {16}, 1, 0, 0},
+        ManifoldCase{"cgal_blobby_3cc.off", 1820, 3417, 4, {}, 3, 0, 0}),
+    [](const auto& info) {
+      std::string name = info.param.file;
+      std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(ch); }, '_');
+      return name;
+    });
+
+TEST(ValidateData, BlobbyLoopsSplitTwoCapsAndOneBand) {
+  // Two end caps with one loop each and a middle band with two (data/README.md).
+  const Loaded l = load("cgal_blobby_3cc.off");
+  const Faces F = l.mesh.F;
+  const Topology topo = build_topology(F, l.mesh.num_vertices());
+  const Components comps = connected_components(F, topo);
+  std::vector<int> loops_per_component(comps.count, 0);
+  for (const auto& loop : boundary_loops(F, topo)) ++loops_per_component[comps.vertex_component[loop[0]]];
+  EXPECT_EQ(sorted(loops_per_component), (std::vector<int>{1, 1, 2}));
 }
