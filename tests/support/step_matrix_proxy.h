@@ -18,7 +18,8 @@ inline Eigen::SparseMatrix<double, Eigen::RowMajor> step_matrix_proxy(int n, dou
   const int size = n * n;
   const auto index = [n](int i, int j) { return ((j + n) % n) * n + (i + n) % n; };
   // The six neighbours of a vertex on a grid whose quads are split along the (1, 1) diagonal.
-  constexpr std::array<std::array<int, 2>, 6> kNeighbours{{{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {-1, -1}}};
+  constexpr std::array<std::array<int, 2>, 6> kNeighbours{
+      {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {-1, -1}}};
   std::vector<Eigen::Triplet<double>> laplacian, difference;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
