@@ -55,18 +55,21 @@ std::string error_text(int error) { return std::strerror(error); }
 // Owns the temporary file until it has been renamed onto the target; removes it otherwise.
 class TemporaryFile {
  public:
-  explicit TemporaryFile(const std::filesystem::path& target) {
+  TemporaryFile(const std::filesystem::path& target, const std::string& caller) : caller_(caller) {
     static std::atomic<unsigned> counter{0};
     const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
     for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
-      path_ = dir / (std::string(".") + target.filename().string() + ".tmp." + std::to_string(::getpid()) + "." +
-                     std::to_string(counter++));
+      // Built with append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
+      std::string name(".");
+      name.append(target.filename().string()).append(".tmp.").append(std::to_string(::getpid()));
+      name.append(".").append(std::to_string(counter++));
+      path_ = dir / name;
       // 0666 lets the process umask decide the permissions, as for any newly created file.
       fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
       if (fd_ < 0 && errno != EEXIST) break;
     }
     if (fd_ < 0)
-      throw IoError("write_mesh: " + target.string() + ": cannot create a temporary file in '" +
+      throw IoError(caller_ + ": " + target.string() + ": cannot create a temporary file in '" +
                     dir.string() + "' (" + error_text(errno) + ")");
   }
   TemporaryFile(const TemporaryFile&) = delete;
@@ -79,7 +82,7 @@ class TemporaryFile {
   /// Writes everything, flushes it to disk and renames the file onto `target`.
   void commit(const std::string& bytes, const std::filesystem::path& target) {
     const auto fail = [&](const char* step) {
-      throw IoError("write_mesh: " + target.string() + ": " + step + " failed (" + error_text(errno) + ")");
+      throw IoError(caller_ + ": " + target.string() + ": " + step + " failed (" + error_text(errno) + ")");
     };
     std::size_t done = 0;
     while (done < bytes.size()) {
@@ -97,6 +100,7 @@ class TemporaryFile {
   }
 
  private:
+  std::string caller_;
   std::filesystem::path path_;
   int fd_ = -1;
   bool committed_ = false;
@@ -201,7 +205,12 @@ void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const Write
     case Format::kPly: io_detail::write_ply(mesh, options.binary, bytes); break;
     case Format::kStl: io_detail::write_stl(mesh, options.binary, bytes); break;
   }
-  TemporaryFile temporary(path);
+  write_file_atomically(path, bytes, "write_mesh");
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& bytes,
+                           const std::string& caller) {
+  TemporaryFile temporary(path, caller);
   temporary.commit(bytes, path);
 }
 

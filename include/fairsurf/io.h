@@ -57,4 +57,11 @@ struct WriteOptions {
 /// STL stores float32 coordinates: writing it rounds every coordinate to float.
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const WriteOptions& options = {});
 
+/// Writes `bytes` to `path` atomically: into a temporary file beside it, flushed to disk, then renamed
+/// onto it. On failure the temporary file is removed, an existing file at `path` is left untouched,
+/// and IoError is thrown with a message that starts with `caller` (the public function writing).
+/// Every output of the library and the CLI (meshes, images, logs) goes through it.
+void write_file_atomically(const std::filesystem::path& path, const std::string& bytes,
+                           const std::string& caller);
+
 }  // namespace fairsurf
