@@ -1,0 +1,273 @@
+// The rasterizer: orthographic projection, a z-buffer filled band by band, then per-sample Phong
+// shading (interpolated vertex normals and an interpolated scalar looked up in the colour table),
+// box-filtered down to pixels.
+//
+// Robustness and determinism: vertices are snapped to a fixed-point grid of 1/256 sample, so edge
+// functions are exact 64-bit integers; a sample on a shared edge is covered by both triangles (no
+// cracks) and the nearer one wins, ties going to the smaller face index. Each z-buffer band and each
+// output row is owned by one thread, and every sample's value is a function of the scene alone, so
+// the image does not depend on the number of threads or on their scheduling.
+#include "render_internal.h"
+
+#include <fairsurf/topology.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace fairsurf::render_detail {
+namespace {
+
+constexpr std::int64_t kFixedOne = 256;           // fixed-point units per sample
+constexpr std::int64_t kFixedHalf = kFixedOne / 2;  // sample centres sit at half-integers
+constexpr double kMaxSampleCoordinate = 1e6;     // keeps products of fixed coordinates in int64
+constexpr int kBandRows = 32;
+constexpr Rgb8 kWireColor{35, 35, 35};
+
+struct ProjectedMesh {
+  std::vector<std::int64_t> fx, fy;  ///< #V fixed-point sample coordinates (x right, y down)
+  std::vector<double> depth;         ///< #V camera z (toward the viewer: larger is nearer)
+  std::vector<char> valid;           ///< #V finite and on the fixed-point grid's safe range
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> normals;  ///< #V camera-space unit
+};
+
+ProjectedMesh project(const Mesh& mesh, const PanelCamera& camera) {
+  const int n = mesh.num_vertices();
+  ProjectedMesh p;
+  p.fx.resize(n);
+  p.fy.resize(n);
+  p.depth.resize(n);
+  p.valid.resize(n);
+#pragma omp parallel for schedule(static)
+  for (int v = 0; v < n; ++v) {
+    const Eigen::Vector3d c = camera.rotation * mesh.V.row(v).transpose();
+    const double x = 0.5 * camera.width + camera.scale * (c.x() - camera.center_world.x());
+    const double y = 0.5 * camera.height - camera.scale * (c.y() - camera.center_world.y());
+    p.valid[v] = std::isfinite(x) && std::isfinite(y) && std::isfinite(c.z()) &&
+                 std::abs(x) < kMaxSampleCoordinate && std::abs(y) < kMaxSampleCoordinate;
+    p.fx[v] = p.valid[v] ? std::llround(x * kFixedOne) : 0;
+    p.fy[v] = p.valid[v] ? std::llround(y * kFixedOne) : 0;
+    p.depth[v] = c.z();
+  }
+  // Area-weighted vertex normals, rotated into camera space.
+  Eigen::MatrixX3d face_normals;
+  Eigen::VectorXd face_areas;
+  face_normals_and_areas(mesh.V, mesh.F, face_normals, face_areas);
+  p.normals.setZero(n, 3);
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    if (std::isfinite(face_areas[f]))
+      for (int k = 0; k < 3; ++k) p.normals.row(mesh.F(f, k)) += face_areas[f] * face_normals.row(f);
+#pragma omp parallel for schedule(static)
+  for (int v = 0; v < n; ++v) {
+    const Eigen::Vector3d c = camera.rotation * p.normals.row(v).transpose();
+    const double norm = c.norm();
+    p.normals.row(v) = norm > 0 ? Eigen::Vector3d(c / norm) : Eigen::Vector3d(0, 0, 1);
+  }
+  return p;
+}
+
+/// The visible face of every sample (-1: background) and its depth.
+struct ZBuffer {
+  int width = 0, height = 0;
+  std::vector<double> depth;
+  std::vector<int> face;
+};
+
+/// A triangle on the fixed-point grid with its three edge functions; vertex order is made
+/// counter-clockwise in sample space (positive doubled area) so "inside" is all edges >= 0.
+struct ScreenTriangle {
+  std::array<int, 3> corner;  ///< mesh vertex per corner
+  std::array<std::int64_t, 3> x, y;
+  std::int64_t area2 = 0;
+
+  ScreenTriangle(const Mesh& mesh, const ProjectedMesh& p, int f) {
+    for (int k = 0; k < 3; ++k) {
+      corner[k] = mesh.F(f, k);
+      x[k] = p.fx[corner[k]];
+      y[k] = p.fy[corner[k]];
+    }
+    area2 = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+    if (area2 < 0) {
+      std::swap(corner[1], corner[2]);
+      std::swap(x[1], x[2]);
+      std::swap(y[1], y[2]);
+      area2 = -area2;
+    }
+  }
+  /// Edge function of the edge opposite corner k at fixed-point (px, py); its barycentric weight
+  /// is edge(k) / area2.
+  std::int64_t edge(int k, std::int64_t px, std::int64_t py) const {
+    const int a = (k + 1) % 3, b = (k + 2) % 3;
+    return (x[b] - x[a]) * (py - y[a]) - (y[b] - y[a]) * (px - x[a]);
+  }
+};
+
+bool face_drawable(const Mesh& mesh, const ProjectedMesh& p, int f) {
+  return p.valid[mesh.F(f, 0)] && p.valid[mesh.F(f, 1)] && p.valid[mesh.F(f, 2)];
+}
+
+/// First and last sample index whose centre lies in [lo, hi] (fixed-point), clipped to [0, n-1].
+std::pair<int, int> sample_span(std::int64_t lo, std::int64_t hi, int n) {
+  const auto first = (lo - kFixedHalf + kFixedOne - 1) / kFixedOne;  // ceil for lo >= kFixedHalf
+  const auto last = (hi - kFixedHalf) / kFixedOne;
+  const std::int64_t clipped_first = lo < kFixedHalf ? 0 : first;
+  return {static_cast<int>(std::max<std::int64_t>(0, clipped_first)),
+          static_cast<int>(std::min<std::int64_t>(n - 1, hi < kFixedHalf ? -1 : last))};
+}
+
+std::pair<int, int> row_span(const Mesh& mesh, const ProjectedMesh& p, int f, int height) {
+  const auto [lo, hi] = std::minmax({p.fy[mesh.F(f, 0)], p.fy[mesh.F(f, 1)], p.fy[mesh.F(f, 2)]});
+  return sample_span(lo, hi, height);
+}
+
+void rasterize_face(const Mesh& mesh, const ProjectedMesh& p, int f, int row_begin, int row_end,
+                    ZBuffer& z) {
+  const ScreenTriangle t(mesh, p, f);
+  if (t.area2 == 0) return;
+  const auto [x_lo, x_hi] = std::minmax({t.x[0], t.x[1], t.x[2]});
+  const auto [y_lo, y_hi] = std::minmax({t.y[0], t.y[1], t.y[2]});
+  const auto [i0, i1] = sample_span(x_lo, x_hi, z.width);
+  auto [j0, j1] = sample_span(y_lo, y_hi, z.height);
+  j0 = std::max(j0, row_begin);
+  j1 = std::min(j1, row_end - 1);
+  const double inv_area = 1.0 / static_cast<double>(t.area2);
+  const std::array<double, 3> depth{p.depth[t.corner[0]], p.depth[t.corner[1]], p.depth[t.corner[2]]};
+  for (int j = j0; j <= j1; ++j) {
+    const std::int64_t py = j * kFixedOne + kFixedHalf;
+    for (int i = i0; i <= i1; ++i) {
+      const std::int64_t px = i * kFixedOne + kFixedHalf;
+      const std::int64_t e0 = t.edge(0, px, py), e1 = t.edge(1, px, py), e2 = t.edge(2, px, py);
+      if (e0 < 0 || e1 < 0 || e2 < 0) continue;
+      const double d = (e0 * depth[0] + e1 * depth[1] + e2 * depth[2]) * inv_area;
+      const std::size_t s = static_cast<std::size_t>(j) * z.width + i;
+      if (d > z.depth[s] || (d == z.depth[s] && f < z.face[s])) {
+        z.depth[s] = d;
+        z.face[s] = f;
+      }
+    }
+  }
+}
+
+ZBuffer rasterize(const Mesh& mesh, const ProjectedMesh& p, int width, int height) {
+  ZBuffer z{width, height,
+            std::vector<double>(static_cast<std::size_t>(width) * height,
+                                -std::numeric_limits<double>::infinity()),
+            std::vector<int>(static_cast<std::size_t>(width) * height, -1)};
+  // Bin faces by the bands of rows they touch (counting sort, faces in index order per band).
+  const int bands = (height + kBandRows - 1) / kBandRows;
+  std::vector<int> offsets(bands + 1, 0);
+  const auto for_each_band_of = [&](auto&& visit) {
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+      if (!face_drawable(mesh, p, f)) continue;
+      const auto [j0, j1] = row_span(mesh, p, f, height);
+      for (int b = j0 / kBandRows; j0 <= j1 && b <= j1 / kBandRows; ++b) visit(f, b);
+    }
+  };
+  for_each_band_of([&](int, int b) { ++offsets[b + 1]; });
+  for (int b = 0; b < bands; ++b) offsets[b + 1] += offsets[b];
+  std::vector<int> binned(offsets[bands]);
+  std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+  for_each_band_of([&](int f, int b) { binned[fill[b]++] = f; });
+
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int b = 0; b < bands; ++b) {
+    const int row_begin = b * kBandRows, row_end = std::min(height, row_begin + kBandRows);
+    for (int k = offsets[b]; k < offsets[b + 1]; ++k) rasterize_face(mesh, p, binned[k], row_begin, row_end, z);
+  }
+  return z;
+}
+
+/// Shades one covered sample; returns its colour.
+class SampleShader {
+ public:
+  SampleShader(const Mesh& mesh, const Eigen::VectorXd& values, const ProjectedMesh& p,
+               const ShadeOptions& options)
+      : mesh_(mesh), values_(values), p_(p), options_(options) {}
+
+  Rgb8 shade(int f, int i, int j) const {
+    const ScreenTriangle t(mesh_, p_, f);
+    const std::int64_t px = i * kFixedOne + kFixedHalf, py = j * kFixedOne + kFixedHalf;
+    const double inv_area = 1.0 / static_cast<double>(t.area2);
+    std::array<double, 3> w{};
+    for (int k = 0; k < 3; ++k) w[k] = static_cast<double>(t.edge(k, px, py)) * inv_area;
+    std::array<double, 3> rgb = base_color(t, w);
+    if (options_.shading) light(t, w, rgb);
+    if (options_.wireframe && near_edge(t, px, py)) rgb = {double(kWireColor.r), double(kWireColor.g), double(kWireColor.b)};
+    return {to_byte(rgb[0]), to_byte(rgb[1]), to_byte(rgb[2])};
+  }
+
+ private:
+  static std::uint8_t to_byte(double c) { return static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0, 255.0))); }
+
+  std::array<double, 3> base_color(const ScreenTriangle& t, const std::array<double, 3>& w) const {
+    Rgb8 c = kGrey;
+    if (options_.color_map != ColorMap::none && values_.size() > 0) {
+      const double value = w[0] * values_[t.corner[0]] + w[1] * values_[t.corner[1]] + w[2] * values_[t.corner[2]];
+      c = map_color(options_.color_map, value, options_.range);
+    }
+    return {double(c.r), double(c.g), double(c.b)};
+  }
+
+  // Headlight from the upper left: ambient + Lambert + Blinn-Phong highlight; two-sided, so the
+  // inside of an open surface is lit like the outside.
+  void light(const ScreenTriangle& t, const std::array<double, 3>& w, std::array<double, 3>& rgb) const {
+    Eigen::Vector3d n = w[0] * p_.normals.row(t.corner[0]) + w[1] * p_.normals.row(t.corner[1]) +
+                        w[2] * p_.normals.row(t.corner[2]);
+    const double norm = n.norm();
+    n = norm > 0 ? Eigen::Vector3d(n / norm) : Eigen::Vector3d(0, 0, 1);
+    if (n.z() < 0) n = -n;
+    static const Eigen::Vector3d kLight = Eigen::Vector3d(-0.3, 0.4, 1.0).normalized();
+    static const Eigen::Vector3d kHalf = (kLight + Eigen::Vector3d(0, 0, 1)).normalized();
+    const double diffuse = std::max(0.0, n.dot(kLight));
+    double highlight = std::max(0.0, n.dot(kHalf));
+    for (int k = 0; k < 5; ++k) highlight *= highlight;  // exponent 32
+    const double intensity = 0.3 + 0.7 * diffuse;
+    for (double& c : rgb) c = c * intensity + 60.0 * highlight;
+  }
+
+  bool near_edge(const ScreenTriangle& t, std::int64_t px, std::int64_t py) const {
+    for (int k = 0; k < 3; ++k) {
+      const int a = (k + 1) % 3, b = (k + 2) % 3;
+      const double length = std::hypot(double(t.x[b] - t.x[a]), double(t.y[b] - t.y[a]));
+      const double distance = static_cast<double>(t.edge(k, px, py)) / length / kFixedOne;
+      if (distance < options_.wire_half_width) return true;
+    }
+    return false;
+  }
+
+  const Mesh& mesh_;
+  const Eigen::VectorXd& values_;
+  const ProjectedMesh& p_;
+  const ShadeOptions& options_;
+};
+
+}  // namespace
+
+void draw_panel(const Mesh& mesh, const Eigen::VectorXd& values, const PanelCamera& camera,
+                const ShadeOptions& shade, int supersampling, Image& image, int x0, int y0) {
+  const ProjectedMesh p = project(mesh, camera);
+  const ZBuffer z = rasterize(mesh, p, camera.width, camera.height);
+  const SampleShader shader(mesh, values, p, shade);
+  const int out_w = camera.width / supersampling, out_h = camera.height / supersampling;
+  const int samples = supersampling * supersampling;
+#pragma omp parallel for schedule(dynamic, 4)
+  for (int y = 0; y < out_h; ++y) {
+    for (int x = 0; x < out_w; ++x) {
+      std::array<int, 3> sum{0, 0, 0};
+      for (int sj = 0; sj < supersampling; ++sj)
+        for (int si = 0; si < supersampling; ++si) {
+          const int i = x * supersampling + si, j = y * supersampling + sj;
+          const int f = z.face[static_cast<std::size_t>(j) * z.width + i];
+          const Rgb8 c = f < 0 ? shade.background : shader.shade(f, i, j);
+          sum[0] += c.r;
+          sum[1] += c.g;
+          sum[2] += c.b;
+        }
+      const std::size_t o = 3 * (static_cast<std::size_t>(y0 + y) * image.width + (x0 + x));
+      for (int k = 0; k < 3; ++k) image.rgb[o + k] = static_cast<std::uint8_t>((sum[k] + samples / 2) / samples);
+    }
+  }
+}
+
+}  // namespace fairsurf::render_detail
