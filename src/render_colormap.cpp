@@ -149,7 +149,7 @@ Rgb8 map_color(ColorMap map, double value, const ColorRange& range) {
   if (map == ColorMap::none) return kGrey;
   if (!std::isfinite(value)) return kNoDataColor;
   const double t = std::clamp((value - range.lo) / (range.hi - range.lo), 0.0, 1.0);
-  return render_detail::color_table(map)[static_cast<std::size_t>(std::lround(t * (kTableSize - 1)))];
+  return render_detail::color_table(map)[static_cast<std::size_t>(t * (kTableSize - 1) + 0.5)];
 }
 
 namespace render_detail {

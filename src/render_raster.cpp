@@ -22,7 +22,7 @@ namespace {
 constexpr std::int64_t kFixedOne = 256;           // fixed-point units per sample
 constexpr std::int64_t kFixedHalf = kFixedOne / 2;  // sample centres sit at half-integers
 constexpr double kMaxSampleCoordinate = 1e6;     // keeps products of fixed coordinates in int64
-constexpr int kBandRows = 32;
+constexpr int kBandPixelRows = 8;  // output pixel rows per z-buffer band
 constexpr Rgb8 kWireColor{35, 35, 35};
 
 struct ProjectedMesh {
@@ -46,8 +46,8 @@ ProjectedMesh project(const Mesh& mesh, const PanelCamera& camera) {
     const double y = 0.5 * camera.height - camera.scale * (c.y() - camera.center_world.y());
     p.valid[v] = std::isfinite(x) && std::isfinite(y) && std::isfinite(c.z()) &&
                  std::abs(x) < kMaxSampleCoordinate && std::abs(y) < kMaxSampleCoordinate;
-    p.fx[v] = p.valid[v] ? std::llround(x * kFixedOne) : 0;
-    p.fy[v] = p.valid[v] ? std::llround(y * kFixedOne) : 0;
+    p.fx[v] = p.valid[v] ? static_cast<std::int64_t>(std::floor(x * kFixedOne + 0.5)) : 0;
+    p.fy[v] = p.valid[v] ? static_cast<std::int64_t>(std::floor(y * kFixedOne + 0.5)) : 0;
     p.depth[v] = c.z();
   }
   // Area-weighted vertex normals, rotated into camera space.
@@ -66,13 +66,6 @@ ProjectedMesh project(const Mesh& mesh, const PanelCamera& camera) {
   }
   return p;
 }
-
-/// The visible face of every sample (-1: background) and its depth.
-struct ZBuffer {
-  int width = 0, height = 0;
-  std::vector<double> depth;
-  std::vector<int> face;
-};
 
 /// A triangle on the fixed-point grid with its three edge functions; vertex order is made
 /// counter-clockwise in sample space (positive doubled area) so "inside" is all edges >= 0.
@@ -121,26 +114,42 @@ std::pair<int, int> row_span(const Mesh& mesh, const ProjectedMesh& p, int f, in
   return sample_span(lo, hi, height);
 }
 
-void rasterize_face(const Mesh& mesh, const ProjectedMesh& p, int f, int row_begin, int row_end,
-                    ZBuffer& z) {
+/// The z-buffer of one band of sample rows: depth and visible face (-1: background) per sample.
+struct BandBuffer {
+  int width = 0, row_begin = 0, rows = 0;
+  std::vector<double> depth;
+  std::vector<int> face;
+
+  void reset(int band_width, int band_row_begin, int band_rows) {
+    width = band_width;
+    row_begin = band_row_begin;
+    rows = band_rows;
+    depth.assign(static_cast<std::size_t>(width) * rows, -std::numeric_limits<double>::infinity());
+    face.assign(static_cast<std::size_t>(width) * rows, -1);
+  }
+  int face_at(int i, int j) const { return face[static_cast<std::size_t>(j - row_begin) * width + i]; }
+};
+
+void rasterize_face(const Mesh& mesh, const ProjectedMesh& p, int f, BandBuffer& z) {
   const ScreenTriangle t(mesh, p, f);
   if (t.area2 == 0) return;
   const auto [x_lo, x_hi] = std::minmax({t.x[0], t.x[1], t.x[2]});
   const auto [y_lo, y_hi] = std::minmax({t.y[0], t.y[1], t.y[2]});
   const auto [i0, i1] = sample_span(x_lo, x_hi, z.width);
-  auto [j0, j1] = sample_span(y_lo, y_hi, z.height);
-  j0 = std::max(j0, row_begin);
-  j1 = std::min(j1, row_end - 1);
+  auto [j0, j1] = sample_span(y_lo, y_hi, z.row_begin + z.rows);
+  j0 = std::max(j0, z.row_begin);
   const double inv_area = 1.0 / static_cast<double>(t.area2);
   const std::array<double, 3> depth{p.depth[t.corner[0]], p.depth[t.corner[1]], p.depth[t.corner[2]]};
+  std::array<std::int64_t, 3> step{};  // change of each edge function from one sample to the next
+  for (int k = 0; k < 3; ++k) step[k] = -(t.y[(k + 2) % 3] - t.y[(k + 1) % 3]) * kFixedOne;
   for (int j = j0; j <= j1; ++j) {
-    const std::int64_t py = j * kFixedOne + kFixedHalf;
-    for (int i = i0; i <= i1; ++i) {
-      const std::int64_t px = i * kFixedOne + kFixedHalf;
-      const std::int64_t e0 = t.edge(0, px, py), e1 = t.edge(1, px, py), e2 = t.edge(2, px, py);
-      if (e0 < 0 || e1 < 0 || e2 < 0) continue;
-      const double d = (e0 * depth[0] + e1 * depth[1] + e2 * depth[2]) * inv_area;
-      const std::size_t s = static_cast<std::size_t>(j) * z.width + i;
+    const std::int64_t py = j * kFixedOne + kFixedHalf, px = i0 * kFixedOne + kFixedHalf;
+    std::array<std::int64_t, 3> e{t.edge(0, px, py), t.edge(1, px, py), t.edge(2, px, py)};
+    const std::size_t row = static_cast<std::size_t>(j - z.row_begin) * z.width;
+    for (int i = i0; i <= i1; ++i, e[0] += step[0], e[1] += step[1], e[2] += step[2]) {
+      if (e[0] < 0 || e[1] < 0 || e[2] < 0) continue;
+      const double d = (e[0] * depth[0] + e[1] * depth[1] + e[2] * depth[2]) * inv_area;
+      const std::size_t s = row + i;
       if (d > z.depth[s] || (d == z.depth[s] && f < z.face[s])) {
         z.depth[s] = d;
         z.face[s] = f;
@@ -149,34 +158,34 @@ void rasterize_face(const Mesh& mesh, const ProjectedMesh& p, int f, int row_beg
   }
 }
 
-ZBuffer rasterize(const Mesh& mesh, const ProjectedMesh& p, int width, int height) {
-  ZBuffer z{width, height,
-            std::vector<double>(static_cast<std::size_t>(width) * height,
-                                -std::numeric_limits<double>::infinity()),
-            std::vector<int>(static_cast<std::size_t>(width) * height, -1)};
-  // Bin faces by the bands of rows they touch (counting sort, faces in index order per band).
-  const int bands = (height + kBandRows - 1) / kBandRows;
-  std::vector<int> offsets(bands + 1, 0);
-  const auto for_each_band_of = [&](auto&& visit) {
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-      if (!face_drawable(mesh, p, f)) continue;
-      const auto [j0, j1] = row_span(mesh, p, f, height);
-      for (int b = j0 / kBandRows; j0 <= j1 && b <= j1 / kBandRows; ++b) visit(f, b);
-    }
-  };
-  for_each_band_of([&](int, int b) { ++offsets[b + 1]; });
-  for (int b = 0; b < bands; ++b) offsets[b + 1] += offsets[b];
-  std::vector<int> binned(offsets[bands]);
-  std::vector<int> fill(offsets.begin(), offsets.end() - 1);
-  for_each_band_of([&](int f, int b) { binned[fill[b]++] = f; });
+/// Faces binned by the bands of sample rows they touch (counting sort; index order within a band).
+struct FaceBins {
+  std::vector<int> offsets;  ///< #bands+1
+  std::vector<int> faces;
 
-#pragma omp parallel for schedule(dynamic, 1)
-  for (int b = 0; b < bands; ++b) {
-    const int row_begin = b * kBandRows, row_end = std::min(height, row_begin + kBandRows);
-    for (int k = offsets[b]; k < offsets[b + 1]; ++k) rasterize_face(mesh, p, binned[k], row_begin, row_end, z);
+  FaceBins(const Mesh& mesh, const ProjectedMesh& p, int height, int band_rows) {
+    const int bands = (height + band_rows - 1) / band_rows;
+    // First and last band of every face (last < first: not drawn), computed in parallel; the
+    // counting sort that follows reads them sequentially.
+    const int n = mesh.num_faces();
+    std::vector<int> first(n), last(n);
+#pragma omp parallel for schedule(static)
+    for (int f = 0; f < n; ++f) {
+      const auto [j0, j1] = face_drawable(mesh, p, f) ? row_span(mesh, p, f, height) : std::pair{0, -1};
+      first[f] = j0 <= j1 ? j0 / band_rows : 0;
+      last[f] = j0 <= j1 ? j1 / band_rows : -1;
+    }
+    offsets.assign(bands + 1, 0);
+    for (int f = 0; f < n; ++f)
+      for (int b = first[f]; b <= last[f]; ++b) ++offsets[b + 1];
+    for (int b = 0; b < bands; ++b) offsets[b + 1] += offsets[b];
+    faces.resize(offsets[bands]);
+    std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+    for (int f = 0; f < n; ++f)
+      for (int b = first[f]; b <= last[f]; ++b) faces[fill[b]++] = f;
   }
-  return z;
-}
+  int bands() const { return static_cast<int>(offsets.size()) - 1; }
+};
 
 /// Shades one covered sample; returns its colour.
 class SampleShader {
@@ -198,7 +207,7 @@ class SampleShader {
   }
 
  private:
-  static std::uint8_t to_byte(double c) { return static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0, 255.0))); }
+  static std::uint8_t to_byte(double c) { return static_cast<std::uint8_t>(std::clamp(c, 0.0, 255.0) + 0.5); }
 
   std::array<double, 3> base_color(const ScreenTriangle& t, const std::array<double, 3>& w) const {
     Rgb8 c = kGrey;
@@ -247,25 +256,33 @@ class SampleShader {
 void draw_panel(const Mesh& mesh, const Eigen::VectorXd& values, const PanelCamera& camera,
                 const ShadeOptions& shade, int supersampling, Image& image, int x0, int y0) {
   const ProjectedMesh p = project(mesh, camera);
-  const ZBuffer z = rasterize(mesh, p, camera.width, camera.height);
   const SampleShader shader(mesh, values, p, shade);
-  const int out_w = camera.width / supersampling, out_h = camera.height / supersampling;
-  const int samples = supersampling * supersampling;
-#pragma omp parallel for schedule(dynamic, 4)
-  for (int y = 0; y < out_h; ++y) {
-    for (int x = 0; x < out_w; ++x) {
-      std::array<int, 3> sum{0, 0, 0};
-      for (int sj = 0; sj < supersampling; ++sj)
-        for (int si = 0; si < supersampling; ++si) {
-          const int i = x * supersampling + si, j = y * supersampling + sj;
-          const int f = z.face[static_cast<std::size_t>(j) * z.width + i];
-          const Rgb8 c = f < 0 ? shade.background : shader.shade(f, i, j);
-          sum[0] += c.r;
-          sum[1] += c.g;
-          sum[2] += c.b;
+  const int ss = supersampling, samples = ss * ss, band_rows = kBandPixelRows * ss;
+  const int out_w = camera.width / ss, out_h = camera.height / ss;
+  const FaceBins bins(mesh, p, camera.height, band_rows);
+  // One band at a time per thread: rasterize its faces, then shade and filter its pixel rows. The
+  // band's z-buffer stays small (cache-resident) whatever the image size.
+#pragma omp parallel
+  {
+    BandBuffer z;
+#pragma omp for schedule(dynamic, 1)
+    for (int b = 0; b < bins.bands(); ++b) {
+      z.reset(camera.width, b * band_rows, std::min(band_rows, camera.height - b * band_rows));
+      for (int k = bins.offsets[b]; k < bins.offsets[b + 1]; ++k) rasterize_face(mesh, p, bins.faces[k], z);
+      for (int y = b * kBandPixelRows; y < std::min(out_h, (b + 1) * kBandPixelRows); ++y)
+        for (int x = 0; x < out_w; ++x) {
+          std::array<int, 3> sum{0, 0, 0};
+          for (int j = y * ss; j < (y + 1) * ss; ++j)
+            for (int i = x * ss; i < (x + 1) * ss; ++i) {
+              const int f = z.face_at(i, j);
+              const Rgb8 c = f < 0 ? shade.background : shader.shade(f, i, j);
+              sum[0] += c.r;
+              sum[1] += c.g;
+              sum[2] += c.b;
+            }
+          const std::size_t o = 3 * (static_cast<std::size_t>(y0 + y) * image.width + (x0 + x));
+          for (int k = 0; k < 3; ++k) image.rgb[o + k] = static_cast<std::uint8_t>((sum[k] + samples / 2) / samples);
         }
-      const std::size_t o = 3 * (static_cast<std::size_t>(y0 + y) * image.width + (x0 + x));
-      for (int k = 0; k < 3; ++k) image.rgb[o + k] = static_cast<std::uint8_t>((sum[k] + samples / 2) / samples);
     }
   }
 }
