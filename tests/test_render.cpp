@@ -107,7 +107,7 @@ TEST(Render, SignedScalarOnTorusShowsBothEndsOfTheMap) {
   o.shading = false;
   const ColorRange range = resolve_color_range({{&torus, K, ""}}, o);
   EXPECT_DOUBLE_EQ(range.lo, -range.hi);  // automatic diverging ranges are symmetric
-  // K runs from -1/(0.4*0.6) = -4.17 inside to 1/(0.4*1.4) = 1.79 outside; the 98% quantile of |K|
+  // K runs from -1/(0.4*0.6) = -4.17 inside to 1/(0.4*1.4) = 1.79 outside; the 95% quantile of |K|
   // is on the inner side.
   EXPECT_GT(range.hi, 3.5);
   EXPECT_LE(range.hi, K.cwiseAbs().maxCoeff());

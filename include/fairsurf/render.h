@@ -83,7 +83,7 @@ struct RenderOptions {
   std::optional<ColorRange> range;
   /// Automatic range: the quantile of |value| (diverging: [-q, q]) or of value (sequential:
   /// [min(0, q_low), q] with q_low the complementary quantile), over every finite value of every mesh.
-  double robust_quantile = 0.98;
+  double robust_quantile = 0.95;
   bool shading = true;              ///< Phong-lit (headlight); false: flat colour of the scalar
   bool wireframe = false;           ///< overlay the visible edges
   int supersampling = 3;            ///< samples per pixel along each axis (anti-aliasing)
