@@ -1,0 +1,113 @@
+#include <fairsurf/io.h>
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "test_support.h"
+
+using namespace fairsurf;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out;  // standard output and standard error, in that order of lines as they came
+};
+
+// Runs the CLI with `arguments`, capturing stdout and stderr together.
+CliRun run_cli(const std::string& arguments) {
+  CliRun run;
+  const std::string command = std::string("'").append(test::cli_path()).append("' ") + arguments + " 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buffer;
+  std::size_t n = 0;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.out.append(buffer.data(), n);
+  const int status = ::pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+class CliConvert : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("fairsurf_test_cli_convert_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+std::string read_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST_F(CliConvert, RoundTripThroughBinaryPlyAndAsciiStl) {
+  const fs::path ply = dir_ / "spot.ply", off = dir_ / "spot.off", stl = dir_ / "spot.stl";
+  const CliRun first = run_cli("convert '" + test::data_path("spot.obj") + "' -o '" + ply.string() + "'");
+  ASSERT_EQ(first.exit_code, 0) << first.out;
+  EXPECT_NE(first.out.find("fairsurf: note: ignored 3225 'vt' lines (first at line 2931)\n"), std::string::npos)
+      << first.out;
+  EXPECT_NE(first.out.find("wrote " + ply.string() + ": 2930 vertices, 5856 triangles\n"), std::string::npos);
+  EXPECT_EQ(read_bytes(ply).find("format binary_little_endian"), 4u);
+
+  ASSERT_EQ(run_cli("convert '" + ply.string() + "' -o '" + off.string() + "'").exit_code, 0);
+  const Mesh original = read_mesh(test::data_path("spot.obj"));
+  const Mesh back = read_mesh(off);
+  EXPECT_EQ(back.V, original.V);
+  EXPECT_EQ(back.F, original.F);
+
+  const CliRun ascii = run_cli("convert '" + off.string() + "' -o '" + stl.string() + "' --ascii");
+  ASSERT_EQ(ascii.exit_code, 0) << ascii.out;
+  EXPECT_EQ(read_bytes(stl).rfind("solid fairsurf\n", 0), 0u);
+}
+
+TEST_F(CliConvert, RefusesToOverwriteTheInputWithoutForce) {
+  const fs::path mesh = dir_ / "mesh.off";
+  fs::copy_file(test::data_path("cgal_degtri_sliding.off"), mesh);
+  const std::string before = read_bytes(mesh);
+  const CliRun refused = run_cli("convert '" + mesh.string() + "' -o '" + mesh.string() + "'");
+  EXPECT_EQ(refused.exit_code, 5);
+  EXPECT_EQ(refused.out, "fairsurf: error: refusing to overwrite input '" + mesh.string() +
+                             "' (pass --force to allow it)\n");
+  EXPECT_EQ(read_bytes(mesh), before);
+
+  const CliRun forced = run_cli("convert '" + mesh.string() + "' -o '" + mesh.string() + "' --force");
+  EXPECT_EQ(forced.exit_code, 0) << forced.out;
+  EXPECT_EQ(read_mesh(mesh).num_faces(), 8);
+}
+
+TEST_F(CliConvert, MissingInputIsAnInputError) {
+  const fs::path missing = dir_ / "missing.obj";
+  const CliRun run = run_cli("convert '" + missing.string() + "' -o '" + (dir_ / "out.ply").string() + "'");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.out, "fairsurf: error: read_raw: " + missing.string() + ": cannot open (No such file or directory)\n");
+  EXPECT_FALSE(fs::exists(dir_ / "out.ply"));
+}
+
+TEST_F(CliConvert, UnwritableOutputIsAnOutputError) {
+  fs::create_directory(dir_ / "taken.obj");
+  const CliRun run = run_cli("convert '" + test::data_path("cgal_degtri_sliding.off") + "' -o '" +
+                          (dir_ / "taken.obj").string() + "'");
+  EXPECT_EQ(run.exit_code, 5);
+  EXPECT_NE(run.out.find("fairsurf: error: write_mesh: " + (dir_ / "taken.obj").string() + ": rename failed"),
+            std::string::npos)
+      << run.out;
+}
