@@ -181,7 +181,7 @@ Image render(const std::vector<RenderMesh>& meshes, const RenderOptions& options
   shade.range = resolve_color_range(meshes, options);
   shade.shading = options.shading;
   shade.wireframe = options.wireframe;
-  shade.wire_half_width = 0.5 * ss;  // one pixel wide
+  shade.wire_half_width = 0.4 * ss;  // 0.8 pixel wide
   shade.background = options.background;
 
   for (std::size_t m = 0; m < meshes.size(); ++m)

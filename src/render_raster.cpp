@@ -23,7 +23,8 @@ constexpr std::int64_t kFixedOne = 256;           // fixed-point units per sampl
 constexpr std::int64_t kFixedHalf = kFixedOne / 2;  // sample centres sit at half-integers
 constexpr double kMaxSampleCoordinate = 1e6;     // keeps products of fixed coordinates in int64
 constexpr int kBandPixelRows = 8;  // output pixel rows per z-buffer band
-constexpr Rgb8 kWireColor{35, 35, 35};
+constexpr Rgb8 kWireColor{20, 20, 20};
+constexpr double kWireOpacity = 0.7;  // dense meshes keep some of their colour
 
 struct ProjectedMesh {
   std::vector<std::int64_t> fx, fy;  ///< #V fixed-point sample coordinates (x right, y down)
@@ -202,7 +203,10 @@ class SampleShader {
     for (int k = 0; k < 3; ++k) w[k] = static_cast<double>(t.edge(k, px, py)) * inv_area;
     std::array<double, 3> rgb = base_color(t, w);
     if (options_.shading) light(t, w, rgb);
-    if (options_.wireframe && near_edge(t, px, py)) rgb = {double(kWireColor.r), double(kWireColor.g), double(kWireColor.b)};
+    if (options_.wireframe && near_edge(t, px, py)) {
+      const std::array<double, 3> wire{double(kWireColor.r), double(kWireColor.g), double(kWireColor.b)};
+      for (int k = 0; k < 3; ++k) rgb[k] = (1 - kWireOpacity) * rgb[k] + kWireOpacity * wire[k];
+    }
     return {to_byte(rgb[0]), to_byte(rgb[1]), to_byte(rgb[2])};
   }
 

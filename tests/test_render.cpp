@@ -267,7 +267,7 @@ TEST(Render, WireframeDrawsDarkEdges) {
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(sphere.num_vertices());
   EXPECT_EQ(count_pixels(render({{&sphere, zero, ""}}, o), dark), 0);
   o.wireframe = true;
-  EXPECT_GT(count_pixels(render({{&sphere, zero, ""}}, o), dark), 300);
+  EXPECT_GT(count_pixels(render({{&sphere, zero, ""}}, o), dark), 100);
 }
 
 TEST(Render, NamesRoundTripAndUnknownNamesListTheValidOnes) {

@@ -1,10 +1,28 @@
 #include "test_support.h"
 
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+
 namespace fairsurf::test {
 
 std::string data_path(const std::string& name) { return std::string(FAIRSURF_DATA_DIR) + "/" + name; }
 
 std::string cli_path() { return FAIRSURF_CLI; }
+
+CliRun run_cli(const std::string& arguments) {
+  CliRun run;
+  // append() rather than operator+: GCC 12 reports a bogus -Wrestrict on "'" + std::string.
+  const std::string command = std::string("'").append(cli_path()).append("' ").append(arguments).append(" 2>&1");
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buffer;
+  for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;) run.out.append(buffer.data(), n);
+  const int status = ::pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
 
 Mesh regular_grid(int nx, int ny, double h) {
   Mesh m;

@@ -14,6 +14,15 @@ std::string data_path(const std::string& name);
 /// Absolute path of the built `fairsurf` CLI.
 std::string cli_path();
 
+/// Exit code and combined standard output and error of one CLI run.
+struct CliRun {
+  int exit_code = -1;
+  std::string out;
+};
+
+/// Runs the CLI with `arguments` (a shell-quoted string) and captures what it prints.
+CliRun run_cli(const std::string& arguments);
+
 /// A planar (nx+1) by (ny+1) vertex grid on [0, nx*h] x [0, ny*h], every quad split along the
 /// same diagonal, so that interior vertices have valence 6. Vertex (i, j) has index j*(nx+1)+i.
 Mesh regular_grid(int nx, int ny, double h = 1.0);
