@@ -2,10 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -18,24 +16,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;  // standard output and standard error, in that order of lines as they came
-};
-
-// Runs the CLI with `arguments`, capturing stdout and stderr together.
-CliRun run_cli(const std::string& arguments) {
-  CliRun run;
-  const std::string command = std::string("'").append(test::cli_path()).append("' ") + arguments + " 2>&1";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return run;
-  std::array<char, 4096> buffer;
-  std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.out.append(buffer.data(), n);
-  const int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using test::CliRun;
+using test::run_cli;
 
 class CliConvert : public ::testing::Test {
  protected:

@@ -13,12 +13,13 @@ std::string cli_path() { return FAIRSURF_CLI; }
 
 CliRun run_cli(const std::string& arguments) {
   CliRun run;
-  // append() rather than operator+: GCC 12 reports a bogus -Wrestrict on "'" + std::string.
-  const std::string command = std::string("'").append(cli_path()).append("' ").append(arguments).append(" 2>&1");
+  // Built with append: GCC 12 warns falsely (-Wrestrict) on "'" + string + ... at -O2.
+  const std::string command = std::string("'").append(cli_path()).append("' ") + arguments + " 2>&1";
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return run;
   std::array<char, 4096> buffer;
-  for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;) run.out.append(buffer.data(), n);
+  std::size_t n = 0;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.out.append(buffer.data(), n);
   const int status = ::pclose(pipe);
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return run;

@@ -14,13 +14,13 @@ std::string data_path(const std::string& name);
 /// Absolute path of the built `fairsurf` CLI.
 std::string cli_path();
 
-/// Exit code and combined standard output and error of one CLI run.
+/// The outcome of one CLI run.
 struct CliRun {
   int exit_code = -1;
-  std::string out;
+  std::string out;  ///< standard output and standard error, interleaved as they came
 };
 
-/// Runs the CLI with `arguments` (a shell-quoted string) and captures what it prints.
+/// Runs the CLI with `arguments` (a shell-quoted string), capturing stdout and stderr together.
 CliRun run_cli(const std::string& arguments);
 
 /// A planar (nx+1) by (ny+1) vertex grid on [0, nx*h] x [0, ny*h], every quad split along the

@@ -1,0 +1,165 @@
+#include "analytic_meshes.h"
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace fairsurf::test {
+namespace {
+
+Mesh icosahedron() {
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  Mesh m;
+  m.V.resize(12, 3);
+  m.V << -1, t, 0, 1, t, 0, -1, -t, 0, 1, -t, 0, 0, -1, t, 0, 1, t, 0, -1, -t, 0, 1, -t, t, 0, -1,
+      t, 0, 1, -t, 0, -1, -t, 0, 1;
+  m.F.resize(20, 3);
+  m.F << 0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7,
+      1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1;
+  return m;
+}
+
+// Splits every triangle into four at its edge midpoints (shared midpoints are created once).
+Mesh subdivide(const Mesh& in) {
+  std::vector<Eigen::RowVector3d> V(in.V.rows());
+  for (int v = 0; v < in.V.rows(); ++v) V[v] = in.V.row(v);
+  std::map<std::pair<int, int>, int> midpoint;
+  auto mid = [&](int a, int b) {
+    const auto key = std::minmax(a, b);
+    auto [it, inserted] = midpoint.try_emplace(key, static_cast<int>(V.size()));
+    if (inserted) V.push_back(0.5 * (V[a] + V[b]));
+    return it->second;
+  };
+  Mesh out;
+  out.F.resize(4 * in.F.rows(), 3);
+  for (int f = 0; f < in.F.rows(); ++f) {
+    const int a = in.F(f, 0), b = in.F(f, 1), c = in.F(f, 2);
+    const int ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+    out.F.row(4 * f) << a, ab, ca;
+    out.F.row(4 * f + 1) << b, bc, ab;
+    out.F.row(4 * f + 2) << c, ca, bc;
+    out.F.row(4 * f + 3) << ab, bc, ca;
+  }
+  out.V.resize(static_cast<int>(V.size()), 3);
+  for (int v = 0; v < out.V.rows(); ++v) out.V.row(v) = V[v];
+  return out;
+}
+
+double mean_edge_length(const Mesh& m) {
+  double sum = 0.0;
+  for (int f = 0; f < m.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) sum += (m.V.row(m.F(f, k)) - m.V.row(m.F(f, (k + 1) % 3))).norm();
+  return sum / (3.0 * static_cast<double>(m.F.rows()));
+}
+
+// Faces of an nu by nv vertex grid (vertex (i, j) = j·nu + i), counter-clockwise in (i, j); a
+// periodic direction wraps its last column of quads around to the first.
+Faces grid_faces(int nu, int nv, bool periodic_u, bool periodic_v) {
+  const int qu = periodic_u ? nu : nu - 1, qv = periodic_v ? nv : nv - 1;
+  Faces F(2 * qu * qv, 3);
+  int f = 0;
+  for (int j = 0; j < qv; ++j)
+    for (int i = 0; i < qu; ++i) {
+      const int i1 = (i + 1) % nu, j1 = (j + 1) % nv;
+      const int a = j * nu + i, b = j * nu + i1, c = j1 * nu + i, d = j1 * nu + i1;
+      F.row(f++) << a, b, d;
+      F.row(f++) << a, d, c;
+    }
+  return F;
+}
+
+}  // namespace
+
+Mesh icosphere(int level, double radius) {
+  Mesh m = icosahedron();
+  for (int l = 0; l < level; ++l) m = subdivide(m);
+  m.V.rowwise().normalize();
+  m.V *= radius;
+  return m;
+}
+
+Mesh jittered_sphere(int level, double radius, double amplitude, unsigned seed) {
+  Mesh m = icosphere(level, radius);
+  const double step = amplitude * mean_edge_length(m);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int v = 0; v < m.V.rows(); ++v) {
+    const Eigen::Vector3d n = m.V.row(v).normalized();
+    const Eigen::Vector3d e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+    Eigen::Vector3d offset;
+    do offset = unit(rng) * e1 + unit(rng) * e2;
+    while (offset.norm() > 1.0);
+    m.V.row(v) = radius * (m.V.row(v).transpose() + step * offset).normalized();
+  }
+  return m;
+}
+
+Mesh ellipsoid(int level, double a, double b, double c) {
+  Mesh m = icosphere(level, 1.0);
+  m.V = m.V * Eigen::Vector3d(a, b, c).asDiagonal();
+  return m;
+}
+
+double ellipsoid_mean_curvature(const Eigen::Vector3d& p, double a, double b, double c) {
+  const double h = std::sqrt(p.x() * p.x() / std::pow(a, 4) + p.y() * p.y() / std::pow(b, 4) +
+                             p.z() * p.z() / std::pow(c, 4));
+  return (p.squaredNorm() - a * a - b * b - c * c) / (2.0 * a * a * b * b * c * c * h * h * h);
+}
+
+double ellipsoid_gaussian_curvature(const Eigen::Vector3d& p, double a, double b, double c) {
+  const double h2 = p.x() * p.x() / std::pow(a, 4) + p.y() * p.y() / std::pow(b, 4) +
+                    p.z() * p.z() / std::pow(c, 4);
+  return 1.0 / (a * a * b * b * c * c * h2 * h2);
+}
+
+ParametricMesh torus_grid(int n, int m, double R, double r, double jitter, unsigned seed) {
+  ParametricMesh out;
+  out.uv.resize(n * m, 2);
+  out.mesh.V.resize(n * m, 3);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(-jitter, jitter);
+  const double du = 2.0 * std::numbers::pi / n, dv = 2.0 * std::numbers::pi / m;
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = (i + (jitter > 0 ? unit(rng) : 0.0)) * du;
+      const double v = (j + (jitter > 0 ? unit(rng) : 0.0)) * dv;
+      const int k = j * n + i;
+      out.uv.row(k) << u, v;
+      const double rho = R + r * std::cos(v);
+      out.mesh.V.row(k) << rho * std::cos(u), rho * std::sin(u), r * std::sin(v);
+    }
+  out.mesh.F = grid_faces(n, m, true, true);
+  return out;
+}
+
+Mesh open_cylinder(int around, int along, double radius, double height) {
+  Mesh m;
+  m.V.resize(around * (along + 1), 3);
+  for (int j = 0; j <= along; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double theta = 2.0 * std::numbers::pi * i / around;
+      m.V.row(j * around + i) << radius * std::cos(theta), radius * std::sin(theta),
+          height * j / along;
+    }
+  m.F = grid_faces(around, along + 1, true, false);
+  return m;
+}
+
+Mesh saddle_patch(int n, double w) {
+  Mesh m;
+  m.V.resize((n + 1) * (n + 1), 3);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = -w + 2.0 * w * i / n, y = -w + 2.0 * w * j / n;
+      m.V.row(j * (n + 1) + i) << x, y, x * x - y * y;
+    }
+  m.F = grid_faces(n + 1, n + 1, false, false);
+  return m;
+}
+
+}  // namespace fairsurf::test
