@@ -8,7 +8,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "render_meshes.h"
+#include "analytic_meshes.h"
 #include "test_support.h"
 
 using namespace fairsurf;
@@ -29,7 +29,7 @@ class CliRender : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     // A sphere carrying one stored vertex property, "height" (its y coordinate).
-    Mesh sphere = test::uv_sphere(1.0, 12, 24);
+    Mesh sphere = test::icosphere(2);
     sphere.vertex_scalars["height"] = sphere.V.col(1);
     write_mesh(path("sphere.ply"), sphere);
   }
@@ -60,13 +60,23 @@ TEST_F(CliRender, StoredQuantityWithEveryOptionIsReproducible) {
   EXPECT_TRUE(read_bytes(path("a.png")) == read_bytes(path("b.png")));
 }
 
+TEST_F(CliRender, ComputesMeanCurvatureWhenTheFileHasNone) {
+  // H = -1/R on an outward sphere (operators.h): the colour range is centred on 0 and reaches 1/R.
+  write_mesh(path("sphere2.off"), test::icosphere(3, 2.0));
+  const test::CliRun run = test::run_cli("render '" + path("sphere2.off") + "' --size 120x90 -o '" + path("h.png") + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  const std::string prefix = "wrote " + path("h.png") + ": 120x90, H on [-";
+  ASSERT_EQ(run.out.rfind(prefix, 0), 0u) << run.out;
+  EXPECT_NEAR(std::stod(run.out.substr(prefix.size())), 0.5, 0.01) << run.out;
+}
+
 TEST_F(CliRender, UnknownQuantityListsTheAvailableOnes) {
   const test::CliRun run = test::run_cli("render '" + path("sphere.ply") + "' --color energy -o '" + path("x.png") + "'");
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_NE(run.out.find("render: unknown quantity 'energy' for '" + path("sphere.ply") + "' (available: "),
             std::string::npos)
       << run.out;
-  EXPECT_NE(run.out.find("none, height)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("(available: H, K, k1, k2, none, height)"), std::string::npos) << run.out;
   EXPECT_FALSE(fs::exists(path("x.png")));
 }
 

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "render_meshes.h"
+#include "analytic_meshes.h"
 
 using namespace fairsurf;
 
@@ -34,6 +34,12 @@ int count_pixels(const Image& image, const auto& predicate, int x0 = 0, int x1 =
 }
 
 bool is_background(Rgb8 c) { return c == kBackground; }
+
+/// Gaussian curvature cos v / (r (R + r cos v)) at every vertex of a torus_grid.
+Eigen::VectorXd torus_gaussian_curvature(const test::ParametricMesh& torus, double R, double r) {
+  const Eigen::ArrayXd c = torus.uv.col(1).array().cos();
+  return c / (r * (R + r * c));
+}
 
 /// HSV hue in degrees.
 double hue(Rgb8 c) {
@@ -64,7 +70,7 @@ std::filesystem::path temp_path(const std::string& name) {
 }  // namespace
 
 TEST(Render, ConstantScalarUnshadedSphereIsOneColour) {
-  const Mesh sphere = test::uv_sphere(1.0, 24, 48);
+  const Mesh sphere = test::icosphere(3);
   RenderOptions o = plain_options(80, 60);
   o.shading = false;
   o.supersampling = 1;  // no edge blending, so every covered pixel is exactly the map's colour
@@ -78,7 +84,7 @@ TEST(Render, ConstantScalarUnshadedSphereIsOneColour) {
 }
 
 TEST(Render, ShadingChangesBrightnessNotHue) {
-  const Mesh sphere = test::uv_sphere(1.0, 24, 48);
+  const Mesh sphere = test::icosphere(3);
   RenderOptions o = plain_options(120, 100);
   o.range = ColorRange{-1.0, 1.0};
   const Rgb8 base = map_color(ColorMap::diverging, 0.8, *o.range);
@@ -100,10 +106,11 @@ TEST(Render, ShadingChangesBrightnessNotHue) {
 }
 
 TEST(Render, SignedScalarOnTorusShowsBothEndsOfTheMap) {
-  const Mesh torus = test::torus(1.0, 0.4, 64, 32);
-  const Eigen::VectorXd K = test::torus_gaussian_curvature(1.0, 0.4, 64, 32);
+  const test::ParametricMesh grid = test::torus_grid(64, 32, 1.0, 0.4);
+  const Mesh& torus = grid.mesh;
+  const Eigen::VectorXd K = torus_gaussian_curvature(grid, 1.0, 0.4);
   RenderOptions o = plain_options(160, 120);
-  o.views = {View::top};
+  o.views = {View::front};  // along the torus's axis (z)
   o.shading = false;
   const ColorRange range = resolve_color_range({{&torus, K, ""}}, o);
   EXPECT_DOUBLE_EQ(range.lo, -range.hi);  // automatic diverging ranges are symmetric
@@ -113,7 +120,7 @@ TEST(Render, SignedScalarOnTorusShowsBothEndsOfTheMap) {
   EXPECT_LE(range.hi, K.cwiseAbs().maxCoeff());
   EXPECT_GT(count_pixels(render({{&torus, K, ""}}, o), [](Rgb8 c) { return c.b > c.r + 40 && !is_background(c); }), 500);
   // With a range inside [min K, max K] both ends of the map appear, clamped: the inner and outer
-  // rims seen from above.
+  // rims seen along the axis.
   o.range = ColorRange{-1.5, 1.5};
   const Image image = render({{&torus, K, ""}}, o);
   const Rgb8 cold = map_color(ColorMap::diverging, -1.5, *o.range), warm = map_color(ColorMap::diverging, 1.5, *o.range);
@@ -122,7 +129,7 @@ TEST(Render, SignedScalarOnTorusShowsBothEndsOfTheMap) {
 }
 
 TEST(Render, BackgroundUntouchedOutsideTheSilhouette) {
-  const Mesh sphere = test::uv_sphere(1.0, 16, 32);
+  const Mesh sphere = test::icosphere(3);
   RenderOptions o = plain_options(100, 60);
   o.wireframe = true;
   const Image image = render({{&sphere, sphere.V.col(0), ""}}, o);
@@ -135,7 +142,7 @@ TEST(Render, BackgroundUntouchedOutsideTheSilhouette) {
 }
 
 TEST(Render, ImageHasTheRequestedSize) {
-  const Mesh sphere = test::uv_sphere(1.0, 8, 16);
+  const Mesh sphere = test::icosphere(2);
   RenderOptions o;  // with title and colour bar
   o.width = 123;
   o.height = 77;
@@ -147,7 +154,8 @@ TEST(Render, ImageHasTheRequestedSize) {
 }
 
 TEST(Render, RenderingTwiceGivesByteIdenticalPngFiles) {
-  const Mesh torus = test::torus(1.0, 0.3, 48, 24);
+  const test::ParametricMesh grid = test::torus_grid(48, 24, 1.0, 0.3);
+  const Mesh& torus = grid.mesh;
   RenderOptions o;
   o.width = 240;
   o.height = 160;
@@ -155,7 +163,7 @@ TEST(Render, RenderingTwiceGivesByteIdenticalPngFiles) {
   o.wireframe = true;
   o.title = "K on a torus";
   o.quantity = "K";
-  const Eigen::VectorXd K = test::torus_gaussian_curvature(1.0, 0.3, 48, 24);
+  const Eigen::VectorXd K = torus_gaussian_curvature(grid, 1.0, 0.3);
   const auto first = temp_path("first.png"), second = temp_path("second.png");
   write_png(first, render({{&torus, K, "torus"}}, o));
   write_png(second, render({{&torus, K, "torus"}}, o));
@@ -198,7 +206,7 @@ TEST(ColorMap, SequentialLightnessIncreases) {
 }
 
 TEST(Render, AutomaticSequentialRangeStartsAtZeroForNonNegativeValues) {
-  const Mesh sphere = test::uv_sphere(1.0, 8, 16);
+  const Mesh sphere = test::icosphere(2);
   Eigen::VectorXd energy = sphere.V.col(1).array().square() + 3.0;  // in [3, 4]
   RenderOptions o;
   o.color_map = ColorMap::sequential;
@@ -209,7 +217,7 @@ TEST(Render, AutomaticSequentialRangeStartsAtZeroForNonNegativeValues) {
 }
 
 TEST(Render, CompareModeSharesColourRangeAndScale) {
-  const Mesh big = test::uv_sphere(1.0, 24, 48), small = test::uv_sphere(0.5, 24, 48);
+  const Mesh big = test::icosphere(3), small = test::icosphere(3, 0.5);
   RenderOptions o = plain_options(200, 100);
   o.shading = false;
   o.supersampling = 1;
@@ -234,7 +242,7 @@ TEST(Render, CompareModeSharesColourRangeAndScale) {
 }
 
 TEST(Render, EachViewSeesItsSideOfTheMesh) {
-  const Mesh sphere = test::uv_sphere(1.0, 24, 48);
+  const Mesh sphere = test::icosphere(3);
   RenderOptions o = plain_options(60, 60);
   o.shading = false;
   o.range = ColorRange{-1.0, 1.0};
@@ -260,7 +268,7 @@ TEST(Render, EachViewSeesItsSideOfTheMesh) {
 }
 
 TEST(Render, WireframeDrawsDarkEdges) {
-  const Mesh sphere = test::uv_sphere(1.0, 8, 16);
+  const Mesh sphere = test::icosphere(2);
   RenderOptions o = plain_options(120, 120);
   o.shading = false;
   const auto dark = [](Rgb8 c) { return luma(c) < 80; };
@@ -284,7 +292,7 @@ TEST(Render, NamesRoundTripAndUnknownNamesListTheValidOnes) {
 }
 
 TEST(Render, RejectsBadInput) {
-  Mesh sphere = test::uv_sphere(1.0, 8, 16);
+  Mesh sphere = test::icosphere(2);
   RenderOptions o = plain_options(50, 50);
   EXPECT_THROW(render({{&sphere, Eigen::VectorXd::Zero(3), ""}}, o), InvalidArgument);
   EXPECT_THROW(render({{nullptr, {}, ""}}, o), InvalidArgument);
@@ -304,7 +312,7 @@ TEST(Render, RejectsBadInput) {
     render({{&sphere, {}, ""}}, o);
     FAIL();
   } catch (const InvalidMeshError& e) {
-    EXPECT_STREQ(e.what(), "render: mesh 0: face 3 has vertex index 1000 outside [0, 114)");
+    EXPECT_STREQ(e.what(), "render: mesh 0: face 3 has vertex index 1000 outside [0, 162)");
   }
 }
 

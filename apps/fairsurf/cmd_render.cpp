@@ -5,7 +5,10 @@
 
 #include <fairsurf/errors.h>
 #include <fairsurf/io.h>
+#include <fairsurf/operators.h>
+#include <fairsurf/quadratic_fit.h>
 #include <fairsurf/render.h>
+#include <fairsurf/topology.h>
 
 #include <algorithm>
 #include <array>
@@ -79,12 +82,27 @@ std::vector<View> parse_views(const RenderArgs& args) {
   return views;
 }
 
-/// The per-vertex quantity `name` of `mesh`: a stored vertex property; empty for "none".
+/// H, K, k1, k2 from the quadratic fits (operators.h; same sign convention as `fairsurf curvature`).
+Eigen::VectorXd computed_curvature(const Mesh& mesh, const std::string& name) {
+  Topology topo;
+  try {
+    topo = build_topology(mesh.F, mesh.num_vertices());
+  } catch (const InvalidArgument& e) {
+    throw InvalidMeshError(e.what());
+  }
+  SurfaceGeometry g = compute_geometry(fit_quadratics(mesh.V, mesh.F, topo), mesh.V);
+  return name == "H" ? g.H : name == "K" ? g.K : name == "k1" ? g.k1 : g.k2;
+}
+
+/// The per-vertex quantity `name` of `mesh`: a stored vertex property, else (H, K, k1, k2) computed;
+/// empty for "none".
 Eigen::VectorXd quantity_of(const Mesh& mesh, const std::string& name, const std::string& path) {
   if (name == "none") return {};
   if (const auto stored = mesh.vertex_scalars.find(name); stored != mesh.vertex_scalars.end()) return stored->second;
-  std::string available = "none";
-  for (const auto& [stored_name, values] : mesh.vertex_scalars) available += ", " + stored_name;
+  if (is_curvature(name)) return computed_curvature(mesh, name);
+  std::string available = "H, K, k1, k2, none";
+  for (const auto& [stored_name, values] : mesh.vertex_scalars)
+    if (!is_curvature(stored_name)) available += ", " + stored_name;
   throw InvalidArgument("render: unknown quantity '" + name + "' for '" + path + "' (available: " + available + ")");
 }
 
@@ -146,7 +164,7 @@ void setup_render(CLI::App& app) {
   cmd->add_option("input", args->input, "Input mesh (.obj, .off, .ply, .stl)")->required();
   cmd->add_option("-o,--output", args->output, "Output image (.png)")->required();
   cmd->add_option("--color", args->color,
-                  "Quantity: none or any per-vertex property of the file (H, K, k1, k2, ...)")
+                  "Quantity: H, K, k1, k2 (stored, else computed), none, or any per-vertex property of the file")
       ->capture_default_str();
   cmd->add_option("--range", args->range, "Colour range a,b (default: automatic, robust 95% quantile)");
   cmd->add_option("--view", args->view, "One view: front, back, left, right, top, bottom, iso (default iso)");
