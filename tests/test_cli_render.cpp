@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -68,6 +69,20 @@ TEST_F(CliRender, ComputesMeanCurvatureWhenTheFileHasNone) {
   const std::string prefix = "wrote " + path("h.png") + ": 120x90, H on [-";
   ASSERT_EQ(run.out.rfind(prefix, 0), 0u) << run.out;
   EXPECT_NEAR(std::stod(run.out.substr(prefix.size())), 0.5, 0.01) << run.out;
+}
+
+TEST_F(CliRender, SameBytesForOneThreadAndTwo) {
+  const auto run_with_threads = [&](int threads, const std::string& out) {
+    const std::string command = "OMP_NUM_THREADS=" + std::to_string(threads) + " '" + test::cli_path() +
+                                "' render '" + test::data_path("blub.obj") + "' --views iso,top --wire --size 320x200 -o '" +
+                                path(out) + "' >/dev/null 2>&1";
+    return std::system(command.c_str());
+  };
+  ASSERT_EQ(run_with_threads(1, "one.png"), 0);
+  ASSERT_EQ(run_with_threads(2, "two.png"), 0);
+  const std::string one = read_bytes(path("one.png"));
+  EXPECT_GT(one.size(), 10000u);
+  EXPECT_TRUE(one == read_bytes(path("two.png")));
 }
 
 TEST_F(CliRender, UnknownQuantityListsTheAvailableOnes) {
