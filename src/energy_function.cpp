@@ -97,7 +97,9 @@ std::string describe(const EnergyValue& v) {
   return out.str();
 }
 
-bool is_finite(const EnergyValue& v) { return std::isfinite(v.f) && std::isfinite(v.f_H) && std::isfinite(v.f_K); }
+bool is_finite(const EnergyValue& v) {
+  return std::isfinite(v.f) && std::isfinite(v.f_H) && std::isfinite(v.f_K);
+}
 
 void check_scale(const EnergyScale& scale, const char* function) {
   if (!(scale.curvature > 0) || !std::isfinite(scale.curvature) || !(scale.relative_epsilon >= 0))
@@ -115,12 +117,14 @@ struct EnergyFunction::Impl {
   std::vector<std::unique_ptr<FormulaSlot>> slots;  // formulas only: one per OpenMP thread
 
   EnergyValue at(double H, double K, const EnergyScale& scale, int thread) const {
-    return formula ? slots[thread]->evaluate(H, K, scale) : evaluate_builtin(builtin, exponent, H, K, scale.epsilon());
+    return formula ? slots[thread]->evaluate(H, K, scale)
+                   : evaluate_builtin(builtin, exponent, H, K, scale.epsilon());
   }
 };
 
 EnergyFunction::EnergyFunction(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-EnergyFunction::EnergyFunction(const EnergyFunction& other) : EnergyFunction(parse_energy_function(other.spec())) {}
+EnergyFunction::EnergyFunction(const EnergyFunction& other)
+    : EnergyFunction(parse_energy_function(other.spec())) {}
 EnergyFunction::EnergyFunction(EnergyFunction&& other) noexcept = default;
 EnergyFunction& EnergyFunction::operator=(const EnergyFunction& other) {
   if (this != &other) *this = parse_energy_function(other.spec());
@@ -141,8 +145,8 @@ void EnergyFunction::evaluate(const Eigen::VectorXd& H, const Eigen::VectorXd& K
                               EnergyValues& out) const {
   check_scale(scale, "EnergyFunction::evaluate");
   if (H.size() != K.size())
-    throw InvalidArgument("EnergyFunction::evaluate: H has " + std::to_string(H.size()) + " values but K has " +
-                          std::to_string(K.size()));
+    throw InvalidArgument("EnergyFunction::evaluate: H has " + std::to_string(H.size()) +
+                          " values but K has " + std::to_string(K.size()));
   const Eigen::Index n = H.size();
   for (Eigen::VectorXd* v : {&out.f, &out.f_H, &out.f_K})
     if (v->size() != n) v->resize(n);
@@ -158,8 +162,9 @@ void EnergyFunction::evaluate(const Eigen::VectorXd& H, const Eigen::VectorXd& K
   for (Eigen::Index i = 0; i < n; ++i) {
     const EnergyValue v{out.f[i], out.f_H[i], out.f_K[i]};
     if (!is_finite(v))
-      throw NumericalError("EnergyFunction::evaluate: '" + spec() + "' is not finite at vertex " + std::to_string(i) +
-                           " (H = " + std::to_string(H[i]) + ", K = " + std::to_string(K[i]) + "): " + describe(v));
+      throw NumericalError("EnergyFunction::evaluate: '" + spec() + "' is not finite at vertex " +
+                           std::to_string(i) + " (H = " + std::to_string(H[i]) +
+                           ", K = " + std::to_string(K[i]) + "): " + describe(v));
   }
 }
 
@@ -168,11 +173,11 @@ namespace {
 /// The built-in named `spec`, if it is one; throws for a malformed absHpH exponent.
 bool parse_builtin(const std::string& spec, EnergyFunction::Impl& impl) {
   static const std::array<std::pair<const char*, Builtin>, 6> kPlain{{{"H", Builtin::H},
-                                                                       {"K", Builtin::K},
-                                                                       {"H2", Builtin::H2},
-                                                                       {"4absHH+2K", Builtin::absHH4_2K},
-                                                                       {"k1", Builtin::k1},
-                                                                       {"k2", Builtin::k2}}};
+                                                                      {"K", Builtin::K},
+                                                                      {"H2", Builtin::H2},
+                                                                      {"4absHH+2K", Builtin::absHH4_2K},
+                                                                      {"k1", Builtin::k1},
+                                                                      {"k2", Builtin::k2}}};
   for (const auto& [name, kind] : kPlain)
     if (spec == name) {
       impl.builtin = kind;
@@ -183,7 +188,8 @@ bool parse_builtin(const std::string& spec, EnergyFunction::Impl& impl) {
   char* end = nullptr;
   impl.exponent = std::strtod(exponent.c_str(), &end);
   if (exponent.empty() || *end != '\0' || !std::isfinite(impl.exponent))
-    throw InvalidArgument("parse_energy_function: '" + spec + "': the exponent p of absHpH:p must be a real number");
+    throw InvalidArgument("parse_energy_function: '" + spec +
+                          "': the exponent p of absHpH:p must be a real number");
   impl.builtin = Builtin::absHpH;
   return true;
 }
@@ -195,8 +201,8 @@ void parse_formula(const std::string& spec, EnergyFunction::Impl& impl) {
     for (int t = 0; t < threads; ++t) impl.slots.push_back(std::make_unique<FormulaSlot>(spec));
     impl.slots.front()->at(1.0, 1.0);  // muparser parses lazily: force the syntax check now
   } catch (const mu::ParserError& e) {
-    throw InvalidArgument("parse_energy_function: '" + spec + "' is neither a built-in function (" + kBuiltinNames +
-                          ") nor a valid formula in H and K: " + e.GetMsg());
+    throw InvalidArgument("parse_energy_function: '" + spec + "' is neither a built-in function (" +
+                          kBuiltinNames + ") nor a valid formula in H and K: " + e.GetMsg());
   }
 }
 
@@ -247,8 +253,8 @@ std::array<double, 2> normalized_symbol(double a, double b) {
 /// Every σ_l vanishes on one direction ξ ≠ 0: a direction (u, v) = (ξ1², ξ2²) ≥ 0, not 0, on which
 /// all the linear forms a_l u + b_l v vanish. Symbols are normalized.
 bool degenerate(const std::vector<std::array<double, 2>>& symbols) {
-  const auto first = std::find_if(symbols.begin(), symbols.end(),
-                                  [](const auto& s) { return s[0] != 0 || s[1] != 0; });
+  const auto first =
+      std::find_if(symbols.begin(), symbols.end(), [](const auto& s) { return s[0] != 0 || s[1] != 0; });
   if (first == symbols.end()) return true;
   const double a = (*first)[0], b = (*first)[1];
   if (a * b > 0) return false;                    // this σ alone is definite

@@ -47,9 +47,7 @@ bool same_pattern(const SparseRowMatrix& a, const SparseRowMatrix& b) {
 }
 
 void check_options(const LinearSolverOptions& o) {
-  const auto fail = [](const std::string& what) {
-    throw InvalidArgument("make_linear_solver: " + what);
-  };
+  const auto fail = [](const std::string& what) { throw InvalidArgument("make_linear_solver: " + what); };
   if (!(o.residual_tolerance > 0)) fail("residual tolerance must be positive");
   if (o.max_refinement_steps < 0) fail("max refinement steps must be non-negative");
   if (o.kind != LinearSolverKind::gmres) return;
@@ -84,8 +82,9 @@ LinearSolver::~LinearSolver() = default;
 
 void LinearSolver::analyze(const SparseRowMatrix& A) {
   if (A.rows() != A.cols() || A.rows() == 0)
-    throw InvalidArgument("analyze: " + std::string(name()) + ": the matrix must be square and non-empty, got " +
-                          std::to_string(A.rows()) + " by " + std::to_string(A.cols()));
+    throw InvalidArgument("analyze: " + std::string(name()) +
+                          ": the matrix must be square and non-empty, got " + std::to_string(A.rows()) +
+                          " by " + std::to_string(A.cols()));
   const auto start = Clock::now();
   analyzed_ = factorized_ = false;
   matrix_ = A;
@@ -96,7 +95,8 @@ void LinearSolver::analyze(const SparseRowMatrix& A) {
 }
 
 void LinearSolver::factorize(const SparseRowMatrix& A) {
-  if (!analyzed_) throw InvalidArgument("factorize: " + std::string(name()) + ": analyze() has not been called");
+  if (!analyzed_)
+    throw InvalidArgument("factorize: " + std::string(name()) + ": analyze() has not been called");
   const auto start = Clock::now();
   factorized_ = false;
   SparseRowMatrix compressed;
@@ -133,10 +133,12 @@ double LinearSolver::measure_residual(const Eigen::VectorXd& b, const Eigen::Vec
 }
 
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) {
-  if (!factorized_) throw InvalidArgument("solve: " + std::string(name()) + ": factorize() has not succeeded");
+  if (!factorized_)
+    throw InvalidArgument("solve: " + std::string(name()) + ": factorize() has not succeeded");
   if (b.size() != matrix_.rows())
-    throw InvalidArgument("solve: " + std::string(name()) + ": right-hand side of size " + std::to_string(b.size()) +
-                          " for a matrix of size " + std::to_string(matrix_.rows()));
+    throw InvalidArgument("solve: " + std::string(name()) + ": right-hand side of size " +
+                          std::to_string(b.size()) + " for a matrix of size " +
+                          std::to_string(matrix_.rows()));
   const auto start = Clock::now();
   report_.refinement_steps = report_.iterations = 0;
   report_.relative_residual = report_.backward_error = 0;
@@ -152,7 +154,9 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) {
   report_.backward_error_before_refinement = report_.backward_error;
   // A tiny backward error alone does not make x useful: for a (numerically) singular A, a huge x
   // solves a nearby matrix. An x no better than x = 0 (‖r‖ ≥ ‖b‖) is rejected too.
-  const auto accepted = [&] { return measured <= options_.residual_tolerance && report_.relative_residual < 1; };
+  const auto accepted = [&] {
+    return measured <= options_.residual_tolerance && report_.relative_residual < 1;
+  };
   while (!accepted() && std::isfinite(measured) && report_.refinement_steps < options_.max_refinement_steps) {
     report_.iterations += apply_inverse(residual, correction);
     x += correction;
@@ -164,8 +168,9 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b) {
   const std::string steps = " after " + std::to_string(report_.refinement_steps) + " refinements";
   if (!(measured <= options_.residual_tolerance))
     throw NumericalError(prefix +
-                         (options_.residual_measure == ResidualMeasure::backward_error ? "backward error "
-                                                                                       : "relative residual ") +
+                         (options_.residual_measure == ResidualMeasure::backward_error
+                              ? "backward error "
+                              : "relative residual ") +
                          short_scientific(measured) + " above tolerance " +
                          short_scientific(options_.residual_tolerance) + steps);
   if (!accepted())

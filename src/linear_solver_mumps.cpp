@@ -28,7 +28,12 @@ std::string describe_error(int code) {
     case -6: return "structurally singular matrix";
     case -10: return "numerically singular matrix";
     case -13: return "out of memory";
-    case -8: case -9: case -14: case -15: case -17: case -20: return "internal workspace too small";
+    case -8:
+    case -9:
+    case -14:
+    case -15:
+    case -17:
+    case -20: return "internal workspace too small";
     default: return "error";
   }
 }
@@ -61,8 +66,8 @@ class MumpsSolver final : public LinearSolver {
       const int code = infog(id_, 1);
       id_.job = -2;
       dmumps_c(&id_);
-      throw NumericalError("make_linear_solver: mumps: initialization failed (INFOG(1) = " +
-                           std::to_string(code) + ")");
+      throw NumericalError(
+          "make_linear_solver: mumps: initialization failed (INFOG(1) = " + std::to_string(code) + ")");
     }
     // The library never prints: no error, diagnostic or global-information output.
     icntl(id_, 1) = -1;

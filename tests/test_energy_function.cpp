@@ -51,8 +51,9 @@ std::string parse_error(const std::string& spec) {
 
 TEST(EnergyFunction, BuiltinDerivativesMatchFiniteDifferences) {
   const EnergyScale scale{1.0, 1e-3};
-  const std::vector<std::string> names = {"H", "K", "H2", "absHpH:-0.5", "absHpH:0.2", "absHpH:0.5",
-                                          "absHpH:1", "absHpH:2.7", "4absHH+2K", "k1", "k2"};
+  const std::vector<std::string> names = {"H",          "K",          "H2",       "absHpH:-0.5",
+                                          "absHpH:0.2", "absHpH:0.5", "absHpH:1", "absHpH:2.7",
+                                          "4absHH+2K",  "k1",         "k2"};
   for (const auto& name : names) {
     const EnergyFunction fn = parse_energy_function(name);
     EXPECT_FALSE(fn.is_formula()) << name;
@@ -147,10 +148,12 @@ TEST(EnergyFunction, FormulaCanUseTheRegularizationEpsilon) {
 TEST(EnergyFunction, ParseErrorsArePrecise) {
   const std::string valid = "H, K, H2, absHpH:p, 4absHH+2K, k1, k2";
   EXPECT_EQ(builtin_energy_function_names(), valid);
-  EXPECT_EQ(parse_error("Hx"), "parse_energy_function: 'Hx' is neither a built-in function (" + valid +
-                                   ") nor a valid formula in H and K: Unexpected token \"Hx\" found at position 0.");
-  EXPECT_EQ(parse_error("H+*K"), "parse_energy_function: 'H+*K' is neither a built-in function (" + valid +
-                                     ") nor a valid formula in H and K: Unexpected operator \"*\" found at position 2");
+  EXPECT_EQ(parse_error("Hx"),
+            "parse_energy_function: 'Hx' is neither a built-in function (" + valid +
+                ") nor a valid formula in H and K: Unexpected token \"Hx\" found at position 0.");
+  EXPECT_EQ(parse_error("H+*K"),
+            "parse_energy_function: 'H+*K' is neither a built-in function (" + valid +
+                ") nor a valid formula in H and K: Unexpected operator \"*\" found at position 2");
   EXPECT_EQ(parse_error("(H+K"), "parse_energy_function: '(H+K' is neither a built-in function (" + valid +
                                      ") nor a valid formula in H and K: Missing parenthesis");
   EXPECT_EQ(parse_error("absHpH:x"),
@@ -198,10 +201,12 @@ TEST(EnergyFunction, NonFiniteValuesNameTheVertex) {
     parse_energy_function("sqrt(K)").evaluate(H, K, EnergyScale{}, values);
     FAIL() << "no exception";
   } catch (const NumericalError& e) {
-    EXPECT_TRUE(std::string(e.what()).starts_with("EnergyFunction::evaluate: 'sqrt(K)' is not finite at vertex 1 "))
+    EXPECT_TRUE(
+        std::string(e.what()).starts_with("EnergyFunction::evaluate: 'sqrt(K)' is not finite at vertex 1 "))
         << e.what();
   }
-  EXPECT_THROW(parse_energy_function("absHpH:-0.5").evaluate(H, K, EnergyScale{1.0, 0.0}, values), NumericalError);
+  EXPECT_THROW(parse_energy_function("absHpH:-0.5").evaluate(H, K, EnergyScale{1.0, 0.0}, values),
+               NumericalError);
   EXPECT_NO_THROW(parse_energy_function("absHpH:-0.5").evaluate(H, K, EnergyScale{1.0, 1e-3}, values));
   EXPECT_THROW(parse_energy_function("H").evaluate(H, Eigen::Vector2d(1, 2), EnergyScale{}, values),
                InvalidArgument);
@@ -209,9 +214,11 @@ TEST(EnergyFunction, NonFiniteValuesNameTheVertex) {
 }
 
 TEST(EnergyFunction, CurvatureScaleIsTheMeanRmsPrincipalCurvature) {
-  EXPECT_DOUBLE_EQ(curvature_scale(Eigen::VectorXd::Constant(10, -1.0), Eigen::VectorXd::Constant(10, 1.0)), 1.0);
+  EXPECT_DOUBLE_EQ(curvature_scale(Eigen::VectorXd::Constant(10, -1.0), Eigen::VectorXd::Constant(10, 1.0)),
+                   1.0);
   // Cylinder of radius 2: k = (0, −1/2), H = −1/4, K = 0: rms = √(1/8).
-  EXPECT_DOUBLE_EQ(curvature_scale(Eigen::VectorXd::Constant(4, -0.25), Eigen::VectorXd::Zero(4)), std::sqrt(0.125));
+  EXPECT_DOUBLE_EQ(curvature_scale(Eigen::VectorXd::Constant(4, -0.25), Eigen::VectorXd::Zero(4)),
+                   std::sqrt(0.125));
   EXPECT_DOUBLE_EQ(curvature_scale(Eigen::VectorXd::Zero(4), Eigen::VectorXd::Zero(4)), 1.0);  // flat
 }
 
@@ -232,7 +239,8 @@ void torus_curvatures(double R, double r, Eigen::VectorXd& H, Eigen::VectorXd& K
 
 int violations(const std::vector<std::string>& specs, const Eigen::VectorXd& H, const Eigen::VectorXd& K,
                std::vector<char>* flags = nullptr) {
-  return check_well_posedness(parse_energy_functions(specs), H, K, EnergyScale{curvature_scale(H, K), 1e-3}, flags)
+  return check_well_posedness(parse_energy_functions(specs), H, K, EnergyScale{curvature_scale(H, K), 1e-3},
+                              flags)
       .violating_vertices;
 }
 

@@ -102,8 +102,9 @@ TEST_P(LinearSolverTest, BadlyScaledStepMatrixProxyPassesTheResidualCheck) {
   for (const Eigen::VectorXd& b : {rough, smooth}) {
     const Eigen::VectorXd x = solver->solve(b);
     const Eigen::VectorXd r = b - A * x;
-    const double backward_error = r.lpNorm<Eigen::Infinity>() /
-                                  (row_sum_norm(A) * x.lpNorm<Eigen::Infinity>() + b.lpNorm<Eigen::Infinity>());
+    const double backward_error =
+        r.lpNorm<Eigen::Infinity>() /
+        (row_sum_norm(A) * x.lpNorm<Eigen::Infinity>() + b.lpNorm<Eigen::Infinity>());
     EXPECT_LE(backward_error, options.residual_tolerance);
     EXPECT_NEAR(solver->report().backward_error, backward_error, 1e-18);
     EXPECT_GE(solver->report().backward_error_before_refinement, solver->report().backward_error);
@@ -230,8 +231,9 @@ TEST(LinearSolver, SingularMatrixMakesGmresFailToConverge) {
   } catch (const NumericalError& e) {
     const std::string message = e.what();
     EXPECT_TRUE(message.starts_with("solve: gmres: relative residual ")) << message;
-    EXPECT_TRUE(message.ends_with(" after 3 refinements: the solution is no better than zero "
-                                  "(numerically singular matrix?)"))
+    EXPECT_TRUE(
+        message.ends_with(" after 3 refinements: the solution is no better than zero "
+                          "(numerically singular matrix?)"))
         << message;
   }
 }
@@ -301,7 +303,8 @@ TEST(LinearSolver, KindNamesRoundTripAndUnknownNamesAreRejected) {
     parse_linear_solver_kind("superlu");
     FAIL() << "no exception";
   } catch (const InvalidArgument& e) {
-    EXPECT_STREQ(e.what(), "parse_linear_solver_kind: unknown solver 'superlu' (valid: mumps, umfpack, gmres)");
+    EXPECT_STREQ(e.what(),
+                 "parse_linear_solver_kind: unknown solver 'superlu' (valid: mumps, umfpack, gmres)");
   }
   LinearSolverOptions bad;
   bad.max_refinement_steps = -1;

@@ -42,7 +42,7 @@ LinearSolverKind parse_linear_solver_kind(const std::string& name);
 
 /// How solve() measures the residual r = b − A x it checks against the tolerance.
 enum class ResidualMeasure {
-  backward_error,     ///< ‖r‖∞ / (‖A‖∞ ‖x‖∞ + ‖b‖∞): the smallest relative change of A and b that x solves
+  backward_error,  ///< ‖r‖∞ / (‖A‖∞ ‖x‖∞ + ‖b‖∞): the smallest relative change of A and b that x solves
   relative_residual,  ///< ‖r‖₂ / ‖b‖₂: meaningful only for well-scaled systems
 };
 
@@ -54,25 +54,25 @@ struct LinearSolverOptions {
   /// Iterative refinement steps allowed after the first solve.
   int max_refinement_steps = 3;
   // GMRES + ILUT only.
-  int gmres_restart = 50;               ///< Krylov subspace dimension before a restart
-  double gmres_tolerance = 1e-12;       ///< GMRES's own (preconditioned) relative residual target
-  int gmres_max_iterations = 1000;      ///< per GMRES call (each refinement step is one call)
-  double ilut_drop_tolerance = 1e-5;    ///< ILUT drops entries below this times the row norm
-  int ilut_fill_factor = 20;            ///< ILUT keeps at most this times the row's non-zeros
+  int gmres_restart = 50;             ///< Krylov subspace dimension before a restart
+  double gmres_tolerance = 1e-12;     ///< GMRES's own (preconditioned) relative residual target
+  int gmres_max_iterations = 1000;    ///< per GMRES call (each refinement step is one call)
+  double ilut_drop_tolerance = 1e-5;  ///< ILUT drops entries below this times the row norm
+  int ilut_fill_factor = 20;          ///< ILUT keeps at most this times the row's non-zeros
 };
 
 /// Figures of the last analyze / factorize / solve.
 struct SolveReport {
   double relative_residual_before_refinement = 0;  ///< ‖b − A x‖₂/‖b‖₂ after the first solve
   double relative_residual = 0;                    ///< the same for the returned x
-  double backward_error_before_refinement = 0;     ///< ‖b − A x‖∞/(‖A‖∞‖x‖∞ + ‖b‖∞), first solve
-  double backward_error = 0;                       ///< the same for the returned x
-  int refinement_steps = 0;               ///< refinement steps taken
-  int iterations = 0;                     ///< GMRES iterations over all calls of the solve; 0 for LU
+  double backward_error_before_refinement = 0;  ///< ‖b − A x‖∞/(‖A‖∞‖x‖∞ + ‖b‖∞), first solve
+  double backward_error = 0;                    ///< the same for the returned x
+  int refinement_steps = 0;                     ///< refinement steps taken
+  int iterations = 0;                           ///< GMRES iterations over all calls of the solve; 0 for LU
   double analyze_seconds = 0;
   double factorize_seconds = 0;
-  double solve_seconds = 0;               ///< including residuals and refinement
-  std::string ordering;                   ///< fill-reducing ordering used ("METIS", "AMD", ...)
+  double solve_seconds = 0;  ///< including residuals and refinement
+  std::string ordering;      ///< fill-reducing ordering used ("METIS", "AMD", ...)
 };
 
 /// Solver of A x = b for a square sparse non-symmetric A. Create with make_linear_solver.
