@@ -15,6 +15,8 @@ packages=(
   nlohmann-json3-dev       # --json output and logs
   libmuparser-dev          # user formulas f(H,K)
   libpng-dev               # PNG encoding for `fairsurf render`
+  libstb-dev               # stb_truetype.h: glyph rasterization for render's title and colour bar
+  fonts-dejavu-core        # DejaVu Sans, the font render draws its text with
   libomp-dev               # OpenMP runtime headers
   libgtest-dev libgmock-dev
   libbenchmark-dev
