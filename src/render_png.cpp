@@ -1,14 +1,12 @@
 // PNG output through libpng's simplified API, which writes no time or text chunks: the bytes depend
 // on the pixels alone (and the zlib build), so equal images give equal files.
 #include <fairsurf/errors.h>
+#include <fairsurf/io.h>
 #include <fairsurf/render.h>
 
 #include <png.h>
 
-#include <fstream>
-#include <system_error>
 
-#include <unistd.h>
 
 namespace fairsurf {
 namespace {
@@ -39,25 +37,7 @@ void write_png(const std::filesystem::path& path, const Image& image) {
                           std::to_string(image.height) + " does not match its " +
                           std::to_string(image.rgb.size()) + " bytes");
   const std::vector<unsigned char> bytes = encode_png(image);
-  std::filesystem::path temporary = path;
-  temporary += ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw IoError("write_png: cannot write '" + path.string() + "'");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw IoError("write_png: cannot write '" + path.string() + "': " + ec.message());
-  }
+  write_file_atomically(path, std::string(bytes.begin(), bytes.end()), "write_png");
 }
 
 }  // namespace fairsurf
