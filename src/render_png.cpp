@@ -6,8 +6,6 @@
 
 #include <png.h>
 
-
-
 namespace fairsurf {
 namespace {
 
