@@ -20,16 +20,10 @@ struct ConvertArgs {
 
 void run_convert(const ConvertArgs& args) {
   check_output_path(args.output, {args.input}, args.force);
-  ReadReport report;
-  const Mesh mesh = read_mesh(args.input, &report);
-  for (const auto& note : report.notes) std::cerr << "fairsurf: note: " << note << "\n";
+  const Mesh mesh = read_input(args.input);
   WriteOptions options;
   options.binary = !args.ascii;
-  try {
-    write_mesh(args.output, mesh, options);
-  } catch (const IoError& e) {
-    throw CliError(kOutputError, e.what());
-  }
+  write_output([&] { write_mesh(args.output, mesh, options); });
   std::cout << "wrote " << args.output << ": " << mesh.num_vertices() << " vertices, " << mesh.num_faces()
             << " triangles\n";
 }

@@ -133,11 +133,7 @@ void run_render(const RenderArgs& args) {
 
   std::vector<Mesh> meshes;
   meshes.reserve(paths.size());
-  for (const std::string& path : paths) {
-    ReadReport report;
-    meshes.push_back(read_mesh(path, &report));
-    for (const auto& note : report.notes) std::cerr << "fairsurf: note: " << path << ": " << note << "\n";
-  }
+  for (const std::string& path : paths) meshes.push_back(read_input(path));
   std::vector<RenderMesh> items;
   for (std::size_t k = 0; k < meshes.size(); ++k)
     items.push_back({&meshes[k], quantity_of(meshes[k], args.color, paths[k]),
@@ -145,11 +141,7 @@ void run_render(const RenderArgs& args) {
   options.color_map = choose_map(args.map, args.color, items);
 
   const Image image = render(items, options);
-  try {
-    write_png(args.output, image);
-  } catch (const IoError& e) {
-    throw CliError(kOutputError, e.what());
-  }
+  write_output([&] { write_png(args.output, image); });
   std::cout << "wrote " << args.output << ": " << image.width << "x" << image.height << ", " << args.color;
   if (options.color_map != ColorMap::none) {
     const ColorRange range = resolve_color_range(items, options);

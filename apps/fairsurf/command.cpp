@@ -1,5 +1,9 @@
 #include "command.h"
 
+#include <fairsurf/io.h>
+
+#include <iostream>
+
 #include <system_error>
 
 namespace fairsurf::cli {
@@ -23,6 +27,13 @@ void check_output_path(const std::filesystem::path& output,
       throw CliError(kOutputError, "refusing to overwrite input '" + input.string() +
                                        "' (pass --force to allow it)");
   }
+}
+
+Mesh read_input(const std::string& path) {
+  ReadReport report;
+  Mesh mesh = read_mesh(path, &report);
+  for (const auto& note : report.notes) std::cerr << "fairsurf: note: " << path << ": " << note << "\n";
+  return mesh;
 }
 
 }  // namespace fairsurf::cli

@@ -2,6 +2,9 @@
 // input and output paths. The library computes; this layer talks (prints, maps errors to codes).
 #pragma once
 
+#include <fairsurf/errors.h>
+#include <fairsurf/mesh.h>
+
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
@@ -38,5 +41,20 @@ std::vector<std::pair<int, CommandSetup>>& command_registry();
 /// Refuses to write `output` over any of `inputs` unless `force`; throws CliError(kOutputError).
 void check_output_path(const std::filesystem::path& output,
                        const std::vector<std::filesystem::path>& inputs, bool force);
+
+/// Runs `write`, which writes one output file; an IoError from it becomes exit code 5 (an input
+/// error would be 2).
+template <class Write>
+void write_output(Write&& write) {
+  try {
+    write();
+  } catch (const IoError& e) {
+    throw CliError(kOutputError, e.what());
+  }
+}
+
+/// Reads a mesh with read_mesh and prints each of the reader's notes to standard error as
+/// "fairsurf: note: PATH: ..." (fanned polygons, ignored lines, welded STL corners).
+Mesh read_input(const std::string& path);
 
 }  // namespace fairsurf::cli
