@@ -15,6 +15,7 @@
 #include <cstring>
 #include <fstream>
 #include <system_error>
+#include <utility>
 
 namespace fairsurf {
 namespace {
@@ -134,7 +135,10 @@ RawMesh read_raw(const std::filesystem::path& path, ReadReport* report) {
   throw IoError("read_raw: " + path.string() + ": unsupported format");
 }
 
-Mesh triangulate(const RawMesh& raw, ReadReport* report) {
+namespace {
+
+// Fans every polygon of `raw` from its first corner into `F`; counts the fanned ones in `report`.
+Faces fan_polygons(const RawMesh& raw, ReadReport* report) {
   const std::size_t polygons = raw.polygon_offsets.size() - 1;
   std::size_t triangles = 0;
   int fanned = 0;
@@ -146,16 +150,12 @@ Mesh triangulate(const RawMesh& raw, ReadReport* report) {
     triangles += static_cast<std::size_t>(corners - 2);
     fanned += corners > 3;
   }
-  Mesh mesh;
-  mesh.V = raw.V;
-  mesh.vertex_scalars = raw.vertex_scalars;
-  mesh.vertex_colors = raw.vertex_colors;
-  mesh.F.resize(static_cast<Eigen::Index>(triangles), 3);
+  Faces F(static_cast<Eigen::Index>(triangles), 3);
   Eigen::Index f = 0;
   for (std::size_t p = 0; p < polygons; ++p) {
     const int* corner = raw.polygon_indices.data() + raw.polygon_offsets[p];
     const int corners = raw.polygon_offsets[p + 1] - raw.polygon_offsets[p];
-    for (int k = 1; k + 1 < corners; ++k) mesh.F.row(f++) << corner[0], corner[k], corner[k + 1];
+    for (int k = 1; k + 1 < corners; ++k) F.row(f++) << corner[0], corner[k], corner[k + 1];
   }
   if (report && fanned > 0) {
     const int added = static_cast<int>(triangles - polygons);
@@ -164,6 +164,26 @@ Mesh triangulate(const RawMesh& raw, ReadReport* report) {
     report->notes.push_back("triangulated " + std::to_string(fanned) + " polygons with more than 3 corners "
                             "into fans (" + std::to_string(added) + " extra triangles)");
   }
+  return F;
+}
+
+}  // namespace
+
+Mesh triangulate(const RawMesh& raw, ReadReport* report) {
+  Mesh mesh;
+  mesh.F = fan_polygons(raw, report);
+  mesh.V = raw.V;
+  mesh.vertex_scalars = raw.vertex_scalars;
+  mesh.vertex_colors = raw.vertex_colors;
+  return mesh;
+}
+
+Mesh triangulate(RawMesh&& raw, ReadReport* report) {
+  Mesh mesh;
+  mesh.F = fan_polygons(raw, report);
+  mesh.V = std::move(raw.V);
+  mesh.vertex_scalars = std::move(raw.vertex_scalars);
+  mesh.vertex_colors = std::move(raw.vertex_colors);
   return mesh;
 }
 

@@ -9,6 +9,7 @@
 #include <fairsurf/mesh.h>
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,8 @@ RawMesh read_raw(const std::filesystem::path& path, ReadReport* report = nullptr
 /// they are (validate() reports out-of-range ones). Polygons with fewer than 3 corners throw
 /// ParseError.
 Mesh triangulate(const RawMesh& raw, ReadReport* report = nullptr);
+/// The same, moving the vertex arrays out of `raw` instead of copying them.
+Mesh triangulate(RawMesh&& raw, ReadReport* report = nullptr);
 
 /// read_raw followed by triangulate. No validation and no repair: vertex order is the file's.
 Mesh read_mesh(const std::filesystem::path& path, ReadReport* report = nullptr);
@@ -48,7 +51,10 @@ struct WriteOptions {
 
 /// Writes `mesh` atomically in the format named by the extension of `path`. ASCII coordinates use
 /// 17 significant digits, so a round trip is exact. PLY carries vertex_scalars and vertex_colors.
-/// Throws IoError if the file cannot be written; the target is then left untouched.
+/// Throws IoError if the file cannot be written; the target is then left untouched. Throws
+/// InvalidArgument, before writing anything, for a face index outside [0, #V), vertex_scalars or
+/// vertex_colors whose length is not #V, or a scalar name that is not a valid PLY property name.
+/// STL stores float32 coordinates: writing it rounds every coordinate to float.
 void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const WriteOptions& options = {});
 
 }  // namespace fairsurf

@@ -1,0 +1,44 @@
+// fairsurf — linear cotangent fairing, the classical baseline (CGAL, PMP, libigl).
+//
+// Solves ∆^k x = 0 on the free vertices with the fixed vertices as boundary data, where ∆ = M⁻¹L is
+// the cotangent Laplace–Beltrami operator of the *input* mesh (L: cotangent weights, M: barycentric
+// vertex areas). k = 1, 2, 3 gives membrane, thin-plate and minimum-variation surfaces with G0, G1
+// and G2 data from k fixed rings. The operator is frozen at the input: the result depends on the
+// initial patch's triangulation and is not a geometric flow — which is what fairsurf compares against.
+#pragma once
+
+#include <fairsurf/linear_solver.h>
+#include <fairsurf/mesh.h>
+#include <fairsurf/region.h>
+
+#include <Eigen/SparseCore>
+
+namespace fairsurf {
+
+/// #V by #V cotangent Laplacian: L(i,j) = ½(cot α_ij + cot β_ij), L(i,i) = −Σ_j L(i,j).
+/// Symmetric, negative semi-definite, rows sum to zero. With M = diag(vertex_areas), M⁻¹L x ≈ 2Hn in
+/// METHOD §1's convention — in the mean: with barycentric areas the pointwise error does not vanish
+/// on irregular meshes (15% at valence-5 vertices of an icosphere), which is one reason the flows use
+/// quadratic fits instead. Border edges carry their single cotangent.
+Eigen::SparseMatrix<double> cotangent_laplacian(const Vertices& V, const Faces& F);
+
+struct HarmonicOptions {
+  int order = 3;  ///< k in ∆^k x = 0: 1, 2 or 3 (the continuity reached is G(k−1))
+  LinearSolverOptions solver;
+};
+
+/// What the fairing did.
+struct HarmonicReport {
+  int free_vertices = 0;
+  int order = 0;
+  double backward_error = 0;  ///< largest normwise backward error of the three solves
+};
+
+/// Moves the free vertices of `region` in `V` (#V by 3, updated in place) to the solution of
+/// ∆^k x = 0. Throws InvalidArgument for an order outside 1..3 or a free component that touches no
+/// fixed vertex (the system would be singular), NumericalError if the linear solve fails. On a
+/// throw, V is unchanged.
+HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Region& region,
+                             const HarmonicOptions& options = {});
+
+}  // namespace fairsurf

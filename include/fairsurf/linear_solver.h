@@ -1,0 +1,131 @@
+// fairsurf — sparse non-symmetric linear systems A x = b: one interface, three back ends.
+//
+// Made for the flow's step matrix (I − τ (P′Q)_FF) of METHOD §5: non-symmetric, a 3-ring stencil
+// (≈ 37 non-zeros a row), entries growing like τ/h⁶, the sparsity pattern fixed while the mesh
+// connectivity is. So the work is split the way the flow uses it:
+//   analyze(A)    once per sparsity pattern (ordering, symbolic factorization),
+//   factorize(A)  once per step (numeric factorization; the pattern must be the analyzed one),
+//   solve(b)      one or more right-hand sides per step.
+// Every solve checks its residual r = b − A x and refines iteratively (x += A⁻¹ r with the same
+// factorization) until the chosen residual measure is under the tolerance; a solve that stays above
+// it throws NumericalError rather than returning an inaccurate x. The default measure is the normwise
+// backward error, not ‖r‖/‖b‖: with entries of size τ/h⁶ even the exact solution, rounded to
+// doubles, has ‖r‖/‖b‖ up to about 1e-16 ‖A‖‖x‖/‖b‖ (3e-7 on a 576-unknown proxy of the step matrix,
+// more than 1 on fine meshes at large τ), while a stable solve always reaches a backward error near
+// 1e-16. Both figures are reported.
+//
+// Back ends (docs/solvers.md has the measured comparison):
+//   mumps    sequential MUMPS LU, automatic ordering (ICNTL(7) = 7). The default and the fastest.
+//   umfpack  UMFPACK LU, 64-bit interface (umfpack_dl_*), METIS ordering, AMD if METIS is missing.
+//   gmres    restarted GMRES preconditioned by incomplete LU with threshold (Eigen's ILUT).
+//            Needs near-complete fill (drop ≈ 1e-5, large fill factor) once τ ≫ h⁶.
+// A solver object is not thread-safe; use one per thread.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <memory>
+#include <string>
+
+namespace fairsurf {
+
+/// Square sparse matrix in compressed row storage, the layout the operators and the step use.
+using SparseRowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+enum class LinearSolverKind { mumps, umfpack, gmres };
+
+/// "mumps", "umfpack" or "gmres".
+const char* to_string(LinearSolverKind kind);
+/// Inverse of to_string; throws InvalidArgument naming the valid kinds.
+LinearSolverKind parse_linear_solver_kind(const std::string& name);
+
+/// How solve() measures the residual r = b − A x it checks against the tolerance.
+enum class ResidualMeasure {
+  backward_error,  ///< ‖r‖∞ / (‖A‖∞ ‖x‖∞ + ‖b‖∞): the smallest relative change of A and b that x solves
+  relative_residual,  ///< ‖r‖₂ / ‖b‖₂: meaningful only for well-scaled systems
+};
+
+struct LinearSolverOptions {
+  LinearSolverKind kind = LinearSolverKind::mumps;
+  ResidualMeasure residual_measure = ResidualMeasure::backward_error;
+  /// Accept x once the residual measure is at most this.
+  double residual_tolerance = 1e-12;
+  /// Iterative refinement steps allowed after the first solve.
+  int max_refinement_steps = 3;
+  // GMRES + ILUT only.
+  int gmres_restart = 50;             ///< Krylov subspace dimension before a restart
+  double gmres_tolerance = 1e-12;     ///< GMRES's own (preconditioned) relative residual target
+  int gmres_max_iterations = 1000;    ///< per GMRES call (each refinement step is one call)
+  double ilut_drop_tolerance = 1e-5;  ///< ILUT drops entries below this times the row norm
+  int ilut_fill_factor = 20;          ///< ILUT keeps at most this times the row's non-zeros
+};
+
+/// Figures of the last analyze / factorize / solve.
+struct SolveReport {
+  double relative_residual_before_refinement = 0;  ///< ‖b − A x‖₂/‖b‖₂ after the first solve
+  double relative_residual = 0;                    ///< the same for the returned x
+  double backward_error_before_refinement = 0;  ///< ‖b − A x‖∞/(‖A‖∞‖x‖∞ + ‖b‖∞), first solve
+  double backward_error = 0;                    ///< the same for the returned x
+  int refinement_steps = 0;                     ///< refinement steps taken
+  int iterations = 0;                           ///< GMRES iterations over all calls of the solve; 0 for LU
+  double analyze_seconds = 0;
+  double factorize_seconds = 0;
+  double solve_seconds = 0;  ///< including residuals and refinement
+  std::string ordering;      ///< fill-reducing ordering used ("METIS", "AMD", ...)
+};
+
+/// Solver of A x = b for a square sparse non-symmetric A. Create with make_linear_solver.
+class LinearSolver {
+ public:
+  virtual ~LinearSolver();
+  LinearSolver(const LinearSolver&) = delete;
+  LinearSolver& operator=(const LinearSolver&) = delete;
+
+  /// Symbolic analysis of A's sparsity pattern (values are ignored). Throws InvalidArgument if A is
+  /// not square or empty, NumericalError if the back end fails.
+  void analyze(const SparseRowMatrix& A);
+  /// Numeric factorization of A, whose pattern must be the one analyzed (InvalidArgument if not;
+  /// analyze first). Throws NumericalError naming the back end and its error code if the
+  /// factorization fails or A is singular. Keeps a copy of A for the residual checks.
+  void factorize(const SparseRowMatrix& A);
+  /// Returns x with A x = b, the residual checked and refined as the header comment says.
+  /// Throws InvalidArgument if b has the wrong size or nothing is factorized, NumericalError if the
+  /// residual stays above the tolerance (or GMRES does not converge).
+  Eigen::VectorXd solve(const Eigen::VectorXd& b);
+
+  /// Figures of the last calls (analyze and factorize times are kept until the next such call).
+  const SolveReport& report() const { return report_; }
+  const LinearSolverOptions& options() const { return options_; }
+  /// "mumps", "umfpack" or "gmres", as used in error messages.
+  const char* name() const { return to_string(options_.kind); }
+
+ protected:
+  explicit LinearSolver(const LinearSolverOptions& options);
+  /// The matrix last given to analyze or factorize (compressed); back ends read its values.
+  const SparseRowMatrix& matrix() const { return matrix_; }
+  void set_ordering(std::string ordering) { report_.ordering = std::move(ordering); }
+
+ private:
+  // Back-end steps. analyze_pattern and factorize_values see matrix() already set; apply_inverse
+  // writes one (unrefined) solution of A x = rhs into x and returns the iterations it took.
+  virtual void analyze_pattern() = 0;
+  virtual void factorize_values() = 0;
+  virtual int apply_inverse(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) = 0;
+
+  /// Sets `residual` to b − A x, records both measures in `report_` and returns the checked one.
+  double measure_residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x, Eigen::VectorXd& residual);
+
+  LinearSolverOptions options_;
+  SolveReport report_;
+  SparseRowMatrix matrix_;
+  double matrix_norm_inf_ = 0;  // ‖A‖∞ of the factorized matrix
+  bool analyzed_ = false;
+  bool factorized_ = false;
+};
+
+/// A solver of the kind options.kind. Throws InvalidArgument for invalid options (negative
+/// tolerance or refinement steps, non-positive GMRES restart, iterations or fill factor).
+std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options = {});
+
+}  // namespace fairsurf
