@@ -123,3 +123,17 @@ TEST_F(CliCurvature, NonPlyOutputAndMissingInputAreRefused) {
   const auto missing = run_cli("curvature '" + (dir_ / "none.obj").string() + "' -o '" + (dir_ / "y.ply").string() + "'");
   EXPECT_EQ(missing.exit_code, 2) << missing.out;
 }
+
+TEST_F(CliCurvature, AMeshWithoutWellPosedFitsIsReportedWithoutStatistics) {
+  // cube_soup.obj: 12 unwelded triangles, every vertex has two neighbours.
+  const fs::path out = dir_ / "soup.ply";
+  const auto run = run_cli("curvature '" + test::data_path("cube_soup.obj") + "' -o '" + out.string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("24 vertices, 0 with a well-posed fit, 24 ill-posed (24 too few neighbours)"),
+            std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("no vertex has a well-posed fit: no statistics"), std::string::npos) << run.out;
+  const auto json = run_cli("curvature '" + test::data_path("cube_soup.obj") + "' -o '" + out.string() + "' --json");
+  const auto j = nlohmann::json::parse(json.out);
+  EXPECT_TRUE(j["statistics"].empty());
+  EXPECT_EQ(read_mesh(out).vertex_scalars.at("fit_status").minCoeff(), 2.0);  // kTooFewNeighbours
+}

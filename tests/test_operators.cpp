@@ -390,3 +390,26 @@ TEST(Operators, DiscreteIdentitiesHoldToRoundOffOnBundledMeshes) {
     EXPECT_GT(counts[0], 0.99 * m.num_vertices()) << name;
   }
 }
+
+TEST(Operators, FrozenStencilLinearizationMissesTheMetricTermOfTheFirstVariation) {
+  // With refitted stencils, δH = (2H² − K)d + ½∆d (METHOD §1), while the frozen-stencil ½A_H d is
+  // ½∆d − (2H² − K)d (the stencil's metric does not see the normal motion, and n·∆n = −(4H² − 2K)).
+  // Measured here so that the flow can rely on the difference: δH − ½A_H d = 2(2H² − K)d + O(h²).
+  const Mesh m = test::icosphere(4, 1.0);
+  Evaluated e = evaluate(m);
+  SparseOperator A_H;
+  normal_weighted(e.ops.laplace, e.ops.geometry.normal, A_H);
+  Eigen::VectorXd d(m.num_vertices());
+  for (int i = 0; i < d.size(); ++i) d[i] = 1.0 + 0.5 * m.V(i, 2);
+  const double eps = 1e-6;
+  const Vertices moved = m.V + eps * d.asDiagonal() * e.ops.geometry.normal;
+  refit_quadratics(e.fits, moved);
+  const SurfaceGeometry g = compute_geometry(e.fits, moved);
+  const Eigen::VectorXd& H = e.ops.geometry.H;
+  const Eigen::VectorXd& K = e.ops.geometry.K;
+  const Eigen::VectorXd dH = (g.H - H) / eps;
+  const Eigen::VectorXd metric = 2.0 * (2.0 * H.array().square() - K.array()).matrix().cwiseProduct(d);
+  const Eigen::VectorXd half_AHd = 0.5 * (A_H * d);
+  EXPECT_LT((dH - half_AHd - metric).cwiseAbs().maxCoeff(), 1e-2);
+  EXPECT_GT((dH - half_AHd).cwiseAbs().minCoeff(), 0.5);  // the term is not small
+}

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace fairsurf::cli {
@@ -44,11 +45,12 @@ double percentile(const std::vector<double>& sorted, double p) {
   return sorted[lo] + (rank - static_cast<double>(lo)) * (sorted[hi] - sorted[lo]);
 }
 
-Summary summarize(const Eigen::VectorXd& values, const std::vector<FitStatus>& status) {
+// Statistics over the well-posed vertices; none when there are none.
+std::optional<Summary> summarize(const Eigen::VectorXd& values, const std::vector<FitStatus>& status) {
   std::vector<double> v;
   for (int i = 0; i < values.size(); ++i)
     if (status[i] == FitStatus::kOk) v.push_back(values[i]);
-  if (v.empty()) return {};
+  if (v.empty()) return std::nullopt;
   std::sort(v.begin(), v.end());
   Summary s;
   s.min = v.front(), s.max = v.back();
@@ -87,10 +89,16 @@ void print_text(const CurvatureArgs& args, const Mesh& mesh, const QuadraticFits
   std::cout << (sep == ", " ? ")" : "") << "\n";
   std::cout << (args.flip_sign ? "sign: flipped (--flip-sign): H > 0 on a sphere with outward normals\n"
                                : "sign: H < 0 on a sphere with outward normals (H = -1/R)\n");
-  std::cout << "statistics over the well-posed vertices:\n";
-  std::printf("%-3s %13s %13s %13s %13s %13s %13s\n", "", "min", "p5", "p50", "p95", "max", "mean");
+  if (ok == 0) {
+    std::cout << "no vertex has a well-posed fit: no statistics\n";
+  } else {
+    std::cout << "statistics over the well-posed vertices:\n";
+    std::printf("%-3s %13s %13s %13s %13s %13s %13s\n", "", "min", "p5", "p50", "p95", "max", "mean");
+  }
   for (const char* q : kQuantities) {
-    const Summary s = summarize(mesh.vertex_scalars.at(q), fits.status);
+    const auto summary = summarize(mesh.vertex_scalars.at(q), fits.status);
+    if (!summary) continue;
+    const Summary& s = *summary;
     std::printf("%-3s %13.6g %13.6g %13.6g %13.6g %13.6g %13.6g\n", q, s.min, s.p5, s.p50, s.p95,
                 s.max, s.mean);
   }
@@ -111,8 +119,11 @@ void print_json(const CurvatureArgs& args, const Mesh& mesh, const QuadraticFits
   j["ill_posed"] = mesh.num_vertices() - ok;
   for (std::size_t s = 0; s < counts.size(); ++s)
     j["fit_status"][status_key(static_cast<FitStatus>(s))] = counts[s];
+  j["statistics"] = nlohmann::ordered_json::object();
   for (const char* q : kQuantities) {
-    const Summary s = summarize(mesh.vertex_scalars.at(q), fits.status);
+    const auto summary = summarize(mesh.vertex_scalars.at(q), fits.status);
+    if (!summary) continue;
+    const Summary& s = *summary;
     j["statistics"][q] = {{"min", s.min}, {"p5", s.p5}, {"p50", s.p50}, {"p95", s.p95},
                           {"max", s.max}, {"mean", s.mean}};
   }
