@@ -159,13 +159,14 @@ class Triangulator {
     const int m = poly.size();
     std::vector<Weight> weight(static_cast<std::size_t>(m) * m);
     std::vector<int> apex(static_cast<std::size_t>(m) * m, -1);
+    std::vector<Vec3> apex_normal(static_cast<std::size_t>(m) * m, Vec3::Zero());
     const auto at = [m](int i, int k) { return static_cast<std::size_t>(i) * m + k; };
     const auto vertex = [&](int i) { return poly.vertices[i]; };
     // New triangles list the loop positions i < j < k as (k, j, i): reversed loop order.
     const auto normal = [&](int i, int j, int k) { return triangle_normal(V_, vertex(k), vertex(j), vertex(i)); };
     // Normal of the face across the side or diagonal (i, k) seen from inside [i, k].
-    const auto inner_normal = [&](int i, int k) {
-      return k == i + 1 ? poly.side_normals[i] : normal(i, apex[at(i, k)], k);
+    const auto inner_normal = [&](int i, int k) -> const Vec3& {
+      return k == i + 1 ? poly.side_normals[i] : apex_normal[at(i, k)];
     };
     for (int span = 2; span < m; ++span)
       for (int i = 0; i + span < m; ++i) {
@@ -176,7 +177,9 @@ class Triangulator {
           for (int j = i + 1; j < k; ++j) {
             const Weight& left = weight[at(i, j)];
             const Weight& right = weight[at(j, k)];
-            if (left.angle == kInfinity || right.angle == kInfinity) continue;
+            // The sub-polygons' angles bound this candidate's from below: skip hopeless ones
+            // before any trigonometry (this prunes most candidates).
+            if (std::max(left.angle, right.angle) > best.angle + kAngleTie) continue;
             const Vec3 n = normal(i, j, k);
             double angle = std::max({left.angle, right.angle, dihedral(n, inner_normal(i, j)),
                                      dihedral(n, inner_normal(j, k))});
@@ -186,6 +189,7 @@ class Triangulator {
             if (lighter(w, best)) best = w, apex[at(i, k)] = j;
           }
         weight[at(i, k)] = best;
+        if (apex[at(i, k)] >= 0) apex_normal[at(i, k)] = normal(i, apex[at(i, k)], k);
       }
     if (apex[at(0, m - 1)] < 0)
       throw InvalidMeshError("triangulate_hole: no admissible triangulation of a hole of " +

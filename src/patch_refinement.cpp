@@ -158,7 +158,7 @@ class Refiner {
   // Flips the edge a-b of the triangles (a, b, c) and (b, a, d) to c-d when the angles at c and d
   // sum to more than π, unless the flip would turn a triangle over.
   bool flip_if_not_delaunay(PatchMesh::EdgeHandle eh) {
-    if (mesh_.is_boundary(eh) || !mesh_.is_flip_ok(eh)) return false;
+    if (mesh_.is_boundary(eh)) return false;
     const auto h0 = mesh_.halfedge_handle(eh, 0), h1 = mesh_.halfedge_handle(eh, 1);
     const Vec a = mesh_.point(mesh_.from_vertex_handle(h0)), b = mesh_.point(mesh_.to_vertex_handle(h0));
     const Vec c = mesh_.point(mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h0)));
@@ -168,17 +168,31 @@ class Refiner {
     if (OpenMesh::dot(OpenMesh::cross(a - c, d - c), old_normal) <= 0.0 ||
         OpenMesh::dot(OpenMesh::cross(b - d, c - d), old_normal) <= 0.0)
       return false;
+    if (!mesh_.is_flip_ok(eh)) return false;  // c-d is already an edge; checked last, it walks a fan
     mesh_.flip(eh);
     ++flips_;
     return true;
   }
 
+  // Flips until every interior edge is Delaunay: a work list seeded with every edge, to which the
+  // four outer edges of each flipped quadrilateral return, so each round costs O(#E + flips).
+  // The cap guards against cycling on strongly curved (non-planar) patches.
   void flip_until_delaunay() {
-    constexpr int kMaxSweeps = 100;  // Delaunay flipping terminates in the plane; this guards 3-D loops
-    for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
-      int flipped = 0;
-      for (const auto eh : mesh_.edges()) flipped += flip_if_not_delaunay(eh);
-      if (flipped == 0) return;
+    std::vector<PatchMesh::EdgeHandle> work(mesh_.edges().begin(), mesh_.edges().end());
+    std::vector<char> queued(mesh_.n_edges(), 1);
+    const long long cap = 100LL * static_cast<long long>(mesh_.n_edges());
+    for (long long step = 0; !work.empty() && step < cap; ++step) {
+      const auto eh = work.back();
+      work.pop_back();
+      queued[eh.idx()] = 0;
+      if (!flip_if_not_delaunay(eh)) continue;
+      const auto h = mesh_.halfedge_handle(eh, 0);
+      for (const auto side : {mesh_.next_halfedge_handle(h), mesh_.prev_halfedge_handle(h),
+                              mesh_.next_halfedge_handle(mesh_.opposite_halfedge_handle(h)),
+                              mesh_.prev_halfedge_handle(mesh_.opposite_halfedge_handle(h))}) {
+        const auto e = mesh_.edge_handle(side);
+        if (!queued[e.idx()]) queued[e.idx()] = 1, work.push_back(e);
+      }
     }
   }
 
