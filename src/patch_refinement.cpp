@@ -1,0 +1,247 @@
+#include <fairsurf/errors.h>
+#include <fairsurf/patch_refinement.h>
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <unordered_set>
+
+namespace fairsurf {
+namespace {
+
+struct PatchTraits : public OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+using PatchMesh = OpenMesh::TriMesh_ArrayKernelT<PatchTraits>;
+using Vec = OpenMesh::Vec3d;
+
+// OpenMesh reports failed face insertions on its error stream; the library never prints, so the
+// stream is muted while the patch is built and the failure is thrown instead.
+class MuteOpenMeshErrors {
+ public:
+  MuteOpenMeshErrors() : was_enabled_(::omerr().is_enabled()) { ::omerr().disable(); }
+  ~MuteOpenMeshErrors() {
+    if (was_enabled_) ::omerr().enable();
+  }
+  MuteOpenMeshErrors(const MuteOpenMeshErrors&) = delete;
+  MuteOpenMeshErrors& operator=(const MuteOpenMeshErrors&) = delete;
+
+ private:
+  bool was_enabled_;
+};
+
+double angle_between(const Vec& u, const Vec& v) { return std::atan2(OpenMesh::cross(u, v).norm(), OpenMesh::dot(u, v)); }
+
+// The local patch: OpenMesh connectivity, its vertices' global indices and their scales σ.
+class Refiner {
+ public:
+  Refiner(const Vertices& V, const Faces& patch, const PatchRefinementOptions& options)
+      : options_(options), num_input_vertices_(static_cast<int>(V.rows())) {
+    build(V, patch);
+    initial_scales();
+  }
+
+  void refine(RefinedPatch& report) {
+    for (report.rounds = 0; report.rounds < options_.max_rounds; ++report.rounds) {
+      const int splits = split_round();
+      if (splits == 0) break;
+      report.splits += splits;
+      flip_until_delaunay();
+    }
+    for (int sweep = 0; sweep < options_.relaxation_sweeps; ++sweep) {
+      relax_tangentially();
+      flip_until_delaunay();
+    }
+    report.flips = flips_;
+  }
+
+  void write(const Vertices& V, const Faces& F, RefinedPatch& out) const {
+    const int added = static_cast<int>(mesh_.n_vertices()) - static_cast<int>(global_.size());
+    out.V.resize(V.rows() + added, 3);
+    out.V.topRows(V.rows()) = V;
+    for (const auto vh : mesh_.vertices()) {
+      const int g = global(vh.idx());
+      const Vec& p = mesh_.point(vh);
+      out.V.row(g) << p[0], p[1], p[2];
+      if (!mesh_.is_boundary(vh)) out.free_vertices.push_back(g);
+    }
+    std::sort(out.free_vertices.begin(), out.free_vertices.end());
+    out.F.resize(F.rows() + static_cast<int>(mesh_.n_faces()), 3);
+    out.F.topRows(F.rows()) = F;
+    out.first_patch_face = static_cast<int>(F.rows());
+    for (const auto fh : mesh_.faces()) {
+      int k = 0;
+      for (const auto vh : mesh_.fv_range(fh)) out.F(out.first_patch_face + fh.idx(), k++) = global(vh.idx());
+    }
+  }
+
+ private:
+  int global(int local) const {
+    return local < static_cast<int>(global_.size())
+               ? global_[local]
+               : num_input_vertices_ + local - static_cast<int>(global_.size());
+  }
+
+  void build(const Vertices& V, const Faces& patch) {
+    std::vector<int> local(V.rows(), -1);
+    std::unordered_set<long long> directed;
+    MuteOpenMeshErrors mute;
+    for (int f = 0; f < patch.rows(); ++f) {
+      std::vector<PatchMesh::VertexHandle> corners;
+      for (int k = 0; k < 3; ++k) {
+        const int v = patch(f, k), w = patch(f, (k + 1) % 3);
+        if (v < 0 || v >= V.rows())
+          throw InvalidArgument("refine_patch: patch face " + std::to_string(f) + " has vertex index " +
+                                std::to_string(v) + " outside [0, " + std::to_string(V.rows()) + ")");
+        if (!directed.insert(static_cast<long long>(v) * V.rows() + w).second)
+          throw InvalidMeshError("refine_patch: patch edge " + std::to_string(v) + "-" +
+                                 std::to_string(w) + " is used twice in the same direction");
+        if (local[v] < 0) {
+          local[v] = static_cast<int>(global_.size());
+          global_.push_back(v);
+          mesh_.add_vertex(Vec(V(v, 0), V(v, 1), V(v, 2)));
+        }
+        corners.push_back(PatchMesh::VertexHandle(local[v]));
+      }
+      if (!mesh_.add_face(corners).is_valid())
+        throw InvalidMeshError("refine_patch: patch face " + std::to_string(f) +
+                               " makes the patch non-manifold");
+    }
+  }
+
+  // σ of border vertices from their border edges; of interior vertices from all their edges.
+  void initial_scales() {
+    const int n = static_cast<int>(global_.size());
+    scale_.assign(n, options_.target_edge_length);
+    if (options_.target_edge_length > 0.0) return;
+    for (const auto vh : mesh_.vertices()) {
+      const bool border = mesh_.is_boundary(vh);
+      double sum = 0.0;
+      int count = 0;
+      for (const auto heh : mesh_.voh_range(vh))
+        if (!border || mesh_.is_boundary(mesh_.edge_handle(heh)))
+          sum += mesh_.calc_edge_length(heh), ++count;
+      scale_[vh.idx()] = sum / std::max(1, count);
+    }
+  }
+
+  int split_round() {
+    const int num_faces = static_cast<int>(mesh_.n_faces());
+    int splits = 0;
+    for (int f = 0; f < num_faces; ++f) {
+      const PatchMesh::FaceHandle fh(f);
+      Vec c(0, 0, 0);
+      double sigma_c = 0.0;
+      for (const auto vh : mesh_.fv_range(fh)) c += mesh_.point(vh) / 3.0, sigma_c += scale_[vh.idx()] / 3.0;
+      bool split = true;
+      for (const auto vh : mesh_.fv_range(fh)) {
+        const double d = options_.density_factor * (c - mesh_.point(vh)).norm();
+        split = split && d > sigma_c && d > scale_[vh.idx()];
+      }
+      if (!split) continue;
+      const auto vh = mesh_.add_vertex(c);
+      scale_.push_back(sigma_c);
+      mesh_.split(fh, vh);
+      ++splits;
+      std::vector<PatchMesh::EdgeHandle> around;
+      for (const auto heh : mesh_.voh_range(vh)) around.push_back(mesh_.edge_handle(mesh_.next_halfedge_handle(heh)));
+      for (const auto eh : around) flip_if_not_delaunay(eh);
+    }
+    return splits;
+  }
+
+  // Flips the edge a-b of the triangles (a, b, c) and (b, a, d) to c-d when the angles at c and d
+  // sum to more than π, unless the flip would turn a triangle over.
+  bool flip_if_not_delaunay(PatchMesh::EdgeHandle eh) {
+    if (mesh_.is_boundary(eh)) return false;
+    const auto h0 = mesh_.halfedge_handle(eh, 0), h1 = mesh_.halfedge_handle(eh, 1);
+    const Vec a = mesh_.point(mesh_.from_vertex_handle(h0)), b = mesh_.point(mesh_.to_vertex_handle(h0));
+    const Vec c = mesh_.point(mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h0)));
+    const Vec d = mesh_.point(mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h1)));
+    if (angle_between(a - c, b - c) + angle_between(a - d, b - d) <= std::numbers::pi + 1e-10) return false;
+    const Vec old_normal = OpenMesh::cross(b - a, c - a) + OpenMesh::cross(a - b, d - b);
+    if (OpenMesh::dot(OpenMesh::cross(a - c, d - c), old_normal) <= 0.0 ||
+        OpenMesh::dot(OpenMesh::cross(b - d, c - d), old_normal) <= 0.0)
+      return false;
+    if (!mesh_.is_flip_ok(eh)) return false;  // c-d is already an edge; checked last, it walks a fan
+    mesh_.flip(eh);
+    ++flips_;
+    return true;
+  }
+
+  // Flips until every interior edge is Delaunay: a work list seeded with every edge, to which the
+  // four outer edges of each flipped quadrilateral return, so each round costs O(#E + flips).
+  // The cap guards against cycling on strongly curved (non-planar) patches.
+  void flip_until_delaunay() {
+    std::vector<PatchMesh::EdgeHandle> work(mesh_.edges().begin(), mesh_.edges().end());
+    std::vector<char> queued(mesh_.n_edges(), 1);
+    const long long cap = 100LL * static_cast<long long>(mesh_.n_edges());
+    for (long long step = 0; !work.empty() && step < cap; ++step) {
+      const auto eh = work.back();
+      work.pop_back();
+      queued[eh.idx()] = 0;
+      if (!flip_if_not_delaunay(eh)) continue;
+      const auto h = mesh_.halfedge_handle(eh, 0);
+      for (const auto side : {mesh_.next_halfedge_handle(h), mesh_.prev_halfedge_handle(h),
+                              mesh_.next_halfedge_handle(mesh_.opposite_halfedge_handle(h)),
+                              mesh_.prev_halfedge_handle(mesh_.opposite_halfedge_handle(h))}) {
+        const auto e = mesh_.edge_handle(side);
+        if (!queued[e.idx()]) queued[e.idx()] = 1, work.push_back(e);
+      }
+    }
+  }
+
+  void relax_tangentially() {
+    std::vector<Vec> moved(mesh_.n_vertices());
+    for (const auto vh : mesh_.vertices()) {
+      moved[vh.idx()] = mesh_.point(vh);
+      if (mesh_.is_boundary(vh)) continue;
+      Vec centroid(0, 0, 0), normal(0, 0, 0);
+      int valence = 0;
+      for (const auto nb : mesh_.vv_range(vh)) centroid += mesh_.point(nb), ++valence;
+      for (const auto fh : mesh_.vf_range(vh)) {
+        auto fv = mesh_.cfv_iter(fh);
+        const Vec p0 = mesh_.point(*fv), p1 = mesh_.point(*++fv), p2 = mesh_.point(*++fv);
+        normal += OpenMesh::cross(p1 - p0, p2 - p0);
+      }
+      Vec step = centroid / valence - mesh_.point(vh);
+      if (normal.norm() > 0.0) step -= OpenMesh::dot(step, normal) / normal.sqrnorm() * normal;
+      moved[vh.idx()] += step;
+    }
+    for (const auto vh : mesh_.vertices()) mesh_.set_point(vh, moved[vh.idx()]);
+  }
+
+  PatchRefinementOptions options_;
+  int num_input_vertices_;
+  PatchMesh mesh_;
+  std::vector<int> global_;     // global index of each input patch vertex (local order)
+  std::vector<double> scale_;   // σ per local vertex
+  int flips_ = 0;
+};
+
+}  // namespace
+
+RefinedPatch refine_patch(const Vertices& V, const Faces& F, const Faces& patch,
+                          const PatchRefinementOptions& options) {
+  if (!(options.density_factor > 0.0) || options.target_edge_length < 0.0 || options.max_rounds < 0 ||
+      options.relaxation_sweeps < 0)
+    throw InvalidArgument("refine_patch: density_factor must be positive and target_edge_length, "
+                          "max_rounds and relaxation_sweeps non-negative");
+  for (int f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k)
+      if (F(f, k) < 0 || F(f, k) >= V.rows())
+        throw InvalidArgument("refine_patch: mesh face " + std::to_string(f) + " has vertex index " +
+                              std::to_string(F(f, k)) + " outside [0, " + std::to_string(V.rows()) + ")");
+  Refiner refiner(V, patch, options);
+  RefinedPatch out;
+  refiner.refine(out);
+  refiner.write(V, F, out);
+  return out;
+}
+
+}  // namespace fairsurf
