@@ -366,7 +366,7 @@ FlowReport FlowRun::run() {
       fail(record, std::to_string(consecutive_rejections) +
                        " consecutive rejected steps; the last: " + to_string(record.rejection) +
                        ": " + record.detail);
-    tau *= control.reject_factor;
+    tau = tau_try * control.reject_factor;
   }
   report_.tau = tau;
   return report_;

@@ -35,7 +35,11 @@
 // times the mean length of the edges at vertex i, if the flow's energy more than doubles
 // (E' > max_energy_growth·E + round-off floor), or if it produces a non-finite value, an inverted face
 // (a face normal turned by more than 90° against its orientation at x^k) or a failed linear solve;
-// then τ ← τ·reject_factor. After an accepted step τ ← min(accept_factor·τ, tau_max).
+// then τ ← τ·reject_factor. After an accepted step τ ← min(accept_factor·τ, tau_max) (with the
+// control disabled too: set tau_max = tau for a fixed step). On rough input d is not monotone in τ:
+// small τ gives d ≈ τV with V huge, large τ a damped, Newton-like step −J⁻¹V, and τ ≈ 1/λ for the
+// positive eigenvalues λ of J (lower-order terms) a near-singular system; so a rejected large step
+// is not always cured by a smaller one.
 // The energy the control watches is the flow's own: E = Σ_l ∫‖∇f_l‖² (sixth order), the area (mean
 // curvature, surface diffusion) or ∫H² dA (Willmore), summed over the free vertices and their three
 // fixed rings.
