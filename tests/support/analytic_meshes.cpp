@@ -50,13 +50,6 @@ Mesh subdivide(const Mesh& in) {
   return out;
 }
 
-double mean_edge_length(const Mesh& m) {
-  double sum = 0.0;
-  for (int f = 0; f < m.F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) sum += (m.V.row(m.F(f, k)) - m.V.row(m.F(f, (k + 1) % 3))).norm();
-  return sum / (3.0 * static_cast<double>(m.F.rows()));
-}
-
 // Faces of an nu by nv vertex grid (vertex (i, j) = j·nu + i), counter-clockwise in (i, j); a
 // periodic direction wraps its last column of quads around to the first.
 Faces grid_faces(int nu, int nv, bool periodic_u, bool periodic_v) {
@@ -74,6 +67,13 @@ Faces grid_faces(int nu, int nv, bool periodic_u, bool periodic_v) {
 }
 
 }  // namespace
+
+double mean_edge_length(const Mesh& m) {
+  double sum = 0.0;
+  for (int f = 0; f < m.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) sum += (m.V.row(m.F(f, k)) - m.V.row(m.F(f, (k + 1) % 3))).norm();
+  return sum / (3.0 * static_cast<double>(m.F.rows()));
+}
 
 Mesh icosphere(int level, double radius) {
   Mesh m = icosahedron();

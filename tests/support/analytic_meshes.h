@@ -10,6 +10,9 @@
 
 namespace fairsurf::test {
 
+/// Mean length of the face edges (interior edges counted twice).
+double mean_edge_length(const Mesh& m);
+
 /// Icosahedron subdivided `level` times (each triangle into four), projected on the sphere of
 /// `radius` centred at the origin: 10·4^level + 2 vertices, valence 5 at the 12 original ones.
 Mesh icosphere(int level, double radius = 1.0);

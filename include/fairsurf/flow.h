@@ -1,0 +1,177 @@
+// fairsurf — geometric flows of triangle meshes: the sixth-order flow of E = Σ_l ∫ ‖∇f_l‖² dA and
+// three baselines, by semi-implicit normal steps with step control (METHOD §4–§7).
+//
+// Every flow moves the free vertices along their fitted normals n (operators.h; outward on a closed
+// counter-clockwise mesh, H = −1/R on a sphere) with a normal velocity V:
+//   sixth_order        V = −EL = −Σ_l EL_l   (energy.h; descends E — the paper prints the ascent +EL)
+//   mean_curvature     V = 2H                (a sphere shrinks)
+//   surface_diffusion  V = −∆H
+//   willmore           V = −(∆H + 2H(H² − K)) (descends ∫ H² dA; a cylinder inflates)
+// The step (METHOD §5). Freeze fits, stencils, n, f_H, f_K, c and w at x^k, linearize
+// V^{k+1} ≈ V^k + J d and solve for the normal displacement d of the free vertices F:
+//   (I − τ J_FF) d_F = τ V_F,  d = 0 on fixed vertices,  x^{k+1} = x^k + d ∘ n^k, with
+//   sixth_order        J = Σ_l P′_l Q_l,  P′ = R L∆ − Σ_c diag(w_c) G_c,
+//                      R = L∆ diag(f_H) + 2 L□ diag(f_K) + diag(c),  w = 2H∇f − 2◇f,
+//                      Q = ½ diag(f_H) A_H + diag(f_K) A_K   (EL = −P′f; the first-order term w·∇f
+//                      is semi-implicit, inside P′; the Newton factor of K is 1, not ½)
+//   mean_curvature     J = A_H                (H^{k+1} = H^k + ½ A_H d exactly)
+//   surface_diffusion  J = −½ L∆ A_H
+//   willmore           J = −½ L∆ A_H          (the cubic term 2H(H² − K) is explicit)
+// with A_H = L∆ ∘ (n_i·n_j), A_K = L□ ∘ (n_i·n_j) (operators.h normal_weighted). Fits and operators
+// are re-evaluated every step at every vertex (fixed vertices of rings 1–2 see the free ones); only
+// the free rows and columns are solved. The products are Eigen sparse products in this version (a
+// known optimization target: the 3-ring pattern could be assembled in place); J's pattern is fixed
+// while the connectivity is, so the solver analyzes it once and refactors every step.
+//
+// Units (METHOD §7). With FlowOptions::normalize (the default) the engine translates and scales the
+// mesh to unit bounding-box diagonal, flows, and scales back: τ, end_time, tau_max and
+// steady_tolerance are in those units. Time scales like length⁶ for the sixth-order flow, length⁴
+// for surface diffusion and Willmore, length² for mean curvature flow: a unit sphere (diagonal 2√3)
+// flowed for t in its own units corresponds to t / (2√3)⁶ = t / 1728 in unit-diagonal units for the
+// sixth-order flow. |V| (= |EL| for the sixth-order flow) is in 1/length⁵ (f = H), 1/length
+// (mean curvature), 1/length³ (surface diffusion, Willmore).
+//
+// Step control (METHOD §5). A trial step is rejected if max_i |d_i| exceeds max_displacement_ratio
+// times the mean length of the edges at vertex i, if the flow's energy more than doubles
+// (E' > max_energy_growth·E + round-off floor), or if it produces a non-finite value, an inverted face
+// (a face normal turned by more than 90° against its orientation at x^k) or a failed linear solve;
+// then τ ← τ·reject_factor. After an accepted step τ ← min(accept_factor·τ, tau_max) (with the
+// control disabled too: set tau_max = tau for a fixed step). On rough input d is not monotone in τ:
+// small τ gives d ≈ τV with V huge, large τ a damped, Newton-like step −J⁻¹V, and τ ≈ 1/λ for the
+// positive eigenvalues λ of J (lower-order terms) a near-singular system; so a rejected large step
+// is not always cured by a smaller one.
+// The energy the control watches is the flow's own: E = Σ_l ∫‖∇f_l‖² (sixth order), the area (mean
+// curvature, surface diffusion) or ∫H² dA (Willmore), summed over the free vertices and their three
+// fixed rings.
+//
+// Safety. run_flow only ever writes accepted states into the caller's V: when it throws, V holds the
+// last accepted state (the input if none). It throws NumericalError ("run_flow: step N: ...") after
+// more than max_consecutive_rejections rejections in a row; with step control disabled, on the first
+// non-finite value, inverted face or failed solve; and, in either mode, when an accepted state's
+// energy exceeds runaway_energy_factor times the initial energy.
+#pragma once
+
+#include <fairsurf/energy_function.h>
+#include <fairsurf/linear_solver.h>
+#include <fairsurf/mesh.h>
+#include <fairsurf/quadratic_fit.h>
+#include <fairsurf/region.h>
+
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace fairsurf {
+
+enum class FlowKind { sixth_order, willmore, surface_diffusion, mean_curvature };
+
+/// "sixth-order", "willmore", "surface-diffusion", "mean-curvature".
+const char* to_string(FlowKind kind);
+/// Inverse of to_string ('_' accepted for '-'); throws InvalidArgument naming the valid kinds.
+FlowKind parse_flow_kind(const std::string& name);
+/// The order of the flow's PDE: 6, 4, 4, 2. The flow reaches continuity G(order/2 − 1) across the
+/// border of the free region when order/2 fixed rings surround it (region.h).
+int flow_order(FlowKind kind);
+
+struct StepControlOptions {
+  bool enabled = true;
+  double max_displacement_ratio = 0.25;  ///< of the local mean edge length
+  double max_energy_growth = 2.0;        ///< reject when E' > this · E (plus a round-off floor)
+  double reject_factor = 0.25;           ///< τ ← τ · this after a rejection
+  double accept_factor = 2.0;            ///< τ ← min(τ · this, tau_max) after an acceptance
+  int max_consecutive_rejections = 12;   ///< one more rejection in a row throws NumericalError
+};
+
+struct FlowOptions {
+  FlowKind kind = FlowKind::sixth_order;
+  /// The functions f_l of the sixth-order energy (energy_function.h names or formulas).
+  std::vector<std::string> functions{"H"};
+  /// Regularization ε = relative_epsilon · κ of singular functions (energy_function.h).
+  double relative_epsilon = 1e-3;
+  /// κ in the flow's units; 0: curvature_scale() of the input (after normalization), kept fixed
+  /// for the whole flow so that energies of different steps are comparable.
+  double curvature_scale = 0;
+
+  bool normalize = true;  ///< flow the mesh scaled to unit bounding-box diagonal (see the header)
+  double tau = 1e-3;      ///< initial time step
+  double tau_max = 1.0;   ///< largest time step the control may reach
+
+  // Stopping: whichever comes first.
+  int max_steps = 1000;  ///< accepted steps
+  double end_time = std::numeric_limits<double>::infinity();  ///< the last step is shortened to hit it
+  /// Steady state when max over free vertices of |V| (|EL| for the sixth-order flow) ≤ this; 0: off.
+  double steady_tolerance = 0;
+
+  StepControlOptions step_control;
+  /// An accepted state with energy above this times the initial energy stops the flow.
+  double runaway_energy_factor = 1e6;
+  /// Fixed rings along the mesh border when run_flow is given no region (smoothing an open mesh).
+  int border_fixed_rings = 3;
+
+  LinearSolverOptions solver;
+  FitOptions fit;
+};
+
+/// Why a trial step was rejected (none for accepted steps).
+enum class StepRejection { none, displacement, energy, non_finite, inverted_face, solver };
+const char* to_string(StepRejection reason);
+
+/// One trial step. Energies and velocities are those of the trial state, in the flow's units.
+struct StepRecord {
+  int step = 0;          ///< 1-based number of the accepted step being attempted
+  int attempt = 0;       ///< 1-based count of trial steps so far (accepted and rejected)
+  double time = 0;       ///< flow time after the step if accepted, before it if rejected
+  double tau = 0;        ///< time step tried
+  double energy = 0;     ///< the flow's energy at the trial state (NaN if not evaluated)
+  double max_displacement = 0;  ///< max_i |d_i|
+  double max_velocity = 0;      ///< max over free vertices of |V| at the trial state (|EL|)
+  bool accepted = false;
+  StepRejection rejection = StepRejection::none;
+  std::string detail;           ///< what was rejected, e.g. "|d| 0.031 > 0.25 · 0.1 at vertex 17"
+  int solver_iterations = 0;    ///< GMRES iterations (0 for direct solvers)
+  double backward_error = 0;    ///< of the linear solve
+  // Wall-clock seconds of the step's phases.
+  double fit_seconds = 0;       ///< refit + operators + energy at the trial state
+  double assembly_seconds = 0;  ///< J and the step matrix
+  double factorize_seconds = 0; ///< including the one-off analysis on the first step
+  double solve_seconds = 0;
+};
+
+enum class FlowStopReason { max_steps, end_time, steady };
+const char* to_string(FlowStopReason reason);
+
+struct FlowReport {
+  std::vector<StepRecord> records;
+  FlowStopReason stop_reason = FlowStopReason::max_steps;
+  int accepted_steps = 0;
+  int rejected_steps = 0;
+  double time = 0;                 ///< flow time reached, in the flow's units
+  double tau = 0;                  ///< the time step the control would try next
+  double initial_energy = 0, final_energy = 0;
+  double initial_max_velocity = 0, final_max_velocity = 0;
+  /// Length of the mesh in the flow's units: 1/diagonal when normalized, else 1.
+  double length_scale = 1;
+  double curvature_scale = 1;      ///< κ used for ε, in the flow's units
+  /// Sixth order: where the chosen functions are not parabolic on the input (METHOD §4). The flow
+  /// still runs; callers should warn when violating_vertices > 0.
+  WellPosedness well_posedness;
+  int free_vertices = 0;
+  Continuity supported = Continuity::G2;  ///< continuity the region's fixed rings support
+};
+
+using FlowObserver = std::function<void(const StepRecord&)>;
+
+/// Flows the free vertices of `region` (built on F's topology) under `options`, calling `observer`
+/// (if set) after each trial step. V (#V by 3) is replaced only by accepted states. Throws
+/// InvalidArgument for invalid options or a region/mesh mismatch, InvalidMeshError for non-finite
+/// input, NumericalError as the header says.
+FlowReport run_flow(Vertices& V, const Faces& F, const Region& region, const FlowOptions& options = {},
+                    const FlowObserver& observer = {});
+
+/// The same with every vertex free except options.border_fixed_rings rings along the mesh border
+/// (region.h interior_vertices; every vertex on a closed mesh).
+FlowReport run_flow(Vertices& V, const Faces& F, const FlowOptions& options = {},
+                    const FlowObserver& observer = {});
+
+}  // namespace fairsurf

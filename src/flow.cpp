@@ -1,0 +1,449 @@
+#include "flow_step.h"
+
+#include <fairsurf/errors.h>
+#include <fairsurf/flow.h>
+#include <fairsurf/topology.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+namespace fairsurf {
+namespace {
+
+using flow_detail::FlowProblem;
+using flow_detail::FlowState;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string format(const char* fmt, double a, double b = 0, double c = 0) {
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, fmt, a, b, c);
+  return buffer;
+}
+
+void check_options(const FlowOptions& o) {
+  const auto& c = o.step_control;
+  const char* problem = nullptr;
+  if (!(o.tau > 0)) problem = "tau must be positive";
+  else if (!(o.tau_max >= o.tau)) problem = "tau_max must be at least tau";
+  else if (o.max_steps < 0) problem = "max_steps must be non-negative";
+  else if (!(o.end_time > 0)) problem = "end_time must be positive";
+  else if (!(o.steady_tolerance >= 0)) problem = "steady_tolerance must be non-negative";
+  else if (!(o.relative_epsilon >= 0)) problem = "relative_epsilon must be non-negative";
+  else if (!(o.curvature_scale >= 0)) problem = "curvature_scale must be non-negative";
+  else if (!(o.runaway_energy_factor > 1)) problem = "runaway_energy_factor must exceed 1";
+  else if (o.border_fixed_rings < 0) problem = "border_fixed_rings must be non-negative";
+  else if (!(c.max_displacement_ratio > 0)) problem = "step_control.max_displacement_ratio must be positive";
+  else if (!(c.max_energy_growth >= 1)) problem = "step_control.max_energy_growth must be at least 1";
+  else if (!(c.reject_factor > 0 && c.reject_factor < 1)) problem = "step_control.reject_factor must lie in (0, 1)";
+  else if (!(c.accept_factor >= 1)) problem = "step_control.accept_factor must be at least 1";
+  else if (c.max_consecutive_rejections < 0) problem = "step_control.max_consecutive_rejections must be non-negative";
+  if (problem) throw InvalidArgument(std::string("run_flow: ") + problem);
+}
+
+// The map between the caller's coordinates and the flow's: x_flow = (x − centre) · scale.
+struct Normalization {
+  Eigen::RowVector3d centre = Eigen::RowVector3d::Zero();
+  double scale = 1;
+};
+
+Normalization normalization(const Vertices& V, bool normalize) {
+  Normalization n;
+  if (!normalize || V.rows() == 0) return n;
+  const Eigen::RowVector3d lo = V.colwise().minCoeff(), hi = V.colwise().maxCoeff();
+  const double diagonal = (hi - lo).norm();
+  if (!(diagonal > 0)) throw InvalidMeshError("run_flow: the mesh's bounding box has zero diagonal");
+  n.centre = 0.5 * (lo + hi);
+  n.scale = 1.0 / diagonal;
+  return n;
+}
+
+// Mean length of the edges at each vertex (#V).
+Eigen::VectorXd local_edge_lengths(const Vertices& X, const Topology& topo) {
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(topo.num_vertices);
+  for (int e = 0; e < topo.edges.rows(); ++e) {
+    const int a = topo.edges(e, 0), b = topo.edges(e, 1);
+    const double length = (X.row(a) - X.row(b)).norm();
+    sum[a] += length, sum[b] += length;
+  }
+  for (int v = 0; v < topo.num_vertices; ++v)
+    if (topo.vertex_vertices.size(v) > 0) sum[v] /= topo.vertex_vertices.size(v);
+  return sum;
+}
+
+// Unnormalized normals of the listed faces.
+void face_directions(const Vertices& X, const Faces& F, const std::vector<int>& faces,
+                     Eigen::MatrixX3d& out) {
+  out.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (std::size_t k = 0; k < faces.size(); ++k) {
+    const auto f = F.row(faces[k]);
+    const Eigen::Vector3d a = X.row(f[0]), b = X.row(f[1]), c = X.row(f[2]);
+    out.row(static_cast<Eigen::Index>(k)) = (b - a).cross(c - a).transpose();
+  }
+}
+
+// The run: the accepted state (positions X, with its normals, velocity and J) and the trial.
+class FlowRun {
+ public:
+  FlowRun(Vertices& V, const Faces& F, const Region& region, const FlowOptions& options,
+          const FlowObserver& observer)
+      : V_(V), F_(F), region_(region), options_(options), observer_(observer),
+        topo_(build_topology(F, static_cast<int>(V.rows()))),
+        solver_(make_linear_solver(options.solver)) {}
+
+  FlowReport run();
+
+ private:
+  void initialize();
+  void accept_current_state();
+  // One trial step at time step tau; returns true if accepted (record filled either way).
+  bool try_step(double tau, StepRecord& record);
+  bool solve_step(double tau, StepRecord& record, Eigen::VectorXd& d);
+  bool displacement_ok(const Eigen::VectorXd& d, StepRecord& record) const;
+  bool faces_ok(StepRecord& record);
+  bool evaluate_trial(StepRecord& record);
+  bool reject(StepRecord& record, StepRejection why, std::string detail);
+  void fail(const StepRecord& record, const std::string& what) const;
+  void write_back() const;
+
+  Vertices& V_;
+  const Faces& F_;
+  const Region& region_;
+  const FlowOptions& options_;
+  const FlowObserver& observer_;
+  Topology topo_;
+  std::unique_ptr<LinearSolver> solver_;
+  Eigen::Index analyzed_nonzeros_ = -1;
+
+  Normalization norm_;
+  FlowProblem problem_;
+  FlowState state_;  // at the accepted positions, or at the last trial after one was evaluated
+  flow_detail::JacobianWorkspace work_;
+  FlowReport report_;
+  double energy_floor_ = 0;
+  std::vector<int> moving_faces_;  // faces with a free vertex
+
+  // The accepted state's figures the next trial needs (the state itself is overwritten by a trial).
+  Vertices X_, X_trial_;
+  Vertices normal_;
+  Eigen::VectorXd velocity_free_;  // τ-free right-hand side V_F
+  Eigen::VectorXd edge_length_;
+  Eigen::MatrixX3d face_direction_, face_direction_trial_;
+  double energy_ = 0;
+  SparseOperator jacobian_, step_matrix_;
+  bool jacobian_current_ = false;
+};
+
+void FlowRun::initialize() {
+  const int n = static_cast<int>(V_.rows());
+  if (static_cast<int>(region_.free_index.size()) != n || region_.num_free() == 0)
+    throw InvalidArgument("run_flow: the region has " + std::to_string(region_.free_index.size()) +
+                          " vertices (" + std::to_string(region_.num_free()) +
+                          " free) but the mesh has " + std::to_string(n));
+  if (!V_.allFinite()) throw InvalidMeshError("run_flow: the mesh has a non-finite coordinate");
+  norm_ = normalization(V_, options_.normalize);
+  X_ = (V_.rowwise() - norm_.centre) * norm_.scale;
+  report_.length_scale = norm_.scale;
+
+  problem_.kind = options_.kind;
+  problem_.region = &region_;
+  problem_.energy_weight.resize(n);
+  for (int v = 0; v < n; ++v) problem_.energy_weight[v] = region_.ring[v] >= 0 ? 1.0 : 0.0;
+  for (int f = 0; f < F_.rows(); ++f)
+    if (region_.is_free(F_(f, 0)) || region_.is_free(F_(f, 1)) || region_.is_free(F_(f, 2)))
+      moving_faces_.push_back(f);
+
+  flow_detail::initialize_geometry(X_, F_, topo_, options_.fit, state_);
+  const SurfaceGeometry& geo = state_.ops.geometry;
+  if (options_.kind == FlowKind::sixth_order) {
+    problem_.functions = parse_energy_functions(options_.functions);
+    problem_.scale.curvature =
+        options_.curvature_scale > 0 ? options_.curvature_scale : curvature_scale(geo.H, geo.K);
+    problem_.scale.relative_epsilon = options_.relative_epsilon;
+    report_.well_posedness = check_well_posedness(problem_.functions, geo.H, geo.K, problem_.scale);
+  }
+  report_.curvature_scale = problem_.scale.curvature;
+  report_.free_vertices = region_.num_free();
+  report_.supported = region_.supported;
+  flow_detail::evaluate_flow_terms(problem_, state_);
+  if (!std::isfinite(state_.energy) || !std::isfinite(state_.max_velocity))
+    throw NumericalError("run_flow: the energy or velocity of the input is not finite");
+
+  // Energy changes below the floor are round-off: 1e-12 of κ² Σ_l ∫ f_l² dA for the sixth order
+  // (the size ‖∇f‖² would have if f varied on the curvature scale), of the energy itself otherwise.
+  double energy_scale = state_.energy;
+  if (options_.kind == FlowKind::sixth_order) {
+    energy_scale = 0;
+    for (const EnergyTerms& t : state_.evaluation.terms)
+      energy_scale += problem_.energy_weight.dot(geo.area.cwiseProduct(t.values.f.cwiseAbs2()));
+    energy_scale *= problem_.scale.curvature * problem_.scale.curvature;
+  }
+  energy_floor_ = 1e-12 * energy_scale;
+  report_.initial_energy = state_.energy;
+  report_.initial_max_velocity = state_.max_velocity;
+  accept_current_state();
+}
+
+// Copies from the state what later trials need; J is assembled lazily (not needed if we stop).
+void FlowRun::accept_current_state() {
+  normal_ = state_.ops.geometry.normal;
+  velocity_free_.resize(region_.num_free());
+  for (int k = 0; k < region_.num_free(); ++k)
+    velocity_free_[k] = state_.velocity[region_.free_vertices[k]];
+  edge_length_ = local_edge_lengths(X_, topo_);
+  face_directions(X_, F_, moving_faces_, face_direction_);
+  energy_ = state_.energy;
+  report_.final_energy = state_.energy;
+  report_.final_max_velocity = state_.max_velocity;
+  jacobian_current_ = false;
+}
+
+void FlowRun::write_back() const {
+  for (int v : region_.free_vertices) V_.row(v) = X_.row(v) / norm_.scale + norm_.centre;
+}
+
+void FlowRun::fail(const StepRecord& record, const std::string& what) const {
+  throw NumericalError("run_flow: step " + std::to_string(record.step) + " (t = " +
+                       format("%.6g, tau = %.3g", record.time, record.tau) + "): " + what);
+}
+
+bool FlowRun::reject(StepRecord& record, StepRejection why, std::string detail) {
+  record.accepted = false;
+  record.rejection = why;
+  record.detail = std::move(detail);
+  return false;
+}
+
+bool FlowRun::solve_step(double tau, StepRecord& record, Eigen::VectorXd& d) {
+  auto start = Clock::now();
+  if (!jacobian_current_) {
+    flow_detail::assemble_jacobian(problem_, state_, work_, jacobian_);
+    jacobian_current_ = true;
+  }
+  flow_detail::form_step_matrix(jacobian_, tau, step_matrix_);
+  record.assembly_seconds = seconds_since(start);
+  try {
+    start = Clock::now();
+    if (step_matrix_.nonZeros() != analyzed_nonzeros_) {
+      solver_->analyze(step_matrix_);
+      analyzed_nonzeros_ = step_matrix_.nonZeros();
+    }
+    solver_->factorize(step_matrix_);
+    record.factorize_seconds = seconds_since(start);
+    start = Clock::now();
+    d = solver_->solve(tau * velocity_free_);
+    record.solve_seconds = seconds_since(start);
+  } catch (const NumericalError& e) {
+    return reject(record, StepRejection::solver, e.what());
+  }
+  record.solver_iterations = solver_->report().iterations;
+  record.backward_error = solver_->report().backward_error;
+  if (!d.allFinite()) return reject(record, StepRejection::non_finite, "non-finite displacement");
+  record.max_displacement = d.cwiseAbs().maxCoeff();
+  return true;
+}
+
+bool FlowRun::displacement_ok(const Eigen::VectorXd& d, StepRecord& record) const {
+  const double ratio = options_.step_control.max_displacement_ratio;
+  for (int k = 0; k < region_.num_free(); ++k) {
+    const int v = region_.free_vertices[k];
+    if (std::abs(d[k]) > ratio * edge_length_[v]) {
+      record.rejection = StepRejection::displacement;
+      record.detail = format("|d| %.3g > %.3g times the local edge length %.3g", std::abs(d[k]),
+                             ratio, edge_length_[v]) + " at vertex " + std::to_string(v);
+      return false;
+    }
+  }
+  return true;
+}
+
+bool FlowRun::faces_ok(StepRecord& record) {
+  face_directions(X_trial_, F_, moving_faces_, face_direction_trial_);
+  for (Eigen::Index k = 0; k < face_direction_trial_.rows(); ++k)
+    if (!(face_direction_trial_.row(k).dot(face_direction_.row(k)) > 0))
+      return reject(record, StepRejection::inverted_face,
+                    "face " + std::to_string(moving_faces_[k]) + " inverted");
+  return true;
+}
+
+bool FlowRun::evaluate_trial(StepRecord& record) {
+  const auto start = Clock::now();
+  try {
+    flow_detail::update_geometry(X_trial_, state_);
+    flow_detail::evaluate_flow_terms(problem_, state_);
+  } catch (const NumericalError& e) {
+    record.fit_seconds = seconds_since(start);
+    return reject(record, StepRejection::non_finite, e.what());
+  }
+  record.fit_seconds = seconds_since(start);
+  record.energy = state_.energy;
+  record.max_velocity = state_.max_velocity;
+  if (!std::isfinite(state_.energy) || !std::isfinite(state_.max_velocity))
+    return reject(record, StepRejection::non_finite, "non-finite energy or velocity");
+  return true;
+}
+
+bool FlowRun::try_step(double tau, StepRecord& record) {
+  record.tau = tau;
+  record.energy = std::numeric_limits<double>::quiet_NaN();
+  record.max_velocity = std::numeric_limits<double>::quiet_NaN();
+  const bool control = options_.step_control.enabled;
+  Eigen::VectorXd d;
+  if (!solve_step(tau, record, d)) return false;
+  if (control && !displacement_ok(d, record)) return false;
+  X_trial_ = X_;
+  for (int k = 0; k < region_.num_free(); ++k) {
+    const int v = region_.free_vertices[k];
+    X_trial_.row(v) += d[k] * normal_.row(v);
+  }
+  if (!faces_ok(record) || !evaluate_trial(record)) return false;
+  const double growth = options_.step_control.max_energy_growth;
+  if (control && state_.energy > growth * energy_ + energy_floor_)
+    return reject(record, StepRejection::energy,
+                  format("energy %.6g > %.3g times %.6g", state_.energy, growth, energy_));
+  record.accepted = true;
+  return true;
+}
+
+FlowReport FlowRun::run() {
+  initialize();
+  const auto& control = options_.step_control;
+  const double tolerance = options_.steady_tolerance;
+  double tau = options_.tau;
+  int consecutive_rejections = 0;
+  auto steady = [&] { return tolerance > 0 && report_.final_max_velocity <= tolerance; };
+  auto finished = [&] {
+    if (steady()) return report_.stop_reason = FlowStopReason::steady, true;
+    if (report_.time >= options_.end_time) return report_.stop_reason = FlowStopReason::end_time, true;
+    if (report_.accepted_steps >= options_.max_steps)
+      return report_.stop_reason = FlowStopReason::max_steps, true;
+    return false;
+  };
+  while (!finished()) {
+    StepRecord record;
+    record.step = report_.accepted_steps + 1;
+    record.attempt = static_cast<int>(report_.records.size()) + 1;
+    record.time = report_.time;
+    const double remaining = options_.end_time - report_.time;
+    const double tau_try = std::min(tau, remaining);
+    const bool accepted = try_step(tau_try, record);
+    if (accepted &&
+        state_.energy > options_.runaway_energy_factor * (report_.initial_energy + energy_floor_)) {
+      record.accepted = false;
+      report_.records.push_back(record);
+      if (observer_) observer_(record);
+      fail(record, format("the energy ran away to %.6g from %.6g", state_.energy,
+                          report_.initial_energy));
+    }
+    if (accepted) {
+      X_.swap(X_trial_);
+      report_.time = tau_try >= remaining ? options_.end_time : report_.time + tau_try;
+      record.time = report_.time;
+      ++report_.accepted_steps;
+      consecutive_rejections = 0;
+      accept_current_state();
+      write_back();
+      tau = std::min(control.accept_factor * tau, options_.tau_max);
+    } else {
+      ++report_.rejected_steps;
+      ++consecutive_rejections;
+    }
+    report_.records.push_back(record);
+    if (observer_) observer_(record);
+    if (accepted) continue;
+    if (!control.enabled)
+      fail(record, std::string(to_string(record.rejection)) + " (step control is off): " + record.detail);
+    if (consecutive_rejections > control.max_consecutive_rejections)
+      fail(record, std::to_string(consecutive_rejections) +
+                       " consecutive rejected steps; the last: " + to_string(record.rejection) +
+                       ": " + record.detail);
+    tau = tau_try * control.reject_factor;
+  }
+  report_.tau = tau;
+  return report_;
+}
+
+}  // namespace
+
+const char* to_string(FlowKind kind) {
+  switch (kind) {
+    case FlowKind::sixth_order: return "sixth-order";
+    case FlowKind::willmore: return "willmore";
+    case FlowKind::surface_diffusion: return "surface-diffusion";
+    case FlowKind::mean_curvature: return "mean-curvature";
+  }
+  return "?";
+}
+
+FlowKind parse_flow_kind(const std::string& name) {
+  std::string key = name;
+  std::replace(key.begin(), key.end(), '_', '-');
+  for (FlowKind k : {FlowKind::sixth_order, FlowKind::willmore, FlowKind::surface_diffusion,
+                     FlowKind::mean_curvature})
+    if (key == to_string(k)) return k;
+  throw InvalidArgument("parse_flow_kind: '" + name +
+                        "' is not a flow (expected sixth-order, willmore, surface-diffusion or "
+                        "mean-curvature)");
+}
+
+int flow_order(FlowKind kind) {
+  switch (kind) {
+    case FlowKind::sixth_order: return 6;
+    case FlowKind::willmore:
+    case FlowKind::surface_diffusion: return 4;
+    case FlowKind::mean_curvature: return 2;
+  }
+  return 0;
+}
+
+const char* to_string(StepRejection reason) {
+  switch (reason) {
+    case StepRejection::none: return "none";
+    case StepRejection::displacement: return "displacement";
+    case StepRejection::energy: return "energy";
+    case StepRejection::non_finite: return "non-finite";
+    case StepRejection::inverted_face: return "inverted face";
+    case StepRejection::solver: return "solver";
+  }
+  return "?";
+}
+
+const char* to_string(FlowStopReason reason) {
+  switch (reason) {
+    case FlowStopReason::max_steps: return "max steps";
+    case FlowStopReason::end_time: return "end time";
+    case FlowStopReason::steady: return "steady";
+  }
+  return "?";
+}
+
+FlowReport run_flow(Vertices& V, const Faces& F, const Region& region, const FlowOptions& options,
+                    const FlowObserver& observer) {
+  check_options(options);
+  FlowRun run(V, F, region, options, observer);
+  return run.run();
+}
+
+FlowReport run_flow(Vertices& V, const Faces& F, const FlowOptions& options,
+                    const FlowObserver& observer) {
+  check_options(options);
+  const Topology topo = build_topology(F, static_cast<int>(V.rows()));
+  const std::vector<int> free = interior_vertices(topo, options.border_fixed_rings);
+  if (free.empty())
+    throw InvalidArgument("run_flow: no vertex is farther than " +
+                          std::to_string(options.border_fixed_rings) +
+                          " rings from the mesh border; nothing can move");
+  const Region region = make_region(topo, free, Continuity::G2);
+  return run_flow(V, F, region, options, observer);
+}
+
+}  // namespace fairsurf

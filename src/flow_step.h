@@ -1,0 +1,60 @@
+// Private to the flow: the state evaluated at one set of positions, and the assembly of the
+// linearized velocity J (include/fairsurf/flow.h states the step and the signs).
+#pragma once
+
+#include <fairsurf/energy.h>
+#include <fairsurf/flow.h>
+#include <fairsurf/operators.h>
+#include <fairsurf/quadratic_fit.h>
+#include <fairsurf/region.h>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace fairsurf::flow_detail {
+
+/// What stays fixed during one run.
+struct FlowProblem {
+  FlowKind kind = FlowKind::sixth_order;
+  EnergyFunctions functions;  ///< sixth order only
+  EnergyScale scale;          ///< ε of the functions, fixed at the start
+  const Region* region = nullptr;
+  /// #V: 1 where the watched energy is summed (free vertices and their three fixed rings), else 0.
+  Eigen::VectorXd energy_weight;
+};
+
+/// Fits, operators, velocity and energy at one set of positions X (#V by 3, the flow's units).
+struct FlowState {
+  QuadraticFits fits;
+  SurfaceOperators ops;
+  EnergyEvaluation evaluation;  ///< sixth order only
+  Eigen::VectorXd velocity;     ///< #V normal velocity V (flow.h), zero on fixed vertices
+  double energy = 0;            ///< the flow's energy over energy_weight
+  double max_velocity = 0;      ///< max over free vertices of |V|
+};
+
+/// First evaluation: builds the fits' neighbourhoods and the operators' patterns at X. Leaves the
+/// velocity and energy to evaluate_flow_terms (the energy scale may depend on the geometry).
+void initialize_geometry(const Vertices& X, const Faces& F, const Topology& topo,
+                         const FitOptions& fit, FlowState& state);
+/// Refits and re-evaluates the operators in place at X (same connectivity).
+void update_geometry(const Vertices& X, FlowState& state);
+/// Velocity, energy and max |V| from the state's operators.
+void evaluate_flow_terms(const FlowProblem& problem, FlowState& state);
+
+/// Buffers of the assembly, kept across steps (their patterns are fixed while the connectivity is).
+struct JacobianWorkspace {
+  SparseOperator A_H, A_K;  ///< L∆ ∘ (n_i·n_j), L□ ∘ (n_i·n_j)
+  SparseOperator R, W, Q;   ///< the factors of P′ = R L∆ − W and Q (flow.h), L∆'s pattern
+  SparseOperator select;    ///< #F by #V: row k picks free vertex k (empty when every vertex is free)
+};
+
+/// J_FF (#F by #F, row-major, compressed) of the flow at `state`.
+void assemble_jacobian(const FlowProblem& problem, const FlowState& state, JacobianWorkspace& work,
+                       SparseOperator& jacobian);
+
+/// step = I − τ J, J's pattern (which holds the diagonal). Keeps step's storage when the pattern
+/// matches.
+void form_step_matrix(const SparseOperator& jacobian, double tau, SparseOperator& step);
+
+}  // namespace fairsurf::flow_detail

@@ -1,0 +1,49 @@
+#include <fairsurf/errors.h>
+#include <fairsurf/region.h>
+#include <fairsurf/smooth.h>
+#include <fairsurf/topology.h>
+#include <fairsurf/validate.h>
+
+#include <cmath>
+#include <limits>
+
+namespace fairsurf {
+
+double default_smoothing_time(const Mesh& mesh, FlowKind kind) {
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  double total = 0;
+  for (int e = 0; e < topo.edges.rows(); ++e)
+    total += (mesh.V.row(topo.edges(e, 0)) - mesh.V.row(topo.edges(e, 1))).norm();
+  const double diagonal = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
+  if (topo.edges.rows() == 0 || !(diagonal > 0))
+    throw InvalidMeshError("default_smoothing_time: the mesh has no extent");
+  const double h = total / static_cast<double>(topo.edges.rows()) / diagonal;
+  return std::pow(2 * h, flow_order(kind));
+}
+
+FlowReport smooth(Mesh& mesh, const SmoothOptions& options, const FlowObserver& observer) {
+  require_valid(mesh, Requirements{}, "smooth");
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  std::vector<char> held(mesh.num_vertices(), 0);
+  for (int v : options.fixed_vertices) {
+    if (v < 0 || v >= mesh.num_vertices())
+      throw InvalidArgument("smooth: fixed vertex " + std::to_string(v) + " is outside [0, " +
+                            std::to_string(mesh.num_vertices()) + ")");
+    held[v] = 1;
+  }
+  std::vector<int> free;
+  for (int v : interior_vertices(topo, options.fixed_rings))
+    if (!held[v]) free.push_back(v);
+  if (free.empty())
+    throw InvalidArgument("smooth: no vertex is left free (" + std::to_string(options.fixed_rings) +
+                          " fixed rings along the border, " +
+                          std::to_string(options.fixed_vertices.size()) + " fixed vertices)");
+
+  FlowOptions flow = options.flow;
+  if (!std::isfinite(flow.end_time) && flow.steady_tolerance <= 0)
+    flow.end_time = default_smoothing_time(mesh, flow.kind);
+  const Region region = make_region(topo, free, Continuity::G2);
+  return run_flow(mesh.V, mesh.F, region, flow, observer);
+}
+
+}  // namespace fairsurf

@@ -1,0 +1,128 @@
+#include <fairsurf/errors.h>
+#include <fairsurf/io.h>
+#include <fairsurf/smooth.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "flow_meshes.h"
+#include "test_support.h"
+
+using namespace fairsurf;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kCells = 48;
+
+// A 48x48 grid of unit diagonal with a smooth bump about 20 edge lengths wide (Gaussian radius
+// 10 edges) in the middle and noise one edge length wide on top.
+Mesh bumpy_grid() {
+  const double h = 1.0 / (kCells * std::sqrt(2.0)), centre = 0.5 * kCells * h, r0 = 10 * h;
+  Mesh m = test::regular_grid(kCells, kCells, h);
+  for (int v = 0; v < m.num_vertices(); ++v) {
+    const double x = m.V(v, 0) - centre, y = m.V(v, 1) - centre;
+    m.V(v, 2) = 0.05 * std::exp(-(x * x + y * y) / (r0 * r0)) + 0.002 * ((v * 7919) % 13 - 6) / 6.0;
+  }
+  return m;
+}
+
+}  // namespace
+
+TEST(Smooth, DefaultTimeIsTwiceTheEdgeLengthToTheOrder) {
+  const Mesh m = test::regular_grid(10, 10, 0.1);  // flat: diagonal √2, edges 0.1 and 0.1√2
+  const double h = (220 * 0.1 + 100 * 0.1 * std::sqrt(2.0)) / 320 / std::sqrt(2.0);
+  EXPECT_NEAR(default_smoothing_time(m, FlowKind::sixth_order), std::pow(2 * h, 6), 1e-15);
+  EXPECT_NEAR(default_smoothing_time(m, FlowKind::mean_curvature), std::pow(2 * h, 2), 1e-15);
+}
+
+TEST(Smooth, KeepsBorderRingsAndRemovesNoise) {
+  Mesh m = bumpy_grid();
+  const Mesh input = m;
+  const FlowReport report = smooth(m);
+  EXPECT_GT(report.accepted_steps, 0);
+  EXPECT_LT(report.final_energy, report.initial_energy);
+  // The outer three rows and columns are the three fixed rings: bit-identical.
+  const int last = kCells;
+  double interior_noise_before = 0, interior_noise_after = 0;
+  for (int j = 0; j <= last; ++j)
+    for (int i = 0; i <= last; ++i) {
+      const int v = j * (last + 1) + i;
+      if (i < 3 || j < 3 || i > last - 3 || j > last - 3) {
+        EXPECT_EQ(m.V.row(v), input.V.row(v)) << v;
+      } else if (i > 3 && j > 3 && i < last - 3 && j < last - 3) {
+        // Second differences along x measure the noise left.
+        const auto second = [&](const Vertices& V) {
+          return std::abs(V(v - 1, 2) - 2 * V(v, 2) + V(v + 1, 2));
+        };
+        interior_noise_before += second(input.V);
+        interior_noise_after += second(m.V);
+      }
+    }
+  std::printf("[smooth] bumpy grid: %d steps, t = %.3g, sum |d2z| %.4g -> %.4g\n", report.accepted_steps,
+              report.time, interior_noise_before, interior_noise_after);
+  EXPECT_LT(interior_noise_after, 0.5 * interior_noise_before);
+  // The bump, 20 edge lengths wide, survives the default time (smooth.h: exponent ≈ 0.06).
+  std::printf("[smooth] bump height 0.05 -> %.4g\n", m.V.col(2).maxCoeff());
+  EXPECT_GT(m.V.col(2).maxCoeff(), 0.85 * 0.05);
+}
+
+TEST(Smooth, RejectsInvalidMeshAndEmptyFreeSet) {
+  Mesh m = test::regular_grid(6, 6);
+  SmoothOptions options;
+  options.fixed_rings = 4;  // a 7x7 grid has nothing left inside four rings
+  try {
+    smooth(m, options);
+    FAIL() << "no exception";
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "smooth: no vertex is left free (4 fixed rings along the border, 0 fixed vertices)");
+  }
+  m.F(3, 1) = m.F(3, 0);  // a face repeating a vertex
+  EXPECT_THROW(smooth(m), InvalidMeshError);
+}
+
+class CliSmooth : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("fairsurf_cli_smooth_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    noisy_ = (dir_ / "noisy.ply").string();
+    write_mesh(noisy_, test::noisy_sphere(3, 1.0, 0.05));
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+  std::string noisy_;
+};
+
+TEST_F(CliSmooth, DenoisesASphereAndLogsEverySteps) {
+  const std::string out = (dir_ / "smooth.ply").string(), log = (dir_ / "log.json").string();
+  const auto run = test::run_cli("smooth '" + noisy_ + "' -o '" + out + "' --log '" + log + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("sixth-order flow"), std::string::npos) << run.out;
+  const Eigen::VectorXd before = test::sphere_distances(read_mesh(noisy_).V, 1.0);
+  const Eigen::VectorXd after = test::sphere_distances(read_mesh(out).V, 1.0);
+  EXPECT_LT(after.cwiseAbs().maxCoeff(), 0.5 * before.cwiseAbs().maxCoeff());
+  std::ifstream in(log);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["flow"], "sixth-order");
+  EXPECT_EQ(j["stop_reason"], "end time");
+  ASSERT_GT(j["steps"].size(), 0u);
+  EXPECT_LT(j["final_energy"].get<double>(), j["initial_energy"].get<double>());
+  EXPECT_TRUE(j["steps"][0].contains("seconds"));
+}
+
+TEST_F(CliSmooth, ExitCodes) {
+  auto run = test::run_cli("smooth '" + noisy_ + "' -o '" + noisy_ + "'");
+  EXPECT_EQ(run.exit_code, 5) << run.out;
+  EXPECT_NE(run.out.find("fairsurf: error: refusing to overwrite input"), std::string::npos) << run.out;
+  run = test::run_cli("smooth '" + noisy_ + "' -o " + (dir_ / "x.ply").string() + " --flow curly");
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_NE(run.out.find("curly"), std::string::npos) << run.out;
+  run = test::run_cli("smooth '" + noisy_ + "' -o " + (dir_ / "x.ply").string() + " --steps 2 --time 1");
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  run = test::run_cli("smooth /nonexistent.obj -o " + (dir_ / "x.ply").string());
+  EXPECT_EQ(run.exit_code, 2) << run.out;
+}
