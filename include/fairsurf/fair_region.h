@@ -1,0 +1,66 @@
+// fairsurf — fairing a free region of a mesh with Gk boundary data: the shared engine of hole
+// filling, region fairing (free-form design) and blending.
+//
+// The free vertices and six rings around them are cut out (submesh.h), so each step costs in
+// proportion to the region. The continuity asked for picks the flow: G2 the sixth-order flow of
+// the chosen f (three fixed rings), G1 Willmore flow (two rings), G0 mean curvature flow (one ring).
+// Where the mesh offers fewer complete rings (the region comes near a mesh border), the continuity
+// falls back to what the data supports and the report says so. The flow runs to a steady state
+// (FlowOptions::steady_tolerance) or its step limit. The classical baseline (`harmonic`) solves the
+// cotangent ∆^(k+1) x = 0 instead.
+#pragma once
+
+#include <fairsurf/continuity.h>
+#include <fairsurf/flow.h>
+#include <fairsurf/harmonic.h>
+#include <fairsurf/mesh.h>
+#include <fairsurf/region.h>
+
+#include <span>
+#include <string>
+
+namespace fairsurf {
+
+enum class FairMethod { flow, harmonic };
+/// "flow" or "harmonic".
+const char* to_string(FairMethod method);
+/// Inverse of to_string; throws InvalidArgument naming the valid methods.
+FairMethod parse_fair_method(const std::string& name);
+
+struct FairRegionOptions {
+  Continuity continuity = Continuity::G2;
+  FairMethod method = FairMethod::flow;
+  /// Flow settings; `kind` is chosen from the continuity, the rest is used as given. The defaults
+  /// here run to a steady state: max|V| under steady_tolerance, at most max_steps steps.
+  FlowOptions flow = default_fair_flow_options();
+  LinearSolverOptions harmonic_solver;  ///< for method == harmonic
+  int submesh_rings = 6;                ///< rings kept around the free region (submesh.h)
+
+  static FlowOptions default_fair_flow_options();
+};
+
+struct FairRegionReport {
+  int free_vertices = 0;
+  Continuity requested = Continuity::G2;
+  Continuity supported = Continuity::G2;  ///< what the fixed rings allow; the flow used this one
+  FairMethod method = FairMethod::flow;
+  FlowKind flow_kind = FlowKind::sixth_order;  ///< when method == flow
+  FlowReport flow;                             ///< when method == flow
+  HarmonicReport harmonic;                     ///< when method == harmonic
+  ContinuityMeasure continuity;                ///< measured after fairing
+  double seconds = 0;                          ///< wall time of the whole call
+};
+
+/// The flow that reaches continuity `c` from c+1 fixed rings: mean curvature (G0), Willmore (G1),
+/// sixth order (G2).
+FlowKind flow_for(Continuity c);
+
+/// Fairs the vertices `free_vertices` of `mesh` (mesh.V updated in place; only free vertices move).
+/// Requires a manifold, consistently oriented mesh without degenerate faces (InvalidMeshError).
+/// Throws InvalidArgument for an empty or out-of-range free set, NumericalError if the flow or the
+/// solve fails — with mesh.V at the last accepted state.
+FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
+                             const FairRegionOptions& options = {},
+                             const FlowObserver& observer = {});
+
+}  // namespace fairsurf
