@@ -1,0 +1,177 @@
+// fairsurf fill: fill the holes of a mesh with G2 (or G1/G0) boundary data (fill.h).
+#include <fairsurf/fill.h>
+#include <fairsurf/io.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <numbers>
+
+#include <unistd.h>
+
+#include "command.h"
+#include "flow_log.h"
+
+namespace fairsurf::cli {
+namespace {
+
+struct FillArgs {
+  std::string input, output, log;
+  std::string continuity = "G2", method = "flow";
+  std::vector<std::string> functions{"H"};
+  std::vector<int> holes;
+  int max_hole_edges = 0, max_steps = 0;
+  bool skip_largest = false, force = false, quiet = false;
+};
+
+FillOptions fill_options(const FillArgs& args) {
+  FillOptions o;
+  o.fairing.continuity = parse_continuity(args.continuity);
+  o.fairing.method = parse_fair_method(args.method);
+  o.fairing.flow.functions = args.functions;
+  if (args.max_steps > 0) o.fairing.flow.max_steps = args.max_steps;
+  o.holes = args.holes;
+  o.max_hole_edges = args.max_hole_edges;
+  o.skip_largest = args.skip_largest;
+  return o;
+}
+
+std::string joined(const std::vector<int>& values) {
+  std::string s;
+  for (std::size_t i = 0; i < values.size(); ++i) s += (i > 0 ? ", " : "") + std::to_string(values[i]);
+  return s;
+}
+
+// "hole 3 (24 border edges): filled, +41 vertices, +106 faces, G2, 17 steps, max|V| 3.2e-03, ..."
+std::string hole_line(const HoleReport& r) {
+  char buffer[512];
+  std::string line = "hole " + std::to_string(r.index) + " (" + std::to_string(r.border_edges) +
+                     " border edges): " + to_string(r.status);
+  if (r.status != HoleStatus::filled) {
+    line += ": " + r.reason;
+    if (!r.filled_with.empty()) line += " (filled jointly with holes " + joined(r.filled_with) + ")";
+    return line;
+  }
+  std::snprintf(buffer, sizeof buffer, ", +%d vertices, +%d faces, %s", r.vertices_added, r.faces_added,
+                std::string(to_string(r.supported)).c_str());
+  line += buffer;
+  if (r.supported != r.requested)
+    line += " (" + std::string(to_string(r.requested)) +
+            " requested; the mesh around the hole supports only " + std::string(to_string(r.supported)) + ")";
+  if (!std::isnan(r.final_max_velocity)) {
+    std::snprintf(buffer, sizeof buffer, ", %d steps, max|V| %.2e", r.steps, r.final_max_velocity);
+    line += buffer;
+  }
+  if (r.continuity.border_vertices > 0) {
+    std::snprintf(buffer, sizeof buffer, ", max normal angle %.3g deg, max H jump %.3g",
+                  r.continuity.max_normal_angle * 180 / std::numbers::pi, r.continuity.max_mean_curvature_jump);
+    line += buffer;
+  }
+  std::snprintf(buffer, sizeof buffer, ", %.2f s", r.seconds);
+  line += buffer;
+  if (!r.filled_with.empty()) line += " (jointly with holes " + joined(r.filled_with) + ")";
+  return line;
+}
+
+nlohmann::json to_json(const HoleReport& r) {
+  nlohmann::json j{{"index", r.index},
+                   {"border_edges", r.border_edges},
+                   {"status", to_string(r.status)},
+                   {"reason", r.reason},
+                   {"filled_with", r.filled_with},
+                   {"vertices_added", r.vertices_added},
+                   {"faces_added", r.faces_added},
+                   {"requested_continuity", std::string(to_string(r.requested))},
+                   {"supported_continuity", std::string(to_string(r.supported))},
+                   {"steps", r.steps},
+                   {"seconds", r.seconds},
+                   {"final_max_velocity", r.final_max_velocity},
+                   {"continuity",
+                    {{"border_vertices", r.continuity.border_vertices},
+                     {"max_normal_angle", r.continuity.max_normal_angle},
+                     {"mean_normal_angle", r.continuity.mean_normal_angle},
+                     {"max_mean_curvature_jump", r.continuity.max_mean_curvature_jump},
+                     {"mean_mean_curvature_jump", r.continuity.mean_mean_curvature_jump}}}};
+  return j;
+}
+
+void run_fill(const FillArgs& args) {
+  check_output_path(args.output, {args.input}, args.force);
+  if (!args.log.empty()) check_output_path(args.log, {args.input}, args.force);
+  const FillOptions options = fill_options(args);
+  Mesh mesh = read_input(args.input);
+  const bool progress = !args.quiet && ::isatty(STDERR_FILENO);
+  std::map<int, nlohmann::json> steps;  // by the first hole of each jointly faired group
+  const FillObserver observer = [&](std::span<const int> holes, const StepRecord& r) {
+    steps[holes.front()].push_back(to_json(r));
+    if (progress)
+      std::fprintf(stderr, "\r  hole %d  step %d  tau %.3g  max|V| %.3g%s   ", holes.front(), r.step, r.tau,
+                   r.max_velocity, r.accepted ? "" : "  (rejected)");
+  };
+  const FillReport report = fill_holes(mesh, options, observer);
+  if (progress) std::fputc('\n', stderr);
+
+  write_output([&] { write_mesh(args.output, mesh); });
+  if (!args.log.empty()) {
+    nlohmann::json log{{"command", "fill"},
+                       {"input", args.input},
+                       {"output", args.output},
+                       {"continuity", args.continuity},
+                       {"method", args.method},
+                       {"functions", args.functions},
+                       {"filled", report.filled},
+                       {"skipped", report.skipped},
+                       {"failed", report.failed},
+                       {"seconds", report.seconds},
+                       {"holes", nlohmann::json::array()}};
+    for (const auto& r : report.holes) {
+      nlohmann::json j = to_json(r);
+      const int group = r.filled_with.empty() ? r.index : std::min(r.index, r.filled_with.front());
+      if (steps.count(group)) j["steps_log"] = steps[group];
+      log["holes"].push_back(j);
+    }
+    write_output([&] { write_file_atomically(args.log, log.dump(2) + "\n", "fill"); });
+  }
+
+  if (!args.quiet)
+    for (const auto& r : report.holes) std::printf("%s\n", hole_line(r).c_str());
+  const int selected = report.filled + report.failed;
+  std::printf("filled %d of %d selected holes of %s (%d failed, %d skipped): %d -> %d vertices, %d -> %d "
+              "faces, %.2f s; wrote %s\n",
+              report.filled, selected, args.input.c_str(), report.failed, report.skipped, report.input_vertices,
+              mesh.num_vertices(), report.input_faces, mesh.num_faces(), report.seconds, args.output.c_str());
+  std::fflush(stdout);
+  if (report.failed > 0)
+    throw CliError(kNumerical, "fill: " + std::to_string(report.failed) + " of " + std::to_string(selected) +
+                                   " selected holes failed; " + args.output + " still holds the " +
+                                   std::to_string(report.filled) + " holes that were filled");
+}
+
+void setup_fill(CLI::App& app) {
+  auto args = std::make_shared<FillArgs>();
+  CLI::App* cmd = app.add_subcommand("fill", "Fill the holes of a mesh with G2 (or G1, G0) boundary data");
+  cmd->add_option("input", args->input, "Input mesh (.obj, .off, .ply, .stl)")->required();
+  cmd->add_option("-o,--output", args->output, "Output mesh")->required();
+  cmd->add_option("--continuity", args->continuity,
+                  "G2 (default: sixth-order flow, three fixed rings), G1 (Willmore) or G0 (mean curvature)");
+  cmd->add_option("--f", args->functions,
+                  "Energy function(s) f(H,K) of the sixth-order flow, repeatable (default H)")
+      ->take_all();
+  cmd->add_option("--holes", args->holes, "Fill only these boundary loops (0-based, comma separated)")
+      ->delimiter(',');
+  cmd->add_option("--max-hole-edges", args->max_hole_edges, "Skip loops with more border edges than this");
+  cmd->add_flag("--skip-largest", args->skip_largest,
+                "Leave the longest loop open (the outer border of an open surface)");
+  cmd->add_option("--method", args->method, "flow (default) or harmonic (cotangent Laplacian baseline)");
+  cmd->add_option("--max-steps", args->max_steps, "Stop each hole's flow after this many accepted steps");
+  cmd->add_option("--log", args->log, "Write a per-hole JSON report with every flow step here");
+  cmd->add_flag("--quiet", args->quiet, "Only the summary line; no progress");
+  cmd->add_flag("--force", args->force, "Allow outputs to overwrite the input");
+  cmd->callback([args] { run_fill(*args); });
+}
+
+const CommandRegistration registration(40, setup_fill);
+
+}  // namespace
+}  // namespace fairsurf::cli

@@ -1,0 +1,112 @@
+// Hole filling end to end (fill_holes) against patch size: a unit icosphere with the faces above
+// z = c removed, filled with G2 data by the sixth-order flow (f = H, fair_region's default steady
+// stopping) and by the tri-harmonic baseline. Sizes: ~1k new vertices (5 subdivisions, c = 0.8),
+// ~10k (6, c = 0.5) and ~100k (7, c = −0.2). Each case runs in a forked child, so that VmHWM is the
+// case's own peak memory. Printed per case: new vertices, accepted and rejected steps, mean time of a
+// trial step (fit + assembly + factorization + solve, from the step records), total wall time of
+// fill_holes (triangulation, refinement, membrane, fairing, checks), max|r − 1| over the new
+// vertices, peak memory. Pass "small" as the first argument to skip the 100k case.
+#include <fairsurf/errors.h>
+#include <fairsurf/fill.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "step_matrix_sphere.h"
+
+namespace {
+
+using namespace fairsurf;
+
+long long peak_bytes() {
+  std::ifstream status("/proc/self/status");
+  const std::string key = "VmHWM:";
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind(key, 0) == 0) return std::stoll(line.substr(key.size())) * 1024;
+  return -1;
+}
+
+// The icosphere without the faces that have a vertex above z = cap (the vertices stay, unused).
+Mesh holed_sphere(int subdivisions, double cap) {
+  const Mesh sphere = bench::icosphere(subdivisions);
+  Mesh out;
+  out.V = sphere.V;
+  std::vector<int> kept;
+  for (int f = 0; f < sphere.num_faces(); ++f) {
+    bool above = false;
+    for (int k = 0; k < 3; ++k) above = above || sphere.V(sphere.F(f, k), 2) > cap;
+    if (!above) kept.push_back(f);
+  }
+  out.F.resize(static_cast<int>(kept.size()), 3);
+  for (int i = 0; i < static_cast<int>(kept.size()); ++i) out.F.row(i) = sphere.F.row(kept[i]);
+  return out;
+}
+
+int run_case(int subdivisions, double cap, FairMethod method) {
+  Mesh mesh = holed_sphere(subdivisions, cap);
+  const int input_vertices = mesh.num_vertices();
+  FillOptions o;
+  o.fairing.method = method;
+  int attempts = 0;
+  double step_seconds = 0;
+  const FillObserver observer = [&](std::span<const int>, const StepRecord& s) {
+    ++attempts;
+    step_seconds += s.fit_seconds + s.assembly_seconds + s.factorize_seconds + s.solve_seconds;
+  };
+  FillReport report;
+  try {
+    report = fill_holes(mesh, o, observer);
+  } catch (const Error& e) {
+    std::printf("%d subdivisions, cap z > %.1f, %s: failed: %s\n", subdivisions, cap, to_string(method), e.what());
+    return 1;
+  }
+  const HoleReport& h = report.holes.front();
+  if (h.status != HoleStatus::filled) {
+    std::printf("%d subdivisions, cap z > %.1f, %s: hole %s: %s\n", subdivisions, cap, to_string(method),
+                to_string(h.status), h.reason.c_str());
+    return 1;
+  }
+  double deviation = 0;
+  for (int v = input_vertices; v < mesh.num_vertices(); ++v)
+    deviation = std::max(deviation, std::abs(mesh.V.row(v).norm() - 1.0));
+  std::printf("%7d new vertices (%d subdivisions, cap z > %4.1f), %-8s: %3d steps (%d trials), %.3f s a trial "
+              "step, fill_holes %.2f s; max|r-1| %.2e, max|V| %.2e; peak %.0f MB\n",
+              h.vertices_added, subdivisions, cap, to_string(method), h.steps, attempts,
+              attempts > 0 ? step_seconds / attempts : 0.0, report.seconds, deviation, h.final_max_velocity,
+              static_cast<double>(peak_bytes()) / 1e6);
+  return 0;
+}
+
+void in_child(int subdivisions, double cap, FairMethod method) {
+  std::fflush(stdout);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const int code = run_case(subdivisions, cap, method);
+    std::fflush(stdout);
+    ::_exit(code);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool small = argc > 1 && std::strcmp(argv[1], "small") == 0;
+  struct Case {
+    int subdivisions;
+    double cap;
+  };
+  std::vector<Case> cases{{5, 0.8}, {6, 0.5}};
+  if (!small) cases.push_back({7, -0.2});
+  for (const Case& c : cases)
+    for (const FairMethod method : {FairMethod::flow, FairMethod::harmonic}) in_child(c.subdivisions, c.cap, method);
+  return 0;
+}

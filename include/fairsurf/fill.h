@@ -1,0 +1,92 @@
+// fairsurf — N-sided hole filling with G2 boundary data (METHOD §7), end to end.
+//
+// Pipeline, per hole: the boundary loop (topology.h boundary_loops, in its order: loop i is hole i)
+// is triangulated, refined to the surrounding edge length and relaxed to a G0 membrane (patch.h
+// hole_patch); then the patch's new vertices are faired with the hole's border and the rest of the
+// mesh fixed (fair_region.h: the sixth-order flow to a steady state for G2, or the cotangent ∆^k
+// baseline), so the fixed rings around the hole carry the position, tangent plane and curvature
+// data. The original vertices never move and keep their order and positions; new vertices and faces
+// are appended after them. Per-vertex attributes (scalars, colours) are dropped once a hole is
+// filled, since their length would no longer be #V.
+//
+// Holes whose fixed rings overlap (their borders are at most 2·rings − 2 edges apart, rings = the
+// fixed rings of the requested continuity, 3 for G2) are filled jointly: one patch, one free region,
+// so neither sees the other's open border as a cut in its boundary data. Other holes are filled one
+// after another on the growing mesh, in the order of their first hole index. A hole whose
+// surroundings offer fewer complete rings than the continuity needs (it comes close to a border that
+// stays open) is faired with the continuity the data supports, and its report says so.
+//
+// Failures are per hole and leave the mesh as it was before that hole: a non-manifold border (the
+// loop passes through a vertex twice, or a border vertex has more than two border edges), a
+// triangulation, refinement or flow that throws, or a faired patch whose faces cross the mesh
+// (face_intersection.h). The other holes are still filled.
+#pragma once
+
+#include <fairsurf/fair_region.h>
+#include <fairsurf/mesh.h>
+#include <fairsurf/patch.h>
+
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace fairsurf {
+
+struct FillOptions {
+  /// The fairing step: continuity (G2 by default), method (flow or harmonic), the flow's functions
+  /// f (fairing.flow.functions, "H" by default) and stopping rule.
+  FairRegionOptions fairing;
+  PatchOptions patch;  ///< triangulation, refinement and membrane of the initial patch
+
+  // Which boundary loops are filled. A loop left out is reported as skipped with the reason.
+  std::vector<int> holes;   ///< loop indices (boundary_loops order); empty: every loop
+  int max_hole_edges = 0;   ///< loops with more border edges are skipped; 0: no limit
+  bool skip_largest = false;  ///< leave the longest loop (an open surface's outer border) open
+  /// Reject a patch whose faces cross the surrounding mesh (face_intersection.h).
+  bool check_intersections = true;
+};
+
+enum class HoleStatus { filled, skipped, failed };
+/// "filled", "skipped", "failed".
+const char* to_string(HoleStatus status);
+
+/// What happened to one boundary loop of the input.
+struct HoleReport {
+  int index = 0;         ///< the loop's index in boundary_loops order
+  int border_edges = 0;  ///< edges of the loop
+  HoleStatus status = HoleStatus::skipped;
+  std::string reason;    ///< why it was skipped or failed; empty when filled
+  std::vector<int> filled_with;  ///< other holes filled jointly with it (overlapping rings)
+  int vertices_added = 0;        ///< this hole's new vertices
+  int faces_added = 0;           ///< this hole's new faces
+  Continuity requested = Continuity::G2;
+  Continuity supported = Continuity::G2;  ///< what the fixed rings allowed; the fairing used this
+  int steps = 0;                 ///< accepted flow steps (0 for the harmonic method)
+  double seconds = 0;            ///< wall time of patch, fairing and checks (of the joint region)
+  /// max|V| on the free vertices at the end, in the flow's units (flow.h; |EL| for the sixth-order
+  /// flow); NaN for the harmonic method or a patch without interior vertices.
+  double final_max_velocity = 0;
+  /// Normal angle and mean-curvature jump across this hole's border, measured after fairing
+  /// (border_vertices == 0 when the patch has no interior vertex).
+  ContinuityMeasure continuity;
+};
+
+struct FillReport {
+  std::vector<HoleReport> holes;  ///< one per boundary loop of the input, in loop order
+  int filled = 0, skipped = 0, failed = 0;
+  int input_vertices = 0, input_faces = 0;
+  double seconds = 0;  ///< wall time of the whole call
+};
+
+/// Called after every trial flow step with the holes being faired together (ascending indices).
+using FillObserver = std::function<void(std::span<const int> holes, const StepRecord& record)>;
+
+/// Fills the selected boundary loops of `mesh` in place (see the header).
+/// Throws InvalidMeshError ("fill_holes: mesh has ...") if the mesh has non-finite coordinates,
+/// malformed, degenerate or duplicate faces, non-manifold edges, inconsistent orientation, or
+/// non-manifold vertices that are not pinches of the border; InvalidArgument for a hole index outside
+/// the loops or a negative max_hole_edges. Everything else is reported per hole.
+FillReport fill_holes(Mesh& mesh, const FillOptions& options = {}, const FillObserver& observer = {});
+
+}  // namespace fairsurf

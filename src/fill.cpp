@@ -1,0 +1,288 @@
+#include <fairsurf/continuity.h>
+#include <fairsurf/errors.h>
+#include <fairsurf/face_intersection.h>
+#include <fairsurf/fill.h>
+#include <fairsurf/topology.h>
+#include <fairsurf/validate.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace fairsurf {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Border edges at each vertex (#V).
+std::vector<int> border_edge_counts(const Topology& topo) {
+  std::vector<int> count(topo.num_vertices, 0);
+  for (int e = 0; e < topo.edges.rows(); ++e)
+    if (topo.is_boundary_edge(e)) ++count[topo.edges(e, 0)], ++count[topo.edges(e, 1)];
+  return count;
+}
+
+// The mesh requirements of filling. Everything validate checks must hold, except that a vertex may
+// be non-manifold where it pinches the border (more than two border edges): such a vertex only makes
+// the holes through it unfillable, and those are reported per hole.
+void require_fillable(const Mesh& mesh) {
+  const ValidationReport report = validate(mesh);
+  Requirements requirements;
+  requirements.manifold = false;
+  require_valid(report, requirements, "fill_holes");
+  if (report.non_manifold_edges.count > 0) {
+    const int n = report.non_manifold_edges.count;
+    throw InvalidMeshError("fill_holes: mesh has " + std::to_string(n) + " non-manifold edge" +
+                           (n == 1 ? "" : "s") + " (first: " +
+                           format_examples(report.non_manifold_edges, 1) + ")");
+  }
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  const std::vector<int> border = border_edge_counts(topo);
+  const int pinches = static_cast<int>(std::count_if(border.begin(), border.end(), [](int c) { return c > 2; }));
+  const int elsewhere = report.non_manifold_vertices.count - pinches;
+  if (elsewhere > 0) {
+    std::string first;
+    for (int v : report.non_manifold_vertices.examples)
+      if (border[v] <= 2) {
+        first = " (first: " + std::to_string(v) + ")";
+        break;
+      }
+    throw InvalidMeshError("fill_holes: mesh has " + std::to_string(elsewhere) + " non-manifold vert" +
+                           (elsewhere == 1 ? "ex" : "ices") + " away from the hole borders" + first);
+  }
+}
+
+// Why the loop cannot bound a manifold patch, or "" if it can.
+std::string non_manifold_border(std::span<const int> loop, const std::vector<int>& border_edges) {
+  if (loop.size() < 3) return "the loop has fewer than three edges";
+  std::vector<int> sorted(loop.begin(), loop.end());
+  std::sort(sorted.begin(), sorted.end());
+  const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
+  if (repeated != sorted.end())
+    return "non-manifold border: the loop passes through vertex " + std::to_string(*repeated) + " twice";
+  for (int v : loop)
+    if (border_edges[v] > 2)
+      return "non-manifold border: vertex " + std::to_string(v) + " has " + std::to_string(border_edges[v]) +
+             " border edges";
+  return "";
+}
+
+// Marks the loops that are not to be filled as skipped, with the reason; returns the others.
+std::vector<int> select_holes(const std::vector<std::vector<int>>& loops, const FillOptions& options,
+                              std::vector<HoleReport>& reports) {
+  const int n = static_cast<int>(loops.size());
+  std::vector<char> selected(n, options.holes.empty() ? 1 : 0);
+  for (int i : options.holes) {
+    if (i < 0 || i >= n)
+      throw InvalidArgument("fill_holes: hole " + std::to_string(i) + " is outside [0, " + std::to_string(n) +
+                            ") (the mesh has " + std::to_string(n) + " boundary loops)");
+    selected[i] = 1;
+  }
+  for (int i = 0; i < n; ++i)
+    if (!selected[i]) reports[i].reason = "not selected";
+  if (options.skip_largest && n > 0) {
+    const auto largest = std::max_element(loops.begin(), loops.end(),
+                                          [](const auto& a, const auto& b) { return a.size() < b.size(); });
+    const int i = static_cast<int>(largest - loops.begin());
+    if (selected[i]) reports[i].reason = "the largest border, left open (skip largest)";
+    selected[i] = 0;
+  }
+  std::vector<int> chosen;
+  for (int i = 0; i < n; ++i) {
+    if (!selected[i]) continue;
+    if (options.max_hole_edges > 0 && reports[i].border_edges > options.max_hole_edges) {
+      reports[i].reason = std::to_string(reports[i].border_edges) + " border edges, more than the maximum " +
+                          std::to_string(options.max_hole_edges);
+      continue;
+    }
+    chosen.push_back(i);
+  }
+  return chosen;
+}
+
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// Groups of holes whose fixed rings (the loop and `rings` − 1 rings around it) share a vertex,
+// each group ascending, the groups ordered by their first hole.
+std::vector<std::vector<int>> overlapping_groups(const Topology& topo, const std::vector<std::vector<int>>& loops,
+                                                 const std::vector<int>& holes, int rings) {
+  std::vector<int> parent(loops.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<int> owner(topo.num_vertices, -1);
+  for (int h : holes)
+    for (int v : k_ring(topo, loops[h], rings - 1)) {
+      if (owner[v] >= 0) parent[find_root(parent, h)] = find_root(parent, owner[v]);
+      owner[v] = h;
+    }
+  std::vector<std::vector<int>> groups;
+  std::vector<int> group_of(loops.size(), -1);
+  for (int h : holes) {
+    const int root = find_root(parent, h);
+    if (group_of[root] < 0) group_of[root] = static_cast<int>(groups.size()), groups.emplace_back();
+    groups[group_of[root]].push_back(h);
+  }
+  return groups;
+}
+
+// The hole each new vertex and face of `patch` belongs to: patches of different loops share no
+// vertex (manifold loops are vertex-disjoint), so the new faces fall into one vertex-connected piece
+// per loop.
+struct PatchOwnership {
+  std::vector<int> vertex_hole;  ///< per new vertex (index − first new vertex)
+  std::vector<int> face_hole;    ///< per new face
+};
+
+PatchOwnership patch_ownership(const InitialPatch& patch, int input_vertices,
+                               const std::vector<std::vector<int>>& loops, std::span<const int> holes) {
+  const Faces& F = patch.mesh.F;
+  std::vector<int> parent(patch.mesh.num_vertices());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (int f = patch.first_patch_face; f < F.rows(); ++f)
+    for (int k = 1; k < 3; ++k) parent[find_root(parent, F(f, k))] = find_root(parent, F(f, 0));
+  std::vector<int> hole_of_root(parent.size(), -1);
+  for (int h : holes)
+    for (int v : loops[h]) hole_of_root[find_root(parent, v)] = h;
+  PatchOwnership own;
+  for (int v = input_vertices; v < patch.mesh.num_vertices(); ++v)
+    own.vertex_hole.push_back(hole_of_root[find_root(parent, v)]);
+  for (int f = patch.first_patch_face; f < F.rows(); ++f)
+    own.face_hole.push_back(hole_of_root[find_root(parent, F(f, 0))]);
+  return own;
+}
+
+std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int input_faces) {
+  const FaceIntersection& c = crossings.front();
+  const bool other_new = c.other_face >= input_faces;
+  return "the faired patch crosses the mesh: new face " + std::to_string(c.query_face) + " crosses " +
+         (other_new ? "new" : "input") + " face " + std::to_string(c.other_face) + " (" +
+         std::to_string(crossings.size()) + (crossings.size() >= 10 ? "+" : "") + " crossing" +
+         (crossings.size() == 1 ? "" : "s") + ")";
+}
+
+// Fills the holes `group` jointly on `mesh`; on success replaces mesh and fills the reports, on
+// failure throws (mesh untouched) or returns the reason the patch was rejected.
+std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, const std::vector<int>& group,
+                       const FillOptions& options, const FillObserver& observer,
+                       std::vector<HoleReport>& reports) {
+  std::vector<std::vector<int>> group_loops;
+  for (int h : group) group_loops.push_back(loops[h]);
+  InitialPatch patch = hole_patch(mesh, group_loops, options.patch);
+
+  FairRegionReport fairing;
+  fairing.requested = fairing.supported = options.fairing.continuity;
+  fairing.method = options.fairing.method;
+  if (!patch.free_vertices.empty()) {
+    const FlowObserver step_observer = [&](const StepRecord& r) {
+      if (observer) observer(group, r);
+    };
+    fairing = fair_region(patch.mesh, patch.free_vertices, options.fairing, step_observer);
+  }
+
+  std::vector<int> new_faces(patch.mesh.num_faces() - patch.first_patch_face);
+  std::iota(new_faces.begin(), new_faces.end(), patch.first_patch_face);
+  if (options.check_intersections) {
+    const auto crossings = find_face_intersections(patch.mesh.V, patch.mesh.F, new_faces, 10);
+    if (!crossings.empty()) return crossing_reason(crossings, mesh.num_faces());
+  }
+
+  const PatchOwnership own = patch_ownership(patch, mesh.num_vertices(), loops, group);
+  const bool flowed = fairing.method == FairMethod::flow && !patch.free_vertices.empty();
+  for (int h : group) {
+    HoleReport& r = reports[h];
+    std::vector<int> free;
+    for (std::size_t i = 0; i < own.vertex_hole.size(); ++i)
+      if (own.vertex_hole[i] == h) free.push_back(mesh.num_vertices() + static_cast<int>(i));
+    r.vertices_added = static_cast<int>(free.size());
+    r.faces_added = static_cast<int>(std::count(own.face_hole.begin(), own.face_hole.end(), h));
+    r.supported = fairing.supported;
+    r.steps = flowed ? fairing.flow.accepted_steps : 0;
+    r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();
+    if (!free.empty()) r.continuity = measure_continuity(patch.mesh.V, patch.mesh.F, free);
+  }
+  mesh.V = std::move(patch.mesh.V);
+  mesh.F = std::move(patch.mesh.F);
+  mesh.vertex_scalars.clear();
+  mesh.vertex_colors.resize(0, 3);
+  return "";
+}
+
+void mark(std::vector<HoleReport>& reports, const std::vector<int>& group, HoleStatus status,
+          const std::string& reason) {
+  for (int h : group) {
+    reports[h].status = status;
+    reports[h].reason = reason;
+  }
+}
+
+}  // namespace
+
+const char* to_string(HoleStatus status) {
+  switch (status) {
+    case HoleStatus::filled: return "filled";
+    case HoleStatus::skipped: return "skipped";
+    case HoleStatus::failed: return "failed";
+  }
+  return "unknown";
+}
+
+FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver& observer) {
+  const auto start = Clock::now();
+  if (options.max_hole_edges < 0)
+    throw InvalidArgument("fill_holes: max_hole_edges must be >= 0, got " + std::to_string(options.max_hole_edges));
+  require_fillable(mesh);
+  FillReport report;
+  report.input_vertices = mesh.num_vertices();
+  report.input_faces = mesh.num_faces();
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  const auto loops = boundary_loops(mesh.F, topo);
+  for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
+    HoleReport r;
+    r.index = i;
+    r.border_edges = static_cast<int>(loops[i].size());
+    r.requested = r.supported = options.fairing.continuity;
+    report.holes.push_back(r);
+  }
+
+  const std::vector<int> border_edges = border_edge_counts(topo);
+  std::vector<int> fillable;
+  for (int h : select_holes(loops, options, report.holes)) {
+    const std::string bad = non_manifold_border(loops[h], border_edges);
+    if (bad.empty())
+      fillable.push_back(h);
+    else
+      mark(report.holes, {h}, HoleStatus::failed, bad);
+  }
+  const int rings = rings_needed(options.fairing.continuity);
+  for (const auto& group : overlapping_groups(topo, loops, fillable, rings)) {
+    for (int h : group)
+      for (int other : group)
+        if (other != h) report.holes[h].filled_with.push_back(other);
+    const auto group_start = Clock::now();
+    std::string reason;
+    try {
+      reason = fill_group(mesh, loops, group, options, observer, report.holes);
+    } catch (const Error& e) {
+      reason = e.what();
+    }
+    mark(report.holes, group, reason.empty() ? HoleStatus::filled : HoleStatus::failed, reason);
+    for (int h : group) report.holes[h].seconds = seconds_since(group_start);
+  }
+  for (const auto& r : report.holes) {
+    report.filled += r.status == HoleStatus::filled;
+    report.skipped += r.status == HoleStatus::skipped;
+    report.failed += r.status == HoleStatus::failed;
+  }
+  report.seconds = seconds_since(start);
+  return report;
+}
+
+}  // namespace fairsurf

@@ -1,0 +1,68 @@
+#include "hole_meshes.h"
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace fairsurf::test {
+
+using Vec3 = Eigen::Vector3d;
+
+Mesh cut_hole(const Mesh& mesh, const std::function<bool(const Vec3&)>& inside) {
+  std::vector<int> kept_faces;
+  std::vector<int> new_index(mesh.num_vertices(), -1);
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    bool drop = false;
+    for (int k = 0; k < 3; ++k) drop = drop || inside(mesh.V.row(mesh.F(f, k)).transpose());
+    if (drop) continue;
+    kept_faces.push_back(f);
+    for (int k = 0; k < 3; ++k) new_index[mesh.F(f, k)] = 0;
+  }
+  Mesh out;
+  int count = 0;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (new_index[v] == 0) new_index[v] = count++;
+  out.V.resize(count, 3);
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (new_index[v] >= 0) out.V.row(new_index[v]) = mesh.V.row(v);
+  out.F.resize(static_cast<int>(kept_faces.size()), 3);
+  for (int i = 0; i < static_cast<int>(kept_faces.size()); ++i)
+    for (int k = 0; k < 3; ++k) out.F(i, k) = new_index[mesh.F(kept_faces[i], k)];
+  return out;
+}
+
+// Ericson, Real-Time Collision Detection, 5.1.5: the closest point by Voronoi regions.
+double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return (p - a).norm();
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return (p - b).norm();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + d1 / (d1 - d3) * ab)).norm();
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return (p - c).norm();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + d2 / (d2 - d6) * ac)).norm();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
+  const double denominator = 1.0 / (va + vb + vc);
+  return (p - (a + ab * (vb * denominator) + ac * (vc * denominator))).norm();
+}
+
+double distance_to_mesh(const Vec3& p, const Mesh& mesh) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const Vec3 a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+    const Vec3 lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
+    const double box_distance = (lo - p).cwiseMax(p - hi).cwiseMax(0.0).norm();
+    if (box_distance >= best) continue;
+    best = std::min(best, point_triangle_distance(p, a, b, c));
+  }
+  return best;
+}
+
+}  // namespace fairsurf::test

@@ -1,0 +1,24 @@
+// Meshes with holes cut out, and distances to reference surfaces, for the hole-filling tests.
+#pragma once
+
+#include <fairsurf/mesh.h>
+
+#include <Eigen/Core>
+
+#include <functional>
+
+namespace fairsurf::test {
+
+/// `mesh` without every face that has a vertex where `inside(position)` holds; the vertices no face
+/// uses any more are removed too (the others keep their relative order).
+Mesh cut_hole(const Mesh& mesh, const std::function<bool(const Eigen::Vector3d&)>& inside);
+
+/// Distance from p to the triangle (a, b, c).
+double point_triangle_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               const Eigen::Vector3d& c);
+
+/// Distance from p to the surface of `mesh` (brute force over the faces, skipping those whose
+/// bounding box is farther than the best distance so far).
+double distance_to_mesh(const Eigen::Vector3d& p, const Mesh& mesh);
+
+}  // namespace fairsurf::test

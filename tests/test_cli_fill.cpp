@@ -1,0 +1,114 @@
+// End-to-end tests of `fairsurf fill`: per-hole lines, hole selection, the JSON log, exit codes.
+#include <fairsurf/io.h>
+#include <fairsurf/topology.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "test_support.h"
+
+namespace fs = std::filesystem;
+using namespace fairsurf;
+
+namespace {
+
+class CliFill : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("fairsurf_cli_fill_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  static std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+  fs::path dir_;
+};
+
+int loop_count(const Mesh& m) {
+  return static_cast<int>(boundary_loops(m.F, build_topology(m.F, m.num_vertices())).size());
+}
+
+}  // namespace
+
+TEST_F(CliFill, SelectedHolesAreFilledOneLineEachWithALog) {
+  const std::string in = test::data_path("cgal_mech_holes_shark.off");
+  const auto run = test::run_cli("fill " + quoted(in) + " -o " + quoted(path("out.ply")) + " --holes 0,3 --log " +
+                                 quoted(path("log.json")));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  for (const char* line : {"hole 0 (", "hole 3 ("}) {
+    const auto at = run.out.find(line);
+    ASSERT_NE(at, std::string::npos) << run.out;
+    EXPECT_NE(run.out.substr(at, run.out.find('\n', at) - at).find("): filled, +"), std::string::npos) << run.out;
+  }
+  EXPECT_NE(run.out.find("border edges): skipped: not selected"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("filled 2 of 2 selected holes"), std::string::npos) << run.out;
+
+  const Mesh input = read_mesh(in), output = read_mesh(path("out.ply"));
+  EXPECT_EQ(loop_count(input), 4);
+  EXPECT_EQ(loop_count(output), 2);
+  EXPECT_GT(output.num_vertices(), input.num_vertices());
+
+  std::ifstream log_file(path("log.json"));
+  const auto log = nlohmann::json::parse(log_file);
+  ASSERT_EQ(log["holes"].size(), 4u);
+  EXPECT_EQ(log["holes"][0]["status"], "filled");
+  EXPECT_EQ(log["holes"][1]["status"], "skipped");
+  EXPECT_TRUE(log["holes"][0].contains("steps_log"));
+  EXPECT_EQ(log["filled"], 2);
+}
+
+TEST_F(CliFill, ExitCodes) {
+  const std::string out = quoted(path("out.obj"));
+  auto run = test::run_cli("fill /nonexistent/mesh.obj -o " + out);
+  EXPECT_EQ(run.exit_code, 2) << run.out;
+
+  run = test::run_cli("fill " + quoted(test::data_path("lagrange_prout.obj")) + " -o " + out);
+  EXPECT_EQ(run.exit_code, 3) << run.out;
+  EXPECT_NE(run.out.find("fairsurf: error: fill_holes: mesh has "), std::string::npos) << run.out;
+  EXPECT_FALSE(fs::exists(path("out.obj")));
+
+  const std::string copy = path("in.off");
+  fs::copy_file(test::data_path("cgal_mech_holes_shark.off"), copy);
+  run = test::run_cli("fill " + quoted(copy) + " -o " + quoted(copy));
+  EXPECT_EQ(run.exit_code, 5) << run.out;
+
+  run = test::run_cli("fill " + quoted(copy) + " -o " + out + " --holes 9");
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_NE(run.out.find("fill_holes: hole 9 is outside [0, 4)"), std::string::npos) << run.out;
+}
+
+TEST_F(CliFill, SomeHolesFailingExitsFourAndKeepsTheFilledOnes) {
+  // A grid with two square holes pinched at one vertex (unfillable) and one clean hole.
+  const Mesh grid = test::regular_grid(24, 12, 1.0);
+  Mesh holed;
+  holed.V = grid.V;
+  std::vector<int> kept;
+  for (int f = 0; f < grid.num_faces(); ++f) {
+    const Eigen::RowVector3d c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3;
+    const bool removed = (c.x() > 4 && c.x() < 6 && c.y() > 4 && c.y() < 6) ||
+                         (c.x() > 6 && c.x() < 8 && c.y() > 6 && c.y() < 8) ||
+                         (c.x() > 16 && c.x() < 18 && c.y() > 4 && c.y() < 6);
+    if (!removed) kept.push_back(f);
+  }
+  holed.F.resize(static_cast<int>(kept.size()), 3);
+  for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
+  write_mesh(path("pinched.obj"), holed);
+
+  const auto run = test::run_cli("fill " + quoted(path("pinched.obj")) + " -o " + quoted(path("out.obj")) +
+                                 " --skip-largest");
+  EXPECT_EQ(run.exit_code, 4) << run.out;
+  EXPECT_NE(run.out.find("failed: non-manifold border: "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("still holds the 1 holes that were filled"), std::string::npos) << run.out;
+  const Mesh out = read_mesh(path("out.obj"));
+  EXPECT_GT(out.num_faces(), holed.num_faces());
+}

@@ -1,0 +1,414 @@
+// Tests of hole filling end to end (fill.h): analytic holes against the exact surface, the G2 > G1 >
+// G0 > harmonic ordering, real meshes filled watertight, per-hole failures, and the pair test of
+// face_intersection.h.
+#include <fairsurf/errors.h>
+#include <fairsurf/face_intersection.h>
+#include <fairsurf/fill.h>
+#include <fairsurf/io.h>
+#include <fairsurf/topology.h>
+#include <fairsurf/validate.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iostream>
+
+#include "analytic_meshes.h"
+#include "flow_meshes.h"
+#include "hole_meshes.h"
+#include "test_support.h"
+
+using namespace fairsurf;
+
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+FillOptions options_for(Continuity c, FairMethod method = FairMethod::flow) {
+  FillOptions o;
+  o.fairing.continuity = c;
+  o.fairing.method = method;
+  return o;
+}
+
+// Max |distance| of the new vertices to a reference surface given as signed distances.
+double max_new_vertex_deviation(const Mesh& filled, int input_vertices,
+                                const std::function<Eigen::VectorXd(const Vertices&)>& distances) {
+  const Eigen::VectorXd d = distances(filled.V.bottomRows(filled.num_vertices() - input_vertices));
+  return d.cwiseAbs().maxCoeff();
+}
+
+// What every successful fill guarantees, checked with validate and topology.
+void expect_watertight(const Mesh& input, const Mesh& filled) {
+  ASSERT_GE(filled.num_vertices(), input.num_vertices());
+  EXPECT_TRUE(filled.V.topRows(input.num_vertices()) == input.V) << "an input vertex moved";
+  EXPECT_TRUE(filled.F.topRows(input.num_faces()) == input.F) << "an input face changed";
+  const ValidationReport v = validate(filled);
+  EXPECT_TRUE(v.manifold());
+  EXPECT_EQ(v.degenerate_faces.count, 0);
+  EXPECT_EQ(v.inconsistent_orientation_edges.count, 0);
+  EXPECT_EQ(v.duplicate_faces.count, 0);
+  EXPECT_TRUE(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).empty());
+}
+
+struct SphereFill {
+  double deviation = 0;    // max |r − 1| over the new vertices
+  double h_jump = 0;       // max H jump across the border
+  double normal_angle = 0; // max normal angle across the border
+  HoleReport hole;
+};
+
+// The unit icosphere of `level` with the faces above z = 0.5 removed, filled.
+SphereFill fill_sphere_cap(int level, const FillOptions& options) {
+  const Mesh holed = test::cut_hole(test::icosphere(level), [](const Vec3& p) { return p.z() > 0.5; });
+  Mesh filled = holed;
+  const FillReport report = fill_holes(filled, options);
+  EXPECT_EQ(report.holes.size(), 1u);
+  EXPECT_EQ(report.filled, 1) << report.holes.front().reason;
+  expect_watertight(holed, filled);
+  SphereFill out;
+  out.hole = report.holes.front();
+  out.deviation = max_new_vertex_deviation(filled, holed.num_vertices(),
+                                           [](const Vertices& V) { return test::sphere_distances(V, 1.0); });
+  out.h_jump = out.hole.continuity.max_mean_curvature_jump;
+  out.normal_angle = out.hole.continuity.max_normal_angle;
+  return out;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Analytic holes
+
+TEST(FillSphere, G2CapConvergesToTheSphereAndBeatsTheHarmonicBaseline) {
+  const SphereFill coarse = fill_sphere_cap(3, options_for(Continuity::G2));
+  const SphereFill fine = fill_sphere_cap(4, options_for(Continuity::G2));
+  const SphereFill harmonic = fill_sphere_cap(4, options_for(Continuity::G2, FairMethod::harmonic));
+  std::cout << "sphere cap z > 0.5 removed, G2 fill: max|r-1| " << coarse.deviation << " (642 vertices), "
+            << fine.deviation << " (2562), harmonic " << harmonic.deviation << " (2562); max H jump "
+            << fine.h_jump << " vs harmonic " << harmonic.h_jump << "; " << fine.hole.steps << " steps, "
+            << fine.hole.vertices_added << " new vertices\n";
+  EXPECT_EQ(fine.hole.supported, Continuity::G2);
+  EXPECT_LT(fine.deviation, 5e-4);
+  EXPECT_LT(fine.deviation, coarse.deviation);
+  EXPECT_LT(fine.deviation, 0.05 * harmonic.deviation);
+  EXPECT_LT(fine.h_jump, 0.1);
+  EXPECT_LT(fine.h_jump, harmonic.h_jump);
+  EXPECT_TRUE(std::isnan(harmonic.hole.final_max_velocity));
+}
+
+TEST(FillSphere, G2BeatsG1BeatsG0) {
+  const SphereFill g2 = fill_sphere_cap(3, options_for(Continuity::G2));
+  const SphereFill g1 = fill_sphere_cap(3, options_for(Continuity::G1));
+  const SphereFill g0 = fill_sphere_cap(3, options_for(Continuity::G0));
+  std::cout << "sphere cap, 642 vertices: max|r-1| G2 " << g2.deviation << ", G1 " << g1.deviation << ", G0 "
+            << g0.deviation << "; max normal angle G2 " << g2.normal_angle << ", G1 " << g1.normal_angle
+            << ", G0 " << g0.normal_angle << "\n";
+  EXPECT_LT(g2.deviation, g1.deviation);
+  EXPECT_LT(g1.deviation, g0.deviation);
+  EXPECT_LT(g1.normal_angle, g0.normal_angle);
+  EXPECT_EQ(g1.hole.supported, Continuity::G1);
+}
+
+TEST(FillCylinder, G2HoleStaysOnTheCylinder) {
+  // A cylinder is stationary for f = H (constant H): the G2 fill should reproduce it.
+  for (const int around : {32, 64}) {
+    const int along = around / 2;
+    const Mesh cylinder = test::open_cylinder(around, along, 1.0, 3.0);
+    const Mesh holed = test::cut_hole(cylinder, [](const Vec3& p) { return (p - Vec3(1, 0, 1.5)).norm() < 0.6; });
+    FillOptions o = options_for(Continuity::G2);
+    o.max_hole_edges = around - 1;  // the two open ends stay open
+    Mesh filled = holed, harmonic = holed;
+    const FillReport r = fill_holes(filled, o);
+    ASSERT_EQ(r.filled, 1);
+    EXPECT_EQ(r.skipped, 2);
+    o.fairing.method = FairMethod::harmonic;
+    ASSERT_EQ(fill_holes(harmonic, o).filled, 1);
+    auto radius_error = [](const Vertices& V) { return (test::axis_distances(V).array() - 1.0).matrix().eval(); };
+    const double g2 = max_new_vertex_deviation(filled, holed.num_vertices(), radius_error);
+    const double baseline = max_new_vertex_deviation(harmonic, holed.num_vertices(), radius_error);
+    std::cout << "cylinder " << around << " around: G2 max|rho-1| " << g2 << ", harmonic " << baseline << "\n";
+    EXPECT_LT(g2, 2e-3);
+    EXPECT_LT(g2, 0.2 * baseline);
+  }
+}
+
+TEST(FillTorus, G2HoleStaysCloseToTheTorus) {
+  for (const int n : {48, 96}) {
+    const Mesh torus = test::torus_grid(n, n / 2, 2.0, 1.0).mesh;
+    const Mesh holed = test::cut_hole(torus, [](const Vec3& p) { return (p - Vec3(3, 0, 0)).norm() < 0.7; });
+    Mesh filled = holed, harmonic = holed;
+    ASSERT_EQ(fill_holes(filled, options_for(Continuity::G2)).filled, 1);
+    ASSERT_EQ(fill_holes(harmonic, options_for(Continuity::G2, FairMethod::harmonic)).filled, 1);
+    auto torus_error = [](const Vertices& V) { return test::torus_distances(V, 2.0, 1.0); };
+    const double g2 = max_new_vertex_deviation(filled, holed.num_vertices(), torus_error);
+    const double baseline = max_new_vertex_deviation(harmonic, holed.num_vertices(), torus_error);
+    std::cout << "torus " << n << "x" << n / 2 << ": G2 max distance " << g2 << ", harmonic " << baseline << "\n";
+    EXPECT_LT(g2, 1e-2);
+    EXPECT_LT(g2, 0.5 * baseline);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Real meshes
+
+class RealHoles : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(RealHoles, EveryHoleIsFilledWatertight) {
+  const Mesh input = read_mesh(test::data_path(GetParam()));
+  Mesh filled = input;
+  const FillReport r = fill_holes(filled, options_for(Continuity::G2));
+  for (const auto& h : r.holes) EXPECT_EQ(h.status, HoleStatus::filled) << "hole " << h.index << ": " << h.reason;
+  EXPECT_EQ(r.filled, static_cast<int>(r.holes.size()));
+  std::cout << GetParam() << ": " << r.filled << " holes filled in " << r.seconds << " s\n";
+  expect_watertight(input, filled);
+}
+
+INSTANTIATE_TEST_SUITE_P(Data, RealHoles,
+                         ::testing::Values("cgal_mech_holes_shark.off", "airplane_holes.obj",
+                                           "stanford_bunny_zipper.obj"));
+
+TEST(FillBlub, TheFilledHoleStaysCloseToTheOriginal) {
+  const Mesh open = read_mesh(test::data_path("blub_open.obj"));
+  const Mesh exact = read_mesh(test::data_path("blub.obj"));
+  const double diagonal = (exact.V.colwise().maxCoeff() - exact.V.colwise().minCoeff()).norm();
+  for (const FairMethod method : {FairMethod::flow, FairMethod::harmonic}) {
+    Mesh filled = open;
+    ASSERT_EQ(fill_holes(filled, options_for(Continuity::G2, method)).filled, 1);
+    expect_watertight(open, filled);
+    double worst = 0, mean = 0;
+    for (int v = open.num_vertices(); v < filled.num_vertices(); ++v) {
+      const double d = test::distance_to_mesh(filled.V.row(v).transpose(), exact);
+      worst = std::max(worst, d), mean += d;
+    }
+    mean /= filled.num_vertices() - open.num_vertices();
+    std::cout << "blub_open, " << to_string(method) << ": " << filled.num_vertices() - open.num_vertices()
+              << " new vertices, distance to blub max " << worst / diagonal << ", mean " << mean / diagonal
+              << " (of the bounding-box diagonal)\n";
+    EXPECT_LT(worst / diagonal, 0.02);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Selection, joint holes, per-hole failures
+
+TEST(FillSelection, ExplicitHolesMaxEdgesAndSkipLargest) {
+  // A cylinder with a hole: loops are the two ends (64 edges) and the hole.
+  const Mesh holed = test::cut_hole(test::open_cylinder(64, 24, 1.0, 3.0),
+                                    [](const Vec3& p) { return (p - Vec3(1, 0, 1.5)).norm() < 0.4; });
+  const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  ASSERT_EQ(loops.size(), 3u);
+  int hole = 0;
+  while (loops[hole].size() == 64) ++hole;
+
+  FillOptions o = options_for(Continuity::G0);
+  o.holes = {hole};
+  Mesh a = holed;
+  FillReport r = fill_holes(a, o);
+  EXPECT_EQ(r.filled, 1);
+  EXPECT_EQ(r.skipped, 2);
+  for (const auto& h : r.holes)
+    EXPECT_EQ(h.status == HoleStatus::filled, h.index == hole) << h.index;
+  EXPECT_EQ(r.holes[(hole + 1) % 3].reason, "not selected");
+
+  o.holes = {};
+  o.max_hole_edges = 63;
+  Mesh b = holed;
+  r = fill_holes(b, o);
+  EXPECT_EQ(r.filled, 1);
+  EXPECT_EQ(r.holes[(hole + 1) % 3].reason, "64 border edges, more than the maximum 63");
+
+  o.holes = {3};
+  EXPECT_THROW(
+      {
+        try {
+          fill_holes(b, o);
+        } catch (const InvalidArgument& e) {
+          EXPECT_STREQ(e.what(), "fill_holes: hole 3 is outside [0, 3) (the mesh has 3 boundary loops)");
+          throw;
+        }
+      },
+      InvalidArgument);
+}
+
+TEST(FillSelection, SkipLargestLeavesTheOuterBorderOfAGrid) {
+  Mesh grid = test::regular_grid(16, 16, 0.1);
+  const Mesh holed = test::cut_hole(grid, [](const Vec3& p) { return (p - Vec3(0.8, 0.8, 0)).norm() < 0.25; });
+  FillOptions o = options_for(Continuity::G2);
+  o.skip_largest = true;
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, o);
+  ASSERT_EQ(r.holes.size(), 2u);
+  EXPECT_EQ(r.filled, 1);
+  EXPECT_EQ(r.skipped, 1);
+  for (const auto& h : r.holes)
+    if (h.status == HoleStatus::skipped) EXPECT_EQ(h.reason, "the largest border, left open (skip largest)");
+  // The patch of a planar hole stays in the plane.
+  EXPECT_LT(filled.V.bottomRows(filled.num_vertices() - holed.num_vertices()).col(2).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+TEST(FillSelection, AHoleNearAnOpenBorderFallsBackAndSaysSo) {
+  // The hole is two rows from the grid's outer border, which stays open: only G1 data exists.
+  const Mesh holed = test::cut_hole(test::regular_grid(16, 16, 0.1), [](const Vec3& p) {
+    return p.x() > 0.25 && p.x() < 0.55 && p.y() > 0.75 && p.y() < 1.05;
+  });
+  FillOptions o = options_for(Continuity::G2);
+  o.skip_largest = true;
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, o);
+  ASSERT_EQ(r.filled, 1);
+  for (const auto& h : r.holes)
+    if (h.status == HoleStatus::filled) {
+      EXPECT_EQ(h.requested, Continuity::G2);
+      EXPECT_LT(static_cast<int>(h.supported), static_cast<int>(Continuity::G2));
+    }
+}
+
+TEST(FillJoint, HolesWithOverlappingRingsAreFilledTogether) {
+  // Two holes three edges apart on a sphere: their three fixed rings overlap.
+  const Mesh sphere = test::icosphere(4);
+  const Mesh holed = test::cut_hole(sphere, [](const Vec3& p) {
+    return (p - Vec3(0.3, 0, 0.954)).norm() < 0.2 || (p - Vec3(-0.3, 0, 0.954)).norm() < 0.2;
+  });
+  ASSERT_EQ(boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices())).size(), 2u);
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, options_for(Continuity::G2));
+  ASSERT_EQ(r.filled, 2);
+  EXPECT_EQ(r.holes[0].filled_with, std::vector<int>{1});
+  EXPECT_EQ(r.holes[1].filled_with, std::vector<int>{0});
+  EXPECT_EQ(r.holes[0].supported, Continuity::G2);
+  EXPECT_GT(r.holes[0].vertices_added, 0);
+  EXPECT_GT(r.holes[1].vertices_added, 0);
+  EXPECT_EQ(r.holes[0].vertices_added + r.holes[1].vertices_added, filled.num_vertices() - holed.num_vertices());
+  EXPECT_EQ(r.holes[0].faces_added + r.holes[1].faces_added, filled.num_faces() - holed.num_faces());
+  expect_watertight(holed, filled);
+  EXPECT_LT(max_new_vertex_deviation(filled, holed.num_vertices(),
+                                     [](const Vertices& V) { return test::sphere_distances(V, 1.0); }),
+            1e-3);
+}
+
+TEST(FillFailures, ANonManifoldBorderFailsAloneAndTheOtherHoleIsFilled) {
+  // Two square holes of a grid that touch at the vertex (6, 6) (a pinch with four border edges), and
+  // a third hole far from both. The faces are removed by their centroids.
+  const Mesh grid = test::regular_grid(24, 12, 1.0);
+  auto removed = [](const Vec3& c) {
+    return (c.x() > 4 && c.x() < 6 && c.y() > 4 && c.y() < 6) || (c.x() > 6 && c.x() < 8 && c.y() > 6 && c.y() < 8) ||
+           (c.x() > 16 && c.x() < 18 && c.y() > 4 && c.y() < 6);
+  };
+  Mesh holed;
+  holed.V = grid.V;
+  std::vector<int> kept;
+  for (int f = 0; f < grid.num_faces(); ++f) {
+    const Vec3 c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0;
+    if (!removed(c)) kept.push_back(f);
+  }
+  holed.F.resize(static_cast<int>(kept.size()), 3);
+  for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
+  const int pinch = 6 * 25 + 6;
+
+  FillOptions o = options_for(Continuity::G2);
+  o.skip_largest = true;
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, o);
+  EXPECT_EQ(r.filled, 1);
+  EXPECT_GE(r.failed, 1);
+  for (const auto& h : r.holes) {
+    if (h.status != HoleStatus::failed) continue;
+    EXPECT_EQ(h.reason.rfind("non-manifold border: ", 0), 0u) << h.reason;
+    EXPECT_NE(h.reason.find("vertex " + std::to_string(pinch)), std::string::npos) << h.reason;
+  }
+  // The filled hole's patch is in place, and the input is intact in front of it.
+  EXPECT_TRUE(filled.F.topRows(holed.num_faces()) == holed.F);
+  EXPECT_GT(filled.num_faces(), holed.num_faces());
+}
+
+TEST(FillFailures, InvalidMeshIsRejectedWithAPreciseMessage) {
+  Mesh prout = read_mesh(test::data_path("lagrange_prout.obj"));
+  try {
+    fill_holes(prout);
+    FAIL() << "no throw";
+  } catch (const InvalidMeshError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("fill_holes: mesh has ", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("non-manifold edges"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FillFailures, APatchThatWouldCrossTheMeshIsRejectedAndTheMeshKept) {
+  // A sphere with its cap removed and a separate vertical sheet standing in the hole: the patch
+  // must cross the sheet.
+  const Mesh holed = test::cut_hole(test::icosphere(3), [](const Vec3& p) { return p.z() > 0.5; });
+  Mesh sheet = test::regular_grid(8, 8, 0.15);  // in z = 0 over [0, 1.2]^2
+  Mesh mesh;
+  mesh.V.resize(holed.num_vertices() + sheet.num_vertices(), 3);
+  mesh.V.topRows(holed.num_vertices()) = holed.V;
+  for (int v = 0; v < sheet.num_vertices(); ++v)  // rotate into the plane x = 0, centred over the hole
+    mesh.V.row(holed.num_vertices() + v) << 0.0, sheet.V(v, 0) - 0.6, sheet.V(v, 1) + 0.2;
+  mesh.F.resize(holed.num_faces() + sheet.num_faces(), 3);
+  mesh.F.topRows(holed.num_faces()) = holed.F;
+  mesh.F.bottomRows(sheet.num_faces()) = sheet.F.array() + holed.num_vertices();
+  const auto loops = boundary_loops(mesh.F, build_topology(mesh.F, mesh.num_vertices()));
+  ASSERT_EQ(loops.size(), 2u);
+  const int hole = loops[0].front() < holed.num_vertices() ? 0 : 1;
+
+  FillOptions o = options_for(Continuity::G0);
+  o.holes = {hole};
+  Mesh filled = mesh;
+  const FillReport r = fill_holes(filled, o);
+  EXPECT_EQ(r.failed, 1);
+  EXPECT_EQ(r.holes[hole].status, HoleStatus::failed);
+  EXPECT_NE(r.holes[hole].reason.find("the faired patch crosses the mesh: new face"), std::string::npos)
+      << r.holes[hole].reason;
+  EXPECT_TRUE(filled.V == mesh.V);
+  EXPECT_TRUE(filled.F == mesh.F);
+
+  o.check_intersections = false;  // without the check the crossing patch goes in
+  EXPECT_EQ(fill_holes(filled, o).filled, 1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The pair test
+
+TEST(FaceIntersection, CrossingTouchingAndDisjointTriangles) {
+  const Vec3 a0(0, 0, 0), a1(1, 0, 0), a2(0, 1, 0);
+  // A triangle piercing a's interior.
+  EXPECT_TRUE(triangles_cross(a0, a1, a2, Vec3(0.2, 0.2, -1), Vec3(0.3, 0.2, 1), Vec3(0.2, 0.3, 1)));
+  // Its edge only touches a's plane at z = 0 (endpoint on the plane): not a crossing.
+  EXPECT_FALSE(triangles_cross(a0, a1, a2, Vec3(0.2, 0.2, 0), Vec3(0.3, 0.2, 1), Vec3(0.2, 0.3, 1)));
+  // Passes beside a.
+  EXPECT_FALSE(triangles_cross(a0, a1, a2, Vec3(2, 2, -1), Vec3(3, 2, 1), Vec3(2, 3, 1)));
+  // A's edge pierces b although no edge of b pierces a.
+  EXPECT_TRUE(triangles_cross(a0, a1, a2, Vec3(0.5, -1, -1), Vec3(0.5, 2, -1), Vec3(0.5, 0.2, 3)));
+  // Parallel planes.
+  EXPECT_FALSE(triangles_cross(a0, a1, a2, Vec3(0, 0, 1e-3), Vec3(1, 0, 1e-3), Vec3(0, 1, 1e-3)));
+}
+
+TEST(FaceIntersection, FindsExactlyTheCrossingPairsOfTwoSheets) {
+  // Two 4x4 grids crossing at right angles: the query faces of one meet the other along a line.
+  const Mesh a = test::regular_grid(4, 4, 0.25);
+  Mesh m;
+  m.V.resize(2 * a.num_vertices(), 3);
+  m.V.topRows(a.num_vertices()) = a.V;
+  for (int v = 0; v < a.num_vertices(); ++v) m.V.row(a.num_vertices() + v) << a.V(v, 0), 0.4, a.V(v, 1) - 0.5;
+  m.F.resize(2 * a.num_faces(), 3);
+  m.F.topRows(a.num_faces()) = a.F;
+  m.F.bottomRows(a.num_faces()) = a.F.array() + a.num_vertices();
+  std::vector<int> query(a.num_faces());
+  for (int f = 0; f < a.num_faces(); ++f) query[f] = f;
+  const auto found = find_face_intersections(m.V, m.F, query);
+  ASSERT_FALSE(found.empty());
+  for (const auto& c : found) {
+    EXPECT_LT(c.query_face, a.num_faces());
+    EXPECT_GE(c.other_face, a.num_faces());
+  }
+  // Each query face on the line y = 0.4 crosses some face of the other sheet; none elsewhere.
+  std::vector<char> crossed(a.num_faces(), 0);
+  for (const auto& c : found) crossed[c.query_face] = 1;
+  for (int f = 0; f < a.num_faces(); ++f) {
+    double lo = 1e9, hi = -1e9;
+    for (int k = 0; k < 3; ++k) lo = std::min(lo, a.V(a.F(f, k), 1)), hi = std::max(hi, a.V(a.F(f, k), 1));
+    EXPECT_EQ(crossed[f] != 0, lo < 0.4 && hi > 0.4) << f;
+  }
+  EXPECT_EQ(find_face_intersections(m.V, m.F, query, 2).size(), 2u);
+}
