@@ -2,12 +2,14 @@
 #include <fairsurf/errors.h>
 #include <fairsurf/face_intersection.h>
 #include <fairsurf/fill.h>
+#include <fairsurf/submesh.h>
 #include <fairsurf/topology.h>
 #include <fairsurf/validate.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numeric>
 
@@ -28,34 +30,20 @@ std::vector<int> border_edge_counts(const Topology& topo) {
   return count;
 }
 
-// The mesh requirements of filling. Everything validate checks must hold, except that a vertex may
-// be non-manifold where it pinches the border (more than two border edges): such a vertex only makes
+// The mesh requirements of filling: everything validate checks, except that a vertex may be
+// non-manifold where it pinches the border (more than two border edges): such a vertex only makes
 // the holes through it unfillable, and those are reported per hole.
 void require_fillable(const Mesh& mesh) {
-  const ValidationReport report = validate(mesh);
-  Requirements requirements;
-  requirements.manifold = false;
-  require_valid(report, requirements, "fill_holes");
-  if (report.non_manifold_edges.count > 0) {
-    const int n = report.non_manifold_edges.count;
-    throw InvalidMeshError("fill_holes: mesh has " + std::to_string(n) + " non-manifold edge" +
-                           (n == 1 ? "" : "s") + " (first: " +
-                           format_examples(report.non_manifold_edges, 1) + ")");
+  ValidationReport report = validate(mesh);
+  const bool well_formed = !report.no_faces && report.out_of_range_indices.count == 0 &&
+                           report.repeated_vertex_faces.count == 0 && report.nan_vertices.count == 0;
+  if (well_formed) {
+    const std::vector<int> border = border_edge_counts(build_topology(mesh.F, mesh.num_vertices()));
+    Finding& vertices = report.non_manifold_vertices;
+    vertices.count -= static_cast<int>(std::count_if(border.begin(), border.end(), [](int c) { return c > 2; }));
+    std::erase_if(vertices.examples, [&](int v) { return border[v] > 2; });
   }
-  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
-  const std::vector<int> border = border_edge_counts(topo);
-  const int pinches = static_cast<int>(std::count_if(border.begin(), border.end(), [](int c) { return c > 2; }));
-  const int elsewhere = report.non_manifold_vertices.count - pinches;
-  if (elsewhere > 0) {
-    std::string first;
-    for (int v : report.non_manifold_vertices.examples)
-      if (border[v] <= 2) {
-        first = " (first: " + std::to_string(v) + ")";
-        break;
-      }
-    throw InvalidMeshError("fill_holes: mesh has " + std::to_string(elsewhere) + " non-manifold vert" +
-                           (elsewhere == 1 ? "ex" : "ices") + " away from the hole borders" + first);
-  }
+  require_valid(report, Requirements{}, "fill_holes");
 }
 
 // Why the loop cannot bound a manifold patch, or "" if it can.
@@ -159,6 +147,15 @@ PatchOwnership patch_ownership(const InitialPatch& patch, int input_vertices,
   return own;
 }
 
+// Local indices in `sub` of the global vertices `global` (all in the submesh).
+std::vector<int> to_local(const Submesh& sub, const std::vector<int>& global) {
+  std::vector<int> local;
+  for (int v : global)
+    local.push_back(static_cast<int>(std::lower_bound(sub.to_global.begin(), sub.to_global.end(), v) -
+                                     sub.to_global.begin()));
+  return local;
+}
+
 std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int input_faces) {
   const FaceIntersection& c = crossings.front();
   const bool other_new = c.other_face >= input_faces;
@@ -171,20 +168,36 @@ std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int 
 // Fills the holes `group` jointly on `mesh`; on success replaces mesh and fills the reports, on
 // failure throws (mesh untouched) or returns the reason the patch was rejected.
 std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, const std::vector<int>& group,
-                       const FillOptions& options, const FillObserver& observer,
-                       std::vector<HoleReport>& reports) {
+                       const FillOptions& options, const FairRegionOptions& fairing_options,
+                       const FillObserver& observer, std::vector<HoleReport>& reports) {
   std::vector<std::vector<int>> group_loops;
   for (int h : group) group_loops.push_back(loops[h]);
   InitialPatch patch = hole_patch(mesh, group_loops, options.patch);
 
+  // Fair on the patch's neighbourhood only (fair_region would cut out the same rings): the cost of
+  // checking the mesh stays in proportion to the hole, and a defect far away (a pinched border
+  // elsewhere) does not concern this hole.
+  Submesh sub;
   FairRegionReport fairing;
-  fairing.requested = fairing.supported = options.fairing.continuity;
-  fairing.method = options.fairing.method;
+  fairing.requested = fairing.supported = fairing_options.continuity;
+  fairing.method = fairing_options.method;
   if (!patch.free_vertices.empty()) {
+    const Topology topo = build_topology(patch.mesh.F, patch.mesh.num_vertices());
+    sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, topo, patch.free_vertices,
+                                options.fairing.submesh_rings);
     const FlowObserver step_observer = [&](const StepRecord& r) {
       if (observer) observer(group, r);
     };
-    fairing = fair_region(patch.mesh, patch.free_vertices, options.fairing, step_observer);
+    fairing = fair_region(sub.mesh, sub.free_local, fairing_options, step_observer);
+    const FlowReport& flow = fairing.flow;
+    if (fairing.method == FairMethod::flow && flow.stop_reason != FlowStopReason::steady &&
+        !(flow.final_max_velocity <= flow.initial_max_velocity)) {
+      char figures[160];
+      std::snprintf(figures, sizeof figures, "%d steps without a steady state, max|V| %.3g -> %.3g",
+                    flow.accepted_steps, flow.initial_max_velocity, flow.final_max_velocity);
+      return std::string("the ") + to_string(fairing.flow_kind) + " flow diverged (" + figures + ")";
+    }
+    write_back_free(sub, patch.mesh.V);
   }
 
   std::vector<int> new_faces(patch.mesh.num_faces() - patch.first_patch_face);
@@ -204,9 +217,12 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
     r.vertices_added = static_cast<int>(free.size());
     r.faces_added = static_cast<int>(std::count(own.face_hole.begin(), own.face_hole.end(), h));
     r.supported = fairing.supported;
+    if (fairing.supported < fairing.requested)
+      r.note = "the mesh around the hole has fewer than " + std::to_string(rings_needed(fairing.requested)) +
+               " complete rings: faired with " + std::string(to_string(fairing.supported));
     r.steps = flowed ? fairing.flow.accepted_steps : 0;
     r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();
-    if (!free.empty()) r.continuity = measure_continuity(patch.mesh.V, patch.mesh.F, free);
+    if (!free.empty()) r.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, to_local(sub, free));
   }
   mesh.V = std::move(patch.mesh.V);
   mesh.F = std::move(patch.mesh.F);
@@ -267,13 +283,24 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
       for (int other : group)
         if (other != h) report.holes[h].filled_with.push_back(other);
     const auto group_start = Clock::now();
-    std::string reason;
-    try {
-      reason = fill_group(mesh, loops, group, options, observer, report.holes);
-    } catch (const Error& e) {
-      reason = e.what();
+    // Try the requested continuity, then (with fallback_on_failure) each lower one.
+    FairRegionOptions fairing = options.fairing;
+    std::string reason, first_failure;
+    for (;;) {
+      try {
+        reason = fill_group(mesh, loops, group, options, fairing, observer, report.holes);
+      } catch (const Error& e) {
+        reason = e.what();
+      }
+      if (reason.empty() || !options.fallback_on_failure || fairing.continuity == Continuity::G0) break;
+      if (first_failure.empty()) first_failure = reason;
+      fairing.continuity = static_cast<Continuity>(static_cast<int>(fairing.continuity) - 1);
     }
     mark(report.holes, group, reason.empty() ? HoleStatus::filled : HoleStatus::failed, reason);
+    if (reason.empty() && !first_failure.empty())
+      for (int h : group)
+        report.holes[h].note = "the " + std::string(to_string(options.fairing.continuity)) + " fill failed (" +
+                               first_failure + "); filled with " + std::string(to_string(fairing.continuity));
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
   }
   for (const auto& r : report.holes) {

@@ -56,9 +56,7 @@ std::string hole_line(const HoleReport& r) {
   std::snprintf(buffer, sizeof buffer, ", +%d vertices, +%d faces, %s", r.vertices_added, r.faces_added,
                 std::string(to_string(r.supported)).c_str());
   line += buffer;
-  if (r.supported != r.requested)
-    line += " (" + std::string(to_string(r.requested)) +
-            " requested; the mesh around the hole supports only " + std::string(to_string(r.supported)) + ")";
+  if (!r.note.empty()) line += " (" + std::string(to_string(r.requested)) + " requested: " + r.note + ")";
   if (!std::isnan(r.final_max_velocity)) {
     std::snprintf(buffer, sizeof buffer, ", %d steps, max|V| %.2e", r.steps, r.final_max_velocity);
     line += buffer;
@@ -74,7 +72,7 @@ std::string hole_line(const HoleReport& r) {
   return line;
 }
 
-nlohmann::json to_json(const HoleReport& r) {
+nlohmann::json hole_json(const HoleReport& r) {
   nlohmann::json j{{"index", r.index},
                    {"border_edges", r.border_edges},
                    {"status", to_string(r.status)},
@@ -84,6 +82,7 @@ nlohmann::json to_json(const HoleReport& r) {
                    {"faces_added", r.faces_added},
                    {"requested_continuity", std::string(to_string(r.requested))},
                    {"supported_continuity", std::string(to_string(r.supported))},
+                   {"note", r.note},
                    {"steps", r.steps},
                    {"seconds", r.seconds},
                    {"final_max_velocity", r.final_max_velocity},
@@ -126,7 +125,7 @@ void run_fill(const FillArgs& args) {
                        {"seconds", report.seconds},
                        {"holes", nlohmann::json::array()}};
     for (const auto& r : report.holes) {
-      nlohmann::json j = to_json(r);
+      nlohmann::json j = hole_json(r);
       const int group = r.filled_with.empty() ? r.index : std::min(r.index, r.filled_with.front());
       if (steps.count(group)) j["steps_log"] = steps[group];
       log["holes"].push_back(j);

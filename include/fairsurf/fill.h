@@ -16,6 +16,10 @@
 // surroundings offer fewer complete rings than the continuity needs (it comes close to a border that
 // stays open) is faired with the continuity the data supports, and its report says so.
 //
+// A flow diverges when it stops without a steady state and its max|V| ended above where it started;
+// the hole's fill then fails at that continuity (and, by default, is retried one continuity lower:
+// G2 → G1 → G0, the report's note saying so).
+//
 // Failures are per hole and leave the mesh as it was before that hole: a non-manifold border (the
 // loop passes through a vertex twice, or a border vertex has more than two border edges), a
 // triangulation, refinement or flow that throws, or a faired patch whose faces cross the mesh
@@ -45,6 +49,9 @@ struct FillOptions {
   bool skip_largest = false;  ///< leave the longest loop (an open surface's outer border) open
   /// Reject a patch whose faces cross the surrounding mesh (face_intersection.h).
   bool check_intersections = true;
+  /// When the fill of a hole fails at the requested continuity (the flow throws or diverges, or the
+  /// patch crosses the mesh), retry with each lower continuity down to G0; the report's `note` says so.
+  bool fallback_on_failure = true;
 };
 
 enum class HoleStatus { filled, skipped, failed };
@@ -61,7 +68,10 @@ struct HoleReport {
   int vertices_added = 0;        ///< this hole's new vertices
   int faces_added = 0;           ///< this hole's new faces
   Continuity requested = Continuity::G2;
-  Continuity supported = Continuity::G2;  ///< what the fixed rings allowed; the fairing used this
+  Continuity supported = Continuity::G2;  ///< the continuity the fairing used
+  /// Why `supported` is below `requested`: too few complete rings around the hole, or a failed
+  /// attempt at a higher continuity (FillOptions::fallback_on_failure). Empty otherwise.
+  std::string note;
   int steps = 0;                 ///< accepted flow steps (0 for the harmonic method)
   double seconds = 0;            ///< wall time of patch, fairing and checks (of the joint region)
   /// max|V| on the free vertices at the end, in the flow's units (flow.h; |EL| for the sixth-order
