@@ -37,8 +37,9 @@ FillOptions fill_options(const FillArgs& args) {
   return o;
 }
 
-std::string joined(const std::vector<int>& values) {
-  std::string s;
+// "hole 5" or "holes 5, 7".
+std::string holes_phrase(const std::vector<int>& values) {
+  std::string s = values.size() == 1 ? "hole " : "holes ";
   for (std::size_t i = 0; i < values.size(); ++i) s += (i > 0 ? ", " : "") + std::to_string(values[i]);
   return s;
 }
@@ -50,7 +51,7 @@ std::string hole_line(const HoleReport& r) {
                      " border edges): " + to_string(r.status);
   if (r.status != HoleStatus::filled) {
     line += ": " + r.reason;
-    if (!r.filled_with.empty()) line += " (filled jointly with holes " + joined(r.filled_with) + ")";
+    if (!r.filled_with.empty()) line += " (filled jointly with " + holes_phrase(r.filled_with) + ")";
     return line;
   }
   std::snprintf(buffer, sizeof buffer, ", +%d vertices, +%d faces, %s", r.vertices_added, r.faces_added,
@@ -68,7 +69,7 @@ std::string hole_line(const HoleReport& r) {
   }
   std::snprintf(buffer, sizeof buffer, ", %.2f s", r.seconds);
   line += buffer;
-  if (!r.filled_with.empty()) line += " (jointly with holes " + joined(r.filled_with) + ")";
+  if (!r.filled_with.empty()) line += " (jointly with " + holes_phrase(r.filled_with) + ")";
   return line;
 }
 
