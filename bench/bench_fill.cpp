@@ -5,7 +5,8 @@
 // case's own peak memory. Printed per case: new vertices, accepted and rejected steps, mean time of a
 // trial step (fit + assembly + factorization + solve, from the step records), total wall time of
 // fill_holes (triangulation, refinement, membrane, fairing, checks), max|r − 1| over the new
-// vertices, peak memory. Pass "small" as the first argument to skip the 100k case.
+// vertices, peak memory, and the report's note when the continuity fell back. Pass "small" as the
+// first argument to skip the 100k case, "small harmonic" to run the baseline only.
 #include <fairsurf/errors.h>
 #include <fairsurf/fill.h>
 
@@ -77,10 +78,10 @@ int run_case(int subdivisions, double cap, FairMethod method) {
   for (int v = input_vertices; v < mesh.num_vertices(); ++v)
     deviation = std::max(deviation, std::abs(mesh.V.row(v).norm() - 1.0));
   std::printf("%7d new vertices (%d subdivisions, cap z > %4.1f), %-8s: %3d steps (%d trials), %.3f s a trial "
-              "step, fill_holes %.2f s; max|r-1| %.2e, max|V| %.2e; peak %.0f MB\n",
+              "step, fill_holes %.2f s; max|r-1| %.2e, max|V| %.2e; peak %.0f MB%s%s\n",
               h.vertices_added, subdivisions, cap, to_string(method), h.steps, attempts,
               attempts > 0 ? step_seconds / attempts : 0.0, report.seconds, deviation, h.final_max_velocity,
-              static_cast<double>(peak_bytes()) / 1e6);
+              static_cast<double>(peak_bytes()) / 1e6, h.note.empty() ? "" : "; ", h.note.c_str());
   return 0;
 }
 
@@ -100,6 +101,7 @@ void in_child(int subdivisions, double cap, FairMethod method) {
 
 int main(int argc, char** argv) {
   const bool small = argc > 1 && std::strcmp(argv[1], "small") == 0;
+  const bool harmonic_only = argc > 2 && std::strcmp(argv[2], "harmonic") == 0;
   struct Case {
     int subdivisions;
     double cap;
@@ -107,6 +109,7 @@ int main(int argc, char** argv) {
   std::vector<Case> cases{{5, 0.8}, {6, 0.5}};
   if (!small) cases.push_back({7, -0.2});
   for (const Case& c : cases)
-    for (const FairMethod method : {FairMethod::flow, FairMethod::harmonic}) in_child(c.subdivisions, c.cap, method);
+    for (const FairMethod method : {FairMethod::flow, FairMethod::harmonic})
+      if (!harmonic_only || method == FairMethod::harmonic) in_child(c.subdivisions, c.cap, method);
   return 0;
 }

@@ -220,6 +220,13 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
     if (fairing.supported < fairing.requested)
       r.note = "the mesh around the hole has fewer than " + std::to_string(rings_needed(fairing.requested)) +
                " complete rings: faired with " + std::string(to_string(fairing.supported));
+    if (flowed && fairing.flow.stop_reason != FlowStopReason::steady) {
+      char figures[160];
+      std::snprintf(figures, sizeof figures, "max|V| %.3g -> %.3g", fairing.flow.initial_max_velocity,
+                    fairing.flow.final_max_velocity);
+      r.note += std::string(r.note.empty() ? "" : "; ") + "no steady state after " +
+                std::to_string(fairing.flow.accepted_steps) + " steps (" + figures + ")";
+    }
     r.steps = flowed ? fairing.flow.accepted_steps : 0;
     r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();
     if (!free.empty()) r.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, to_local(sub, free));

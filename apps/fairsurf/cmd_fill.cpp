@@ -57,7 +57,7 @@ std::string hole_line(const HoleReport& r) {
   std::snprintf(buffer, sizeof buffer, ", +%d vertices, +%d faces, %s", r.vertices_added, r.faces_added,
                 std::string(to_string(r.supported)).c_str());
   line += buffer;
-  if (!r.note.empty()) line += " (" + std::string(to_string(r.requested)) + " requested: " + r.note + ")";
+  if (!r.note.empty()) line += " (" + std::string(to_string(r.requested)) + " requested; " + r.note + ")";
   if (!std::isnan(r.final_max_velocity)) {
     std::snprintf(buffer, sizeof buffer, ", %d steps, max|V| %.2e", r.steps, r.final_max_velocity);
     line += buffer;

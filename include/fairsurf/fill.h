@@ -69,8 +69,9 @@ struct HoleReport {
   int faces_added = 0;           ///< this hole's new faces
   Continuity requested = Continuity::G2;
   Continuity supported = Continuity::G2;  ///< the continuity the fairing used
-  /// Why `supported` is below `requested`: too few complete rings around the hole, or a failed
-  /// attempt at a higher continuity (FillOptions::fallback_on_failure). Empty otherwise.
+  /// Why `supported` is below `requested` (too few complete rings around the hole, or a failed
+  /// attempt at a higher continuity: FillOptions::fallback_on_failure), and whether the flow stopped
+  /// at its step limit without a steady state. Empty otherwise.
   std::string note;
   int steps = 0;                 ///< accepted flow steps (0 for the harmonic method)
   double seconds = 0;            ///< wall time of patch, fairing and checks (of the joint region)
