@@ -20,8 +20,8 @@ std::string loop_list(const std::vector<std::vector<int>>& loops) {
 LoopPair chosen_pair(const Vertices& V, const std::vector<std::vector<int>>& loops, const BlendOptions& o) {
   const int n = static_cast<int>(loops.size());
   if (n < 2)
-    throw InvalidArgument("blend_loops: the mesh has " + std::to_string(n) +
-                          " boundary loop(s); blending needs two");
+    throw InvalidMeshError("blend_loops: the mesh has " + std::to_string(n) +
+                           (n == 1 ? " boundary loop" : " boundary loops") + "; blending needs two");
   if (o.loop_a < 0 && o.loop_b < 0) return closest_loop_pair(V, loops);
   for (int index : {o.loop_a, o.loop_b})
     if (index < 0 || index >= n)

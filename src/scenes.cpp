@@ -110,9 +110,9 @@ Scene blend_scene(std::string name, std::string description, const Mesh& first, 
 }
 
 Scene fig3(double h) {
-  const Mesh disk = annulus(1.0, 2.5, h);
+  const Mesh disk = annulus(1.5, 2.75, h);
   const double angle = std::numbers::pi / 3;
-  const Mesh cap = spherical_cap({0, 0, 0.3}, 1.0, angle, h);
+  const Mesh cap = spherical_cap({0, 0, 0.1}, 1.0, angle, h);
   return blend_scene("fig3",
                      "Fig 3: a spherical cap above a disk with a hole; blend the hole with the cap's rim",
                      disk, cap, 0, cap.num_vertices() - 1);
@@ -120,9 +120,9 @@ Scene fig3(double h) {
 
 Scene fig4(double h) {
   const double angle = std::numbers::pi / 3;
-  const Mesh top = spherical_cap({0, 0, 0.6}, 1.0, angle, h);
-  const Mesh bottom = spherical_cap({0, 0, -0.6}, -1.0, angle, h);
-  return blend_scene("fig4", "Fig 4: two spherical caps facing each other; blend their rims", top, bottom,
+  const Mesh top = spherical_cap({0, 0, 0}, 1.0, angle, h);
+  const Mesh bottom = spherical_cap({0, 0, 0}, -1.0, angle, h);
+  return blend_scene("fig4", "Fig 4: two caps of the unit sphere facing each other; blend their rims (G2 with f = H recovers the sphere)", top, bottom,
                      top.num_vertices() - 1, bottom.num_vertices() - 1);
 }
 

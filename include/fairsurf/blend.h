@@ -58,8 +58,8 @@ struct BlendReport {
 
 /// Joins two boundary loops of `mesh` and fairs the tube. On return `mesh` holds the input's
 /// vertices and faces first (unchanged), then the tube's (per-vertex attributes are dropped, as in
-/// patch.h). Throws InvalidArgument for fewer than two loops, an index out of range (the message
-/// lists every loop with its length), equal indices or only one index given; what tube_patch and
+/// patch.h). Throws InvalidMeshError for fewer than two loops; InvalidArgument for an index out of
+/// range (the message lists every loop with its length), equal indices or only one index given; what tube_patch and
 /// fair_region throw otherwise (NumericalError with `mesh` at the last accepted state of the flow).
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options = {}, const FlowObserver& observer = {});
 

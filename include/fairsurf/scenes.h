@@ -10,11 +10,14 @@
 //                   and the mesh carries it as the per-vertex scalar "free" (1 free, 0 fixed), so that
 //                   `fairsurf fair SCENE.ply --region-property free` fairs it.
 //
-//   fig3        A spherical cap above a flat disk with a hole (Fig 3a). Disk: z = 0, radii 1 to 2.5,
+//   fig3        A spherical cap above a flat disk with a hole (Fig 3a). Disk: z = 0, radii 1 to 2,
 //               normal +z. Cap: the sphere of radius 1 about (0, 0, 0.3), polar angle ≤ 60° (rim
 //               radius √3/2 at z = 0.8). Blend the hole's loop with the cap's rim.
-//   fig4        Two spherical caps facing each other (Fig 4a): the unit spheres about (0, 0, ±0.6),
-//               polar angles ≤ 60° about their outer poles (rims of radius √3/2 at z = ±1.1).
+//   fig4        Two spherical caps facing each other (Fig 4a): the caps of the unit sphere within
+//               polar angle 60° of its poles (rims of radius √3/2 at z = ±0.5). They are caps of one
+//               sphere so that the blend has a known answer: the G2 blend with f = H (constant H is
+//               stationary) must recover the sphere. (Farther apart, e.g. 2.2 between rims, no
+//               catenoid spans the rims and the G0 membrane of the initial tube pinches off.)
 //   fig7        An open unit cylinder, z ∈ [−1.5, 1.5], with the band |z| < 1 free (Fig 7): mean
 //               curvature flow shrinks the band, Willmore flow inflates it, the sixth-order flow with
 //               f = H keeps it (a cylinder has constant H).
