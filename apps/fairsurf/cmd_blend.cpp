@@ -17,12 +17,14 @@ struct BlendArgs {
   std::vector<std::string> inputs;
   std::string output;
   std::vector<int> loops;
+  bool no_relax = false;
   RegionFairingArgs fairing;
 };
 
 BlendOptions blend_options(const BlendArgs& args) {
   BlendOptions o;
   o.fair = region_fairing_options(args.fairing);
+  o.patch.relax = !args.no_relax;
   if (!args.loops.empty()) {
     o.loop_a = args.loops[0];
     o.loop_b = args.loops[1];
@@ -98,6 +100,9 @@ void setup_blend(CLI::App& app) {
                   "their smallest vertex index, over the concatenated meshes")
       ->expected(2)
       ->delimiter(',');
+  cmd->add_flag("--no-relax", args->no_relax,
+                "Start the flow from the Hermite tube, without the G0 membrane (which pinches off when "
+                "no minimal surface spans the two loops, e.g. loops far apart for their size)");
   add_region_fairing_options(cmd, args->fairing);
   cmd->callback([args] { run_blend(*args); });
 }
