@@ -20,7 +20,7 @@ import math
 import sys
 
 HEADER = ("| mesh | steps (rejected) | t reached (stop) | energy before → after | H p5 / p50 / p95 "
-          "| volume / input's | mean distance to centroid | deviation max / rms (of diagonal) |\n"
+          "| volume / clean | mean distance to centroid | deviation max / rms (of diagonal) |\n"
           "|---|---|---|---|---|---|---|---|")
 
 
