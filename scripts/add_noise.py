@@ -70,7 +70,6 @@ def main():
 
     rng = random.Random(args.seed)
     with open(args.output, "w") as out:
-        out.write(f"# {args.input} with normal noise {args.amplitude} mean edge lengths, seed {args.seed}\n")
         for v, n in zip(verts, normals):
             length = math.sqrt(sum(c * c for c in n)) or 1.0
             u = rng.uniform(-1.0, 1.0) * step / length

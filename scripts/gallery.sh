@@ -244,7 +244,7 @@ if has_command fair && has_command scene; then
   for scene in fig7 fig8; do
     eval "runs=(\${${scene}_runs[@]+\"\${${scene}_runs[@]}\"})"
     [ "${#runs[@]}" -gt 0 ] || continue
-    render_row "$images/${scene}.png" "$(measure range "$work/$scene.json")" "$scene: input, G0, G1, G2 fairing" "$scene" "${runs[@]}"
+    render_row "$images/${scene}.png" "$(measure range "$work/$scene.json" --around-median)" "$scene: input, G0, G1, G2 fairing" "$scene" "${runs[@]}"
     table "$work/$scene.obj" "$scene" "${runs[@]}"
   done
 else
