@@ -3,8 +3,9 @@
 # that any out-of-bounds read, overflow or undefined conversion in a reader fails the suite.
 set(FAIRSURF_SANITIZE_FLAGS -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
 file(GLOB FAIRSURF_IO_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/io*.cpp)
+# Only the support file test_io uses: the rest of the support code calls into the whole library.
 add_executable(test_io_sanitized ${FAIRSURF_IO_SOURCES} ${CMAKE_CURRENT_SOURCE_DIR}/test_io.cpp
-               ${FAIRSURF_TEST_SUPPORT})
+               ${CMAKE_CURRENT_SOURCE_DIR}/support/test_support.cpp)
 target_include_directories(test_io_sanitized PRIVATE ${PROJECT_SOURCE_DIR}/include ${CMAKE_CURRENT_SOURCE_DIR}/support)
 target_compile_definitions(test_io_sanitized PRIVATE
   FAIRSURF_DATA_DIR="${PROJECT_SOURCE_DIR}/data" FAIRSURF_CLI="$<TARGET_FILE:fairsurf_cli>")
