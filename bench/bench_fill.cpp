@@ -16,23 +16,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "process_memory.h"
 #include "step_matrix_sphere.h"
 
 namespace {
 
 using namespace fairsurf;
-
-long long peak_bytes() {
-  std::ifstream status("/proc/self/status");
-  const std::string key = "VmHWM:";
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind(key, 0) == 0) return std::stoll(line.substr(key.size())) * 1024;
-  return -1;
-}
 
 // The icosphere without the faces that have a vertex above z = cap (the vertices stay, unused).
 Mesh holed_sphere(int subdivisions, double cap) {
@@ -81,7 +73,7 @@ int run_case(int subdivisions, double cap, FairMethod method) {
               "step, fill_holes %.2f s; max|r-1| %.2e, max|V| %.2e; peak %.0f MB%s%s\n",
               h.vertices_added, subdivisions, cap, to_string(method), h.steps, attempts,
               attempts > 0 ? step_seconds / attempts : 0.0, report.seconds, deviation, h.final_max_velocity,
-              static_cast<double>(peak_bytes()) / 1e6, h.note.empty() ? "" : "; ", h.note.c_str());
+              static_cast<double>(bench::peak_bytes()) / 1e6, h.note.empty() ? "" : "; ", h.note.c_str());
   return 0;
 }
 
