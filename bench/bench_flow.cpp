@@ -10,6 +10,8 @@
 #include <fairsurf/errors.h>
 #include <fairsurf/flow.h>
 
+#include "process_memory.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -46,14 +48,6 @@ Mesh torus(int n, int m) {
   return mesh;
 }
 
-long long peak_bytes() {
-  std::ifstream status("/proc/self/status");
-  const std::string key = "VmHWM:";
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind(key, 0) == 0) return std::stoll(line.substr(key.size())) * 1024;
-  return -1;
-}
-
 // Runs two steps and prints one line; writes the step's seconds to `out_fd`; the exit code says
 // whether the second step was accepted.
 int run_case(int n, int m, LinearSolverKind solver, int out_fd) {
@@ -78,7 +72,7 @@ int run_case(int n, int m, LinearSolverKind solver, int out_fd) {
               "%.1e; peak %.0f MB\n",
               n * m, to_string(solver), s.fit_seconds, s.assembly_seconds, s.factorize_seconds,
               records.front().factorize_seconds, s.solve_seconds, total, s.solver_iterations, s.backward_error,
-              static_cast<double>(peak_bytes()) / 1e6);
+              static_cast<double>(bench::peak_bytes()) / 1e6);
   std::fflush(stdout);
   return ::write(out_fd, &total, sizeof total) == sizeof total ? 0 : 1;
 }

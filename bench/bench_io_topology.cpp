@@ -10,6 +10,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "process_memory.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -47,23 +49,15 @@ bool write_subdivided_ply() {
   return child > 0 && ::waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-// A "VmRSS:" or "VmHWM:" figure of /proc/self/status, in bytes.
-long long proc_status_bytes(const std::string& key) {
-  std::ifstream status("/proc/self/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind(key, 0) == 0) return std::stoll(line.substr(key.size())) * 1024;
-  return -1;
-}
-
 void report_single_run() {
   using clock = std::chrono::steady_clock;
-  const long long rss_before = proc_status_bytes("VmRSS:");
+  const long long rss_before = fairsurf::bench::proc_status_bytes("VmRSS:");
   const auto t0 = clock::now();
   const fairsurf::Mesh mesh = fairsurf::read_mesh(ply_path());
   const auto t1 = clock::now();
   const fairsurf::Topology topology = fairsurf::build_topology(mesh.F, mesh.num_vertices());
   const auto t2 = clock::now();
-  const long long peak = proc_status_bytes("VmHWM:") - rss_before;
+  const long long peak = fairsurf::bench::proc_status_bytes("VmHWM:") - rss_before;
   benchmark::DoNotOptimize(topology.edges.data());
 
   const double nv = mesh.num_vertices();

@@ -38,6 +38,7 @@ void check_options(const FlowOptions& o) {
   else if (o.max_steps < 0) problem = "max_steps must be non-negative";
   else if (!(o.end_time > 0)) problem = "end_time must be positive";
   else if (!(o.steady_tolerance >= 0)) problem = "steady_tolerance must be non-negative";
+  else if (!(o.steady_relative_tolerance >= 0)) problem = "steady_relative_tolerance must be non-negative";
   else if (!(o.relative_epsilon >= 0)) problem = "relative_epsilon must be non-negative";
   else if (!(o.curvature_scale >= 0)) problem = "curvature_scale must be non-negative";
   else if (!(o.runaway_energy_factor > 1)) problem = "runaway_energy_factor must exceed 1";
@@ -339,7 +340,11 @@ FlowReport FlowRun::run() {
   const double tolerance = options_.steady_tolerance;
   double tau = options_.tau;
   int consecutive_rejections = 0;
-  auto steady = [&] { return tolerance > 0 && report_.final_max_velocity <= tolerance; };
+  const double relative = options_.steady_relative_tolerance * report_.initial_max_velocity;
+  auto steady = [&] {
+    return (tolerance > 0 && report_.final_max_velocity <= tolerance) ||
+           (relative > 0 && report_.final_max_velocity <= relative);
+  };
   auto finished = [&] {
     if (steady()) return report_.stop_reason = FlowStopReason::steady, true;
     if (report_.time >= options_.end_time) return report_.stop_reason = FlowStopReason::end_time, true;

@@ -83,6 +83,9 @@ RawMesh read_stl(const Source& source, ReadReport& report);
 void append_number(std::string& out, double value, int digits = 17);
 void append_number(std::string& out, long long value);
 
+/// Appends one ASCII line "3 i j k" per face: the face lists of OFF and ASCII PLY are the same.
+void append_triangle_lines(const Mesh& mesh, std::string& out);
+
 void write_obj(const Mesh& mesh, std::string& out);
 void write_off(const Mesh& mesh, std::string& out);
 void write_ply(const Mesh& mesh, bool binary, std::string& out);

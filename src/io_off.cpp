@@ -131,14 +131,7 @@ void write_off(const Mesh& mesh, std::string& out) {
     }
     out += '\n';
   }
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    out += '3';
-    for (int k = 0; k < 3; ++k) {
-      out += ' ';
-      append_number(out, static_cast<long long>(mesh.F(f, k)));
-    }
-    out += '\n';
-  }
+  append_triangle_lines(mesh, out);
 }
 
 }  // namespace fairsurf::io_detail

@@ -1,5 +1,8 @@
 #include <fairsurf/errors.h>
+#include <fairsurf/harmonic.h>
 #include <fairsurf/membrane.h>
+#include <fairsurf/region.h>
+#include <fairsurf/topology.h>
 
 #include <Eigen/Geometry>
 
@@ -29,36 +32,6 @@ double area_of(const Vertices& V, const Faces& F, const std::vector<int>& faces)
   return area;
 }
 
-// The free rows of the cotangent Laplacian, −Σ_j w_ij (x_j − x_i) = 0, split into the matrix over
-// free unknowns and the right-hand side from fixed neighbours. (Private until the `harmonic` module
-// offers a cotangent Laplacian to share.)
-void assemble(const Vertices& V, const Faces& F, const std::vector<int>& faces,
-              const std::vector<int>& free_index, int num_free, SparseRowMatrix& A,
-              Eigen::MatrixX3d& rhs) {
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(faces.size() * 12);
-  rhs.setZero(num_free, 3);
-  for (int f : faces)
-    for (int k = 0; k < 3; ++k) {
-      const int i = F(f, k), j = F(f, (k + 1) % 3), o = F(f, (k + 2) % 3);
-      const Vec3 u = V.row(i) - V.row(o), v = V.row(j) - V.row(o);
-      const double twice_area = u.cross(v).norm();
-      if (twice_area == 0.0) continue;  // a degenerate triangle has no cotangent; it adds nothing
-      const double w = 0.5 * u.dot(v) / twice_area;  // ½ cot of the angle at o
-      for (const auto& [row, col] : {std::pair{i, j}, std::pair{j, i}}) {
-        const int r = free_index[row];
-        if (r < 0) continue;
-        triplets.emplace_back(r, r, w);
-        if (free_index[col] >= 0)
-          triplets.emplace_back(r, free_index[col], -w);
-        else
-          rhs.row(r) += w * V.row(col);
-      }
-    }
-  A.resize(num_free, num_free);
-  A.setFromTriplets(triplets.begin(), triplets.end());
-}
-
 }  // namespace
 
 MembraneReport relax_membrane(Vertices& V, const Faces& F, std::span<const int> free_vertices,
@@ -73,29 +46,22 @@ MembraneReport relax_membrane(Vertices& V, const Faces& F, std::span<const int> 
       throw InvalidArgument("relax_membrane: free vertex " + std::to_string(v) + " is out of range");
     if (free_index[v] < 0) free_index[v] = static_cast<int>(free_list.size()), free_list.push_back(v);
   }
-  for (int f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k)
-      if (F(f, k) < 0 || F(f, k) >= V.rows())
-        throw InvalidArgument("relax_membrane: face " + std::to_string(f) + " has a vertex index out of range");
-  const int n = static_cast<int>(free_list.size());
+  const Topology topo = build_topology(F, static_cast<int>(V.rows()));  // checks the faces
+  const Region region = make_region(topo, free_list, Continuity::G0);
   const std::vector<int> faces = faces_touching(F, free_index);
+  HarmonicOptions membrane;
+  membrane.order = 1;  // ∆x = 0 with the cotangent weights of the current positions
+  membrane.solver = options.solver;
 
   MembraneReport report;
   report.area.push_back(area_of(V, F, faces));
-  auto solver = make_linear_solver(options.solver);
-  SparseRowMatrix A;
-  Eigen::MatrixX3d rhs;
   for (int it = 0; it < options.iterations; ++it) {
-    assemble(V, F, faces, free_index, n, A, rhs);
-    if (it == 0) solver->analyze(A);  // the pattern depends on connectivity only
-    solver->factorize(A);
-    Eigen::MatrixX3d x(n, 3);
-    for (int c = 0; c < 3; ++c) x.col(c) = solver->solve(rhs.col(c));
+    Eigen::MatrixX3d before(free_list.size(), 3);
+    for (std::size_t r = 0; r < free_list.size(); ++r) before.row(r) = V.row(free_list[r]);
+    harmonic_fair(V, F, region, membrane);
     report.max_displacement = 0.0;
-    for (int r = 0; r < n; ++r) {
-      report.max_displacement = std::max(report.max_displacement, (x.row(r) - V.row(free_list[r])).norm());
-      V.row(free_list[r]) = x.row(r);
-    }
+    for (std::size_t r = 0; r < free_list.size(); ++r)
+      report.max_displacement = std::max(report.max_displacement, (V.row(free_list[r]) - before.row(r)).norm());
     report.area.push_back(area_of(V, F, faces));
     ++report.iterations;
   }

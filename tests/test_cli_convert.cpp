@@ -32,13 +32,6 @@ class CliConvert : public ::testing::Test {
   fs::path dir_;
 };
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 }  // namespace
 
 TEST_F(CliConvert, RoundTripThroughBinaryPlyAndAsciiStl) {
@@ -49,7 +42,7 @@ TEST_F(CliConvert, RoundTripThroughBinaryPlyAndAsciiStl) {
                            ": ignored 3225 'vt' lines (first at line 2931)\n"), std::string::npos)
       << first.out;
   EXPECT_NE(first.out.find("wrote " + ply.string() + ": 2930 vertices, 5856 triangles\n"), std::string::npos);
-  EXPECT_EQ(read_bytes(ply).find("format binary_little_endian"), 4u);
+  EXPECT_EQ(test::read_bytes(ply).find("format binary_little_endian"), 4u);
 
   ASSERT_EQ(run_cli("convert '" + ply.string() + "' -o '" + off.string() + "'").exit_code, 0);
   const Mesh original = read_mesh(test::data_path("spot.obj"));
@@ -59,18 +52,18 @@ TEST_F(CliConvert, RoundTripThroughBinaryPlyAndAsciiStl) {
 
   const CliRun ascii = run_cli("convert '" + off.string() + "' -o '" + stl.string() + "' --ascii");
   ASSERT_EQ(ascii.exit_code, 0) << ascii.out;
-  EXPECT_EQ(read_bytes(stl).rfind("solid fairsurf\n", 0), 0u);
+  EXPECT_EQ(test::read_bytes(stl).rfind("solid fairsurf\n", 0), 0u);
 }
 
 TEST_F(CliConvert, RefusesToOverwriteTheInputWithoutForce) {
   const fs::path mesh = dir_ / "mesh.off";
   fs::copy_file(test::data_path("cgal_degtri_sliding.off"), mesh);
-  const std::string before = read_bytes(mesh);
+  const std::string before = test::read_bytes(mesh);
   const CliRun refused = run_cli("convert '" + mesh.string() + "' -o '" + mesh.string() + "'");
   EXPECT_EQ(refused.exit_code, 5);
   EXPECT_EQ(refused.out, "fairsurf: error: refusing to overwrite input '" + mesh.string() +
                              "' (pass --force to allow it)\n");
-  EXPECT_EQ(read_bytes(mesh), before);
+  EXPECT_EQ(test::read_bytes(mesh), before);
 
   const CliRun forced = run_cli("convert '" + mesh.string() + "' -o '" + mesh.string() + "' --force");
   EXPECT_EQ(forced.exit_code, 0) << forced.out;

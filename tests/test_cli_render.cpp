@@ -17,11 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 class CliRender : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -48,7 +43,7 @@ TEST_F(CliRender, RendersABundledMeshToPng) {
   // spot.obj has texture coordinates, which reading reports as notes before the summary line.
   EXPECT_NE(run.out.find("fairsurf: note: " + test::data_path("spot.obj") + ": ignored 3225 'vt' lines"), std::string::npos);
   EXPECT_TRUE(run.out.ends_with("\nwrote " + path("spot.png") + ": 160x120, none\n")) << run.out;
-  EXPECT_EQ(read_bytes(path("spot.png")).substr(0, 8), "\x89PNG\r\n\x1a\n");
+  EXPECT_EQ(test::read_bytes(path("spot.png")).substr(0, 8), "\x89PNG\r\n\x1a\n");
 }
 
 TEST_F(CliRender, StoredQuantityWithEveryOptionIsReproducible) {
@@ -58,7 +53,7 @@ TEST_F(CliRender, StoredQuantityWithEveryOptionIsReproducible) {
   ASSERT_EQ(first.exit_code, 0) << first.out;
   EXPECT_EQ(first.out, "wrote " + path("a.png") + ": 240x160, height on [-0.5, 0.5] (diverging)\n");
   ASSERT_EQ(test::run_cli(args + path("b.png") + "'").exit_code, 0);
-  EXPECT_TRUE(read_bytes(path("a.png")) == read_bytes(path("b.png")));
+  EXPECT_TRUE(test::read_bytes(path("a.png")) == test::read_bytes(path("b.png")));
 }
 
 TEST_F(CliRender, ComputesMeanCurvatureWhenTheFileHasNone) {
@@ -80,9 +75,9 @@ TEST_F(CliRender, SameBytesForOneThreadAndTwo) {
   };
   ASSERT_EQ(run_with_threads(1, "one.png"), 0);
   ASSERT_EQ(run_with_threads(2, "two.png"), 0);
-  const std::string one = read_bytes(path("one.png"));
+  const std::string one = test::read_bytes(path("one.png"));
   EXPECT_GT(one.size(), 10000u);
-  EXPECT_TRUE(one == read_bytes(path("two.png")));
+  EXPECT_TRUE(one == test::read_bytes(path("two.png")));
 }
 
 TEST_F(CliRender, UnknownQuantityListsTheAvailableOnes) {
@@ -107,13 +102,13 @@ TEST_F(CliRender, BadFlagsExitWithUsageError) {
 }
 
 TEST_F(CliRender, RefusesToOverwriteAnInputUnlessForced) {
-  const std::string before = read_bytes(path("sphere.ply"));
+  const std::string before = test::read_bytes(path("sphere.ply"));
   const std::string args = "render '" + path("sphere.ply") + "' --color height --size 64x48 -o '" + path("sphere.ply") + "'";
   const test::CliRun refused = test::run_cli(args);
   EXPECT_EQ(refused.exit_code, 5) << refused.out;
-  EXPECT_TRUE(read_bytes(path("sphere.ply")) == before);
+  EXPECT_TRUE(test::read_bytes(path("sphere.ply")) == before);
   EXPECT_EQ(test::run_cli(args + " --force").exit_code, 0);
-  EXPECT_EQ(read_bytes(path("sphere.ply")).substr(1, 3), "PNG");
+  EXPECT_EQ(test::read_bytes(path("sphere.ply")).substr(1, 3), "PNG");
 }
 
 TEST_F(CliRender, InputAndOutputFailures) {

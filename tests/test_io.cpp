@@ -52,13 +52,6 @@ class IoTest : public ::testing::Test {
   fs::path dir_;
 };
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // Expects `read_mesh(p)` to throw exactly `type` with exactly `message`.
 template <typename Exception>
 void expect_error(const std::function<void()>& action, const std::string& message) {
@@ -74,15 +67,6 @@ void expect_error(const std::function<void()>& action, const std::string& messag
 
 bool bit_equal(const Vertices& a, const Vertices& b) {
   return a.rows() == b.rows() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
-}
-
-Mesh tetrahedron() {
-  Mesh m;
-  m.V.resize(4, 3);
-  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
-  m.F.resize(4, 3);
-  m.F << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
-  return m;
 }
 
 struct FormatCase {
@@ -189,8 +173,8 @@ TEST_F(IoTest, StlWeldsExactlyEqualCornersOnly) {
 
 TEST_F(IoTest, BinaryStlStartingWithSolidIsReadAsBinary) {
   const fs::path out = path("tet.stl");
-  write_mesh(out, tetrahedron());
-  std::string bytes = read_bytes(out);
+  write_mesh(out, test::tetrahedron());
+  std::string bytes = test::read_bytes(out);
   bytes.replace(0, 5, "solid");
   const Mesh m = read_mesh(write_file("solid_header.stl", bytes));
   EXPECT_EQ(m.num_faces(), 4);
@@ -281,7 +265,7 @@ TEST_F(IoTest, PolygonsAreFannedFromTheirFirstCornerAndCounted) {
 
 TEST_F(IoTest, PolygonsWithFewerThanThreeCornersAreRefused) {
   RawMesh raw;
-  raw.V = tetrahedron().V;
+  raw.V = test::tetrahedron().V;
   raw.polygon_indices = {0, 1, 2, 0, 1};
   raw.polygon_offsets = {0, 3, 5};
   expect_error<ParseError>([&] { triangulate(raw); }, "triangulate: polygon 1 has 2 corners (at least 3 needed)");
@@ -297,7 +281,7 @@ TEST_F(IoTest, MissingFilesAndUnknownExtensionsAreIoErrors) {
   const fs::path unknown = write_file("mesh.xyz", "v 0 0 0\n");
   expect_error<IoError>([&] { read_mesh(unknown); },
                         "read_raw: " + unknown.string() + ": unknown extension '.xyz' (supported: .obj, .off, .ply, .stl)");
-  expect_error<IoError>([&] { write_mesh(path("out.gltf"), tetrahedron()); },
+  expect_error<IoError>([&] { write_mesh(path("out.gltf"), test::tetrahedron()); },
                         "write_mesh: " + path("out.gltf").string() +
                             ": unknown extension '.gltf' (supported: .obj, .off, .ply, .stl)");
   EXPECT_NO_THROW(read_mesh(write_file("UPPER.OBJ", "v 0 0 0\n")));  // extensions are case-insensitive
@@ -334,8 +318,8 @@ TEST_F(IoTest, MalformedContentNamesTheFileAndThePlace) {
   expect_error<ParseError>([&] { read_mesh(value); }, at(value) + "line 10: malformed value '256'");
 
   const fs::path stl = path("cut.stl");
-  write_mesh(stl, tetrahedron());
-  const std::string bytes = read_bytes(stl);
+  write_mesh(stl, test::tetrahedron());
+  const std::string bytes = test::read_bytes(stl);
   const fs::path cut = write_file("cut2.stl", bytes.substr(0, 84 + 50 * 2 + 20));
   expect_error<ParseError>([&] { read_mesh(cut); }, at(cut) + "unexpected end of file after 2 of 4 triangles");
   const fs::path text = write_file("text.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0\nvertex 0 1 0\n");
@@ -351,7 +335,7 @@ TEST_F(IoTest, TruncatedRealFilesThrowParseErrorsNamingTheFile) {
     write_mesh(files.back(), spot, {format.binary});
   }
   for (const auto& file : files) {
-    const std::string bytes = read_bytes(file);
+    const std::string bytes = test::read_bytes(file);
     for (const double fraction : {0.0, 0.001, 0.1, 0.37, 0.5, 0.9, 0.999}) {
       const auto size = static_cast<std::size_t>(fraction * static_cast<double>(bytes.size()));
       const fs::path cut = write_file("cut" + file.extension().string(), bytes.substr(0, size));
@@ -380,7 +364,7 @@ TEST_F(IoTest, MutatedFilesOnlyThrowIoOrParseErrors) {
                              FormatCase{".ply", true}, FormatCase{".stl", false}, FormatCase{".stl", true}}) {
     const fs::path p = path(std::string("seed") + format.extension);
     write_mesh(p, m, {format.binary});
-    seeds.emplace_back(format.extension, read_bytes(p));
+    seeds.emplace_back(format.extension, test::read_bytes(p));
   }
   std::mt19937 random(12345);
   int parse_errors = 0, successes = 0;
@@ -417,7 +401,7 @@ TEST_F(IoTest, WritingOntoADirectoryFailsAndLeavesNoTemporaryFile) {
   fs::create_directory(path("target.obj"));
   const auto before = entries();
   try {
-    write_mesh(path("target.obj"), tetrahedron());
+    write_mesh(path("target.obj"), test::tetrahedron());
     ADD_FAILURE() << "writing onto a directory succeeded";
   } catch (const IoError& e) {
     EXPECT_EQ(std::string(e.what()).rfind("write_mesh: " + path("target.obj").string() + ": rename failed (", 0), 0u)
@@ -429,8 +413,8 @@ TEST_F(IoTest, WritingOntoADirectoryFailsAndLeavesNoTemporaryFile) {
 
 TEST_F(IoTest, AFailedWriteLeavesTheExistingTargetByteIdentical) {
   const fs::path target = path("target.ply");
-  write_mesh(target, tetrahedron());
-  const std::string before = read_bytes(target);
+  write_mesh(target, test::tetrahedron());
+  const std::string before = test::read_bytes(target);
   const auto entries_before = entries();
 
   // Make the write itself fail part-way: a file-size limit smaller than the new file.
@@ -451,16 +435,16 @@ TEST_F(IoTest, AFailedWriteLeavesTheExistingTargetByteIdentical) {
   std::signal(SIGXFSZ, old_handler);
 
   EXPECT_TRUE(threw);
-  EXPECT_EQ(read_bytes(target), before);
+  EXPECT_EQ(test::read_bytes(target), before);
   EXPECT_EQ(entries(), entries_before);
 }
 
 TEST_F(IoTest, InvalidMeshesAreRefusedBeforeWriting) {
-  Mesh m = tetrahedron();
+  Mesh m = test::tetrahedron();
   m.F(3, 2) = 4;
   expect_error<InvalidArgument>([&] { write_mesh(path("t.stl"), m); },
                                 "write_mesh: face 3 has vertex index 4 outside [0, 4)");
-  m = tetrahedron();
+  m = test::tetrahedron();
   m.vertex_scalars["x"] = Eigen::VectorXd::Zero(4);
   expect_error<InvalidArgument>([&] { write_mesh(path("t.ply"), m); },
                                 "write_mesh: vertex scalar name 'x' cannot be a PLY property name");

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -56,11 +58,6 @@ double lightness(Rgb8 c) {
   const auto linear = [](double u) { u /= 255; return u <= 0.04045 ? u / 12.92 : std::pow((u + 0.055) / 1.055, 2.4); };
   const double y = 0.2126729 * linear(c.r) + 0.7151522 * linear(c.g) + 0.0721750 * linear(c.b);
   return y > 216.0 / 24389.0 ? 116 * std::cbrt(y) - 16 : 24389.0 / 27.0 * y;
-}
-
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 std::filesystem::path temp_path(const std::string& name) {
@@ -167,7 +164,7 @@ TEST(Render, RenderingTwiceGivesByteIdenticalPngFiles) {
   const auto first = temp_path("first.png"), second = temp_path("second.png");
   write_png(first, render({{&torus, K, "torus"}}, o));
   write_png(second, render({{&torus, K, "torus"}}, o));
-  const std::string a = read_bytes(first), b = read_bytes(second);
+  const std::string a = test::read_bytes(first), b = test::read_bytes(second);
   EXPECT_GT(a.size(), 1000u);
   EXPECT_EQ(a.substr(1, 3), "PNG");
   EXPECT_TRUE(a == b);

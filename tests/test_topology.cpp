@@ -9,19 +9,10 @@ using namespace fairsurf;
 
 namespace {
 
-Mesh tetrahedron() {
-  Mesh m;
-  m.V.resize(4, 3);
-  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
-  m.F.resize(4, 3);
-  m.F << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
-  return m;
-}
-
 }  // namespace
 
 TEST(Topology, ClosedTetrahedronCounts) {
-  const Mesh m = tetrahedron();
+  const Mesh m = test::tetrahedron();
   const Topology t = build_topology(m.F, m.num_vertices());
   EXPECT_EQ(t.edges.rows(), 6);
   for (int e = 0; e < 6; ++e) EXPECT_EQ(t.edge_faces.size(e), 2);
@@ -105,7 +96,7 @@ TEST(Topology, ThreeRingsAroundARegion) {
 }
 
 TEST(Topology, ComponentsAndUnreferencedVertices) {
-  Mesh a = tetrahedron();
+  Mesh a = test::tetrahedron();
   Mesh m;
   m.V.resize(9, 3);
   m.V.topRows(4) = a.V;
@@ -124,7 +115,7 @@ TEST(Topology, ComponentsAndUnreferencedVertices) {
 }
 
 TEST(Topology, RejectsOutOfRangeIndexWithMessage) {
-  Mesh m = tetrahedron();
+  Mesh m = test::tetrahedron();
   m.F(2, 1) = 7;
   try {
     build_topology(m.F, m.num_vertices());

@@ -18,15 +18,6 @@ using namespace fairsurf;
 
 namespace {
 
-Mesh tetrahedron() {
-  Mesh m;
-  m.V.resize(4, 3);
-  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
-  m.F.resize(4, 3);
-  m.F << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
-  return m;
-}
-
 Mesh with_vertex_rows(const Mesh& m, std::initializer_list<Eigen::RowVector3d> rows) {
   Mesh out = m;
   out.V.conservativeResize(m.V.rows() + static_cast<int>(rows.size()), 3);
@@ -116,18 +107,18 @@ int total_count(const ValidationReport& r) {
 }  // namespace
 
 TEST(Validate, CleanTetrahedronHasNoFinding) {
-  const ValidationReport r = validate(tetrahedron());
+  const ValidationReport r = validate(test::tetrahedron());
   EXPECT_EQ(total_count(r), 0);
   EXPECT_EQ(r.num_edges, 6);
   EXPECT_FALSE(r.no_faces);
   EXPECT_TRUE(r.manifold());
   EXPECT_TRUE(r.orientable());
   EXPECT_TRUE(r.is_valid());
-  EXPECT_NO_THROW(require_valid(tetrahedron(), {}, "test"));
+  EXPECT_NO_THROW(require_valid(test::tetrahedron(), {}, "test"));
 }
 
 TEST(Validate, NanAndInfiniteCoordinates) {
-  Mesh m = tetrahedron();
+  Mesh m = test::tetrahedron();
   m.V(2, 1) = std::numeric_limits<double>::quiet_NaN();
   m.V(3, 0) = -std::numeric_limits<double>::infinity();
   const ValidationReport r = validate(m);
@@ -141,7 +132,7 @@ TEST(Validate, NanAndInfiniteCoordinates) {
 
 TEST(Validate, OutOfRangeIndicesAreReportedAndTheRestIsStillAnalysed) {
   // build_topology would throw on this mesh; validate skips the two bad faces.
-  const Mesh m = with_face_rows(tetrahedron(), {{0, 1, 7}, {-1, 2, 3}});
+  const Mesh m = with_face_rows(test::tetrahedron(), {{0, 1, 7}, {-1, 2, 3}});
   ValidationReport r;
   ASSERT_NO_THROW(r = validate(m));
   EXPECT_EQ(r.out_of_range_indices.count, 2);
@@ -152,7 +143,7 @@ TEST(Validate, OutOfRangeIndicesAreReportedAndTheRestIsStillAnalysed) {
 }
 
 TEST(Validate, FacesRepeatingAVertex) {
-  const Mesh m = with_face_rows(tetrahedron(), {{1, 1, 2}, {3, 0, 3}});
+  const Mesh m = with_face_rows(test::tetrahedron(), {{1, 1, 2}, {3, 0, 3}});
   const ValidationReport r = validate(m);
   EXPECT_EQ(r.repeated_vertex_faces.count, 2);
   EXPECT_EQ(r.repeated_vertex_faces.examples, (std::vector<int>{4, 5}));
@@ -162,7 +153,7 @@ TEST(Validate, FacesRepeatingAVertex) {
 
 TEST(Validate, NoFaces) {
   Mesh m;
-  m.V = tetrahedron().V;
+  m.V = test::tetrahedron().V;
   const ValidationReport r = validate(m);
   EXPECT_TRUE(r.no_faces);
   EXPECT_EQ(r.unreferenced_vertices.count, 4);
@@ -197,7 +188,7 @@ TEST(Validate, ZeroAreaAndNeedleTriangles) {
 
 TEST(Validate, DuplicateFacesMatchVertexSetsInAnyOrder) {
   // Face 1 again in both orientations: two duplicates, and its three edges now carry three faces.
-  const Mesh m = with_face_rows(tetrahedron(), {{1, 3, 0}, {3, 1, 0}});
+  const Mesh m = with_face_rows(test::tetrahedron(), {{1, 3, 0}, {3, 1, 0}});
   const ValidationReport r = validate(m);
   EXPECT_EQ(r.duplicate_faces.count, 2);
   EXPECT_EQ(r.duplicate_faces.examples, (std::vector<int>{4, 5}));
@@ -206,7 +197,7 @@ TEST(Validate, DuplicateFacesMatchVertexSetsInAnyOrder) {
 }
 
 TEST(Validate, UnreferencedVerticesKeepOnlyTheFirstExamples) {
-  Mesh m = tetrahedron();
+  Mesh m = test::tetrahedron();
   m.V.conservativeResize(14, 3);
   for (int v = 4; v < 14; ++v) m.V.row(v) << v, 0, 0;
   ValidationOptions options;
@@ -262,7 +253,7 @@ TEST(Validate, BowtieVertexIsNonManifold) {
 }
 
 TEST(Validate, FlippedFaceGivesInconsistentEdgesButStaysOrientable) {
-  Mesh m = tetrahedron();
+  Mesh m = test::tetrahedron();
   m.F.row(3) << 1, 3, 2;  // reversed
   const ValidationReport r = validate(m);
   EXPECT_EQ(r.inconsistent_orientation_edges.count, 3);
@@ -325,7 +316,7 @@ TEST(Validate, WellFormedFacesKeepsOrderAndReportsKeptRows) {
 }
 
 TEST(MeshSummary, TetrahedronAndTwoCopiesHaveGenusZero) {
-  const Mesh tet = tetrahedron();
+  const Mesh tet = test::tetrahedron();
   const MeshSummary s = summarize(tet, validate(tet));
   EXPECT_EQ(s.vertices, 4);
   EXPECT_EQ(s.faces, 4);
@@ -367,7 +358,7 @@ TEST(MeshSummary, GridDiskBoundaryAndMeanEdgeLength) {
 }
 
 TEST(MeshSummary, ReferencedVerticesAndNonFiniteVerticesInTheBox) {
-  Mesh m = with_vertex_rows(tetrahedron(), {{9, 9, 9}, {std::nan(""), 0, 0}});
+  Mesh m = with_vertex_rows(test::tetrahedron(), {{9, 9, 9}, {std::nan(""), 0, 0}});
   const MeshSummary s = summarize(m, validate(m));
   EXPECT_EQ(s.vertices, 6);
   EXPECT_EQ(s.referenced_vertices, 4);

@@ -111,6 +111,9 @@ struct FlowOptions {
   double end_time = std::numeric_limits<double>::infinity();  ///< the last step is shortened to hit it
   /// Steady state when max over free vertices of |V| (|EL| for the sixth-order flow) ≤ this; 0: off.
   double steady_tolerance = 0;
+  /// Steady state also when max|V| ≤ this · max|V| of the input; 0: off. Scale-free, so it suits
+  /// runs that start far from steady (a flattened hole patch starts ~1e8 above its round-off floor).
+  double steady_relative_tolerance = 0;
 
   StepControlOptions step_control;
   /// An accepted state with energy above this times the initial energy stops the flow.

@@ -32,7 +32,8 @@ struct MembraneReport {
 };
 
 /// Moves the vertices `free_vertices` (indices into V, any order) of the mesh (V, F) to the
-/// solution of the cotangent Laplace equation, `options.iterations` times.
+/// solution of the cotangent Laplace equation, `options.iterations` times (harmonic_fair of order 1
+/// with weights from the current positions).
 /// Throws InvalidArgument for an index out of range, an empty free set or iterations < 1, and
 /// NumericalError if a system is singular (e.g. a free component with no fixed vertex).
 MembraneReport relax_membrane(Vertices& V, const Faces& F, std::span<const int> free_vertices,

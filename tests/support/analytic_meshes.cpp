@@ -1,9 +1,10 @@
 #include "analytic_meshes.h"
 
+#include <fairsurf/scenes.h>
+
 #include <Eigen/Geometry>
 
 #include <cmath>
-#include <map>
 #include <numbers>
 #include <random>
 #include <utility>
@@ -11,44 +12,6 @@
 
 namespace fairsurf::test {
 namespace {
-
-Mesh icosahedron() {
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  Mesh m;
-  m.V.resize(12, 3);
-  m.V << -1, t, 0, 1, t, 0, -1, -t, 0, 1, -t, 0, 0, -1, t, 0, 1, t, 0, -1, -t, 0, 1, -t, t, 0, -1,
-      t, 0, 1, -t, 0, -1, -t, 0, 1;
-  m.F.resize(20, 3);
-  m.F << 0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7,
-      1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1;
-  return m;
-}
-
-// Splits every triangle into four at its edge midpoints (shared midpoints are created once).
-Mesh subdivide(const Mesh& in) {
-  std::vector<Eigen::RowVector3d> V(in.V.rows());
-  for (int v = 0; v < in.V.rows(); ++v) V[v] = in.V.row(v);
-  std::map<std::pair<int, int>, int> midpoint;
-  auto mid = [&](int a, int b) {
-    const auto key = std::minmax(a, b);
-    auto [it, inserted] = midpoint.try_emplace(key, static_cast<int>(V.size()));
-    if (inserted) V.push_back(0.5 * (V[a] + V[b]));
-    return it->second;
-  };
-  Mesh out;
-  out.F.resize(4 * in.F.rows(), 3);
-  for (int f = 0; f < in.F.rows(); ++f) {
-    const int a = in.F(f, 0), b = in.F(f, 1), c = in.F(f, 2);
-    const int ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
-    out.F.row(4 * f) << a, ab, ca;
-    out.F.row(4 * f + 1) << b, bc, ab;
-    out.F.row(4 * f + 2) << c, ca, bc;
-    out.F.row(4 * f + 3) << ab, bc, ca;
-  }
-  out.V.resize(static_cast<int>(V.size()), 3);
-  for (int v = 0; v < out.V.rows(); ++v) out.V.row(v) = V[v];
-  return out;
-}
 
 // Faces of an nu by nv vertex grid (vertex (i, j) = j·nu + i), counter-clockwise in (i, j); a
 // periodic direction wraps its last column of quads around to the first.
@@ -75,13 +38,7 @@ double mean_edge_length(const Mesh& m) {
   return sum / (3.0 * static_cast<double>(m.F.rows()));
 }
 
-Mesh icosphere(int level, double radius) {
-  Mesh m = icosahedron();
-  for (int l = 0; l < level; ++l) m = subdivide(m);
-  m.V.rowwise().normalize();
-  m.V *= radius;
-  return m;
-}
+Mesh icosphere(int level, double radius) { return fairsurf::icosphere(level, radius); }
 
 Mesh jittered_sphere(int level, double radius, double amplitude, unsigned seed) {
   Mesh m = icosphere(level, radius);

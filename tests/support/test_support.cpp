@@ -5,7 +5,27 @@
 #include <array>
 #include <cstdio>
 
+#include <fstream>
+#include <sstream>
+
 namespace fairsurf::test {
+
+std::string read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+Mesh tetrahedron() {
+  Mesh m;
+  m.V.resize(4, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  m.F.resize(4, 3);
+  m.F << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
+  return m;
+}
+
 
 std::string data_path(const std::string& name) { return std::string(FAIRSURF_DATA_DIR) + "/" + name; }
 

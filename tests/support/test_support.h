@@ -4,6 +4,7 @@
 
 #include <fairsurf/mesh.h>
 
+#include <filesystem>
 #include <string>
 
 namespace fairsurf::test {
@@ -22,6 +23,12 @@ struct CliRun {
 
 /// Runs the CLI with `arguments` (a shell-quoted string), capturing stdout and stderr together.
 CliRun run_cli(const std::string& arguments);
+
+/// The whole content of a file as bytes ("" if it cannot be read).
+std::string read_bytes(const std::filesystem::path& path);
+
+/// A closed, outward-oriented tetrahedron on the origin and the three unit points.
+Mesh tetrahedron();
 
 /// A planar (nx+1) by (ny+1) vertex grid on [0, nx*h] x [0, ny*h], every quad split along the
 /// same diagonal, so that interior vertices have valence 6. Vertex (i, j) has index j*(nx+1)+i.

@@ -1,0 +1,113 @@
+// fairsurf blend: join two boundary loops (of one mesh, or of two meshes) by a fair tube (blend.h).
+#include <fairsurf/blend.h>
+#include <fairsurf/errors.h>
+#include <fairsurf/io.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "command.h"
+#include "region_fairing_args.h"
+
+namespace fairsurf::cli {
+namespace {
+
+struct BlendArgs {
+  std::vector<std::string> inputs;
+  std::string output;
+  std::vector<int> loops;
+  bool no_relax = false;
+  RegionFairingArgs fairing;
+};
+
+BlendOptions blend_options(const BlendArgs& args) {
+  BlendOptions o;
+  o.fair = region_fairing_options(args.fairing);
+  o.patch.relax = !args.no_relax;
+  if (!args.loops.empty()) {
+    o.loop_a = args.loops[0];
+    o.loop_b = args.loops[1];
+  }
+  return o;
+}
+
+std::string border_text(const char* name, const BlendLoop& loop) {
+  char text[200];
+  std::snprintf(text, sizeof text, "loop %s = %d (%d vertices): max normal angle %.3g°, max H jump %.3g", name,
+                loop.index, loop.length, loop.border.max_normal_angle * 180.0 / M_PI,
+                loop.border.max_mean_curvature_jump);
+  return text;
+}
+
+nlohmann::json loop_json(const BlendLoop& loop) {
+  return {{"index", loop.index}, {"length", loop.length}, {"continuity_measured", to_json(loop.border)}};
+}
+
+void run_blend(const BlendArgs& args) {
+  const RegionFairingArgs& f = args.fairing;
+  const std::vector<std::filesystem::path> inputs(args.inputs.begin(), args.inputs.end());
+  check_output_path(args.output, inputs, f.force);
+  if (!f.log.empty()) check_output_path(f.log, inputs, f.force);
+  const BlendOptions options = blend_options(args);
+  Mesh mesh = read_input(args.inputs[0]);
+  if (args.inputs.size() == 2) mesh = concatenate_meshes(mesh, read_input(args.inputs[1]));
+
+  nlohmann::json log{{"command", "blend"}, {"inputs", args.inputs}, {"functions", f.functions}};
+  nlohmann::json steps = nlohmann::json::array();
+  BlendReport report;
+  try {
+    report = blend_loops(mesh, options, step_observer(f, steps));
+  } catch (const NumericalError& e) {
+    end_progress(f);
+    write_output([&] { write_mesh(args.output, mesh); });
+    log["error"] = e.what();
+    log["steps"] = steps;
+    write_log(f, log, "blend");
+    throw CliError(kNumerical, std::string(e.what()) + " (the last accepted state was written to " +
+                                   args.output + ")");
+  }
+  end_progress(f);
+  write_output([&] { write_mesh(args.output, mesh); });
+  log.update(nlohmann::json{{"loops_found", report.loops_found},
+              {"automatic", report.automatic},
+              {"loop_distance", report.loop_distance},
+              {"loop_a", loop_json(report.a)},
+              {"loop_b", loop_json(report.b)},
+              {"tube_vertices", report.tube_vertices},
+              {"tube_faces", report.tube_faces},
+              {"tube_rings", report.tube_rings},
+              {"fair", to_json(report.fair)},
+              {"seconds", report.seconds}});
+  write_log(f, log, "blend");
+  std::printf("blended loops %d and %d of %d%s: tube of %d vertices, %d faces; %s\n  %s\n  %s\n%.2f s; wrote %s\n",
+              report.a.index, report.b.index, report.loops_found, report.automatic ? " (closest pair)" : "",
+              report.tube_vertices, report.tube_faces, summary(report.fair).c_str(),
+              border_text("a", report.a).c_str(), border_text("b", report.b).c_str(), report.seconds,
+              args.output.c_str());
+}
+
+void setup_blend(CLI::App& app) {
+  auto args = std::make_shared<BlendArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "blend", "Join two boundary loops (of one mesh or of two meshes) by a fair G2 tube");
+  cmd->add_option("inputs", args->inputs, "One mesh, or two meshes to join (the second is appended)")
+      ->required()
+      ->expected(1, 2);
+  cmd->add_option("-o,--output", args->output, "Output mesh")->required();
+  cmd->add_option("--loops", args->loops,
+                  "i,j: the boundary loops to join (default: the closest pair); loops are numbered by "
+                  "their smallest vertex index, over the concatenated meshes")
+      ->expected(2)
+      ->delimiter(',');
+  cmd->add_flag("--no-relax", args->no_relax,
+                "Start the flow from the Hermite tube, without the G0 membrane (which pinches off when "
+                "no minimal surface spans the two loops, e.g. loops far apart for their size)");
+  add_region_fairing_options(cmd, args->fairing);
+  cmd->callback([args] { run_blend(*args); });
+}
+
+const CommandRegistration registration(60, setup_blend);
+
+}  // namespace
+}  // namespace fairsurf::cli

@@ -1,0 +1,102 @@
+// fairsurf fair: free-form design / region fairing. A user-marked region is freed and faired with
+// the rings around it as boundary data (fair_region.h).
+#include <fairsurf/errors.h>
+#include <fairsurf/io.h>
+#include <fairsurf/region_selection.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "command.h"
+#include "region_fairing_args.h"
+
+namespace fairsurf::cli {
+namespace {
+
+struct FairArgs {
+  std::string input, output, region_file, region_property;
+  std::vector<double> region_sphere;
+  RegionFairingArgs fairing;
+};
+
+std::vector<int> selected_region(const FairArgs& args, const Mesh& mesh) {
+  std::vector<int> region;
+  if (!args.region_file.empty()) {
+    region = read_vertex_indices(args.region_file, mesh.num_vertices());
+  } else if (!args.region_sphere.empty()) {
+    const auto& s = args.region_sphere;
+    region = vertices_in_ball(mesh.V, Eigen::Vector3d(s[0], s[1], s[2]), s[3]);
+  } else {
+    region = vertices_with_property(mesh, args.region_property);
+  }
+  if (region.empty()) throw InvalidArgument("fair: the region selects no vertex of " + args.input);
+  if (static_cast<int>(region.size()) == mesh.num_vertices())
+    throw InvalidArgument("fair: the region holds all " + std::to_string(mesh.num_vertices()) +
+                          " vertices of " + args.input + "; the rings around it must stay fixed");
+  return region;
+}
+
+std::string degrees(double radians) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g°", radians * 180.0 / M_PI);
+  return text;
+}
+
+void run_fair(const FairArgs& args) {
+  const RegionFairingArgs& f = args.fairing;
+  check_output_path(args.output, {args.input}, f.force);
+  if (!f.log.empty()) check_output_path(f.log, {args.input}, f.force);
+  const FairRegionOptions options = region_fairing_options(f);
+  Mesh mesh = read_input(args.input);
+  const std::vector<int> region = selected_region(args, mesh);
+
+  nlohmann::json log{{"command", "fair"}, {"input", args.input}, {"functions", f.functions}};
+  nlohmann::json steps = nlohmann::json::array();
+  FairRegionReport report;
+  try {
+    report = fair_region(mesh, region, options, step_observer(f, steps));
+  } catch (const NumericalError& e) {
+    end_progress(f);
+    write_output([&] { write_mesh(args.output, mesh); });
+    log["error"] = e.what();
+    log["steps"] = steps;
+    write_log(f, log, "fair");
+    throw CliError(kNumerical, std::string(e.what()) + " (the last accepted state was written to " +
+                                   args.output + ")");
+  }
+  end_progress(f);
+  write_output([&] { write_mesh(args.output, mesh); });
+  log.update(to_json(report));
+  write_log(f, log, "fair");
+  std::printf("faired %s: %d free vertices, %s; border (%d vertices): max normal angle %s, max H jump "
+              "%.3g; %.2f s; wrote %s\n",
+              args.input.c_str(), report.free_vertices, summary(report).c_str(),
+              report.continuity.border_vertices, degrees(report.continuity.max_normal_angle).c_str(),
+              report.continuity.max_mean_curvature_jump, report.seconds, args.output.c_str());
+}
+
+void setup_fair(CLI::App& app) {
+  auto args = std::make_shared<FairArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "fair", "Fair a marked region (free-form design): the region moves, the rings around it hold "
+              "the boundary data");
+  cmd->add_option("input", args->input, "Input mesh (.obj, .off, .ply, .stl)")->required();
+  cmd->add_option("-o,--output", args->output, "Output mesh")->required();
+  auto* group = cmd->add_option_group("region", "The free region (exactly one)");
+  group->add_option("--region", args->region_file, "File of 0-based vertex indices of the free region");
+  group->add_option("--region-sphere", args->region_sphere,
+                    "x,y,z,r: the vertices strictly inside this ball are free")
+      ->expected(4)
+      ->delimiter(',');
+  group->add_option("--region-property", args->region_property,
+                    "Per-vertex property (PLY) whose non-zero vertices are free");
+  group->require_option(1);
+  add_region_fairing_options(cmd, args->fairing);
+  cmd->callback([args] { run_fair(*args); });
+}
+
+const CommandRegistration registration(50, setup_fair);
+
+}  // namespace
+}  // namespace fairsurf::cli

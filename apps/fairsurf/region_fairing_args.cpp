@@ -1,0 +1,103 @@
+#include "region_fairing_args.h"
+
+#include <fairsurf/io.h>
+
+#include <cstdio>
+
+#include <unistd.h>
+
+#include "command.h"
+#include "flow_log.h"
+
+namespace fairsurf::cli {
+namespace {
+
+bool shows_progress(const RegionFairingArgs& args) { return !args.quiet && ::isatty(STDERR_FILENO); }
+
+}  // namespace
+
+void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args) {
+  cmd->add_option("--continuity", args.continuity,
+                  "G2 (default: sixth-order flow, three fixed rings), G1 (Willmore, two) or G0 (mean "
+                  "curvature, one)");
+  cmd->add_option("--f", args.functions,
+                  "Energy function(s) f(H,K) of the sixth-order flow, repeatable: H (default), K, H2, "
+                  "absHpH:p, 4absHH+2K, k1, k2 or a formula in H and K")
+      ->take_all();
+  cmd->add_option("--method", args.method,
+                  "flow (default: the geometric flow to a steady state) or harmonic (cotangent "
+                  "Laplacian^(k+1) x = 0, the linear baseline)");
+  cmd->add_option("--max-steps", args.max_steps, "Stop the flow after this many accepted steps (default 200)");
+  cmd->add_option("--log", args.log, "Write a JSON report with every flow step here");
+  cmd->add_flag("--quiet", args.quiet, "No progress line");
+  cmd->add_flag("--force", args.force, "Allow outputs to overwrite an input");
+}
+
+FairRegionOptions region_fairing_options(const RegionFairingArgs& args) {
+  FairRegionOptions o;
+  o.continuity = parse_continuity(args.continuity);
+  o.method = parse_fair_method(args.method);
+  o.flow.functions = args.functions;
+  o.flow.max_steps = args.max_steps;
+  return o;
+}
+
+FlowObserver step_observer(const RegionFairingArgs& args, nlohmann::json& steps) {
+  const bool progress = shows_progress(args);
+  return [&steps, progress](const StepRecord& r) {
+    steps.push_back(to_json(r));
+    if (progress)
+      std::fprintf(stderr, "\r  step %d  t %.3g  tau %.3g  E %.4g  max|V| %.3g%s   ", r.step, r.time, r.tau,
+                   r.energy, r.max_velocity, r.accepted ? "" : "  (rejected)");
+  };
+}
+
+void end_progress(const RegionFairingArgs& args) {
+  if (shows_progress(args)) std::fputc('\n', stderr);
+}
+
+nlohmann::json to_json(const ContinuityMeasure& m) {
+  return {{"border_vertices", m.border_vertices},
+          {"max_normal_angle", m.max_normal_angle},
+          {"mean_normal_angle", m.mean_normal_angle},
+          {"max_mean_curvature_jump", m.max_mean_curvature_jump},
+          {"mean_mean_curvature_jump", m.mean_mean_curvature_jump}};
+}
+
+nlohmann::json to_json(const FairRegionReport& r) {
+  nlohmann::json j{{"free_vertices", r.free_vertices},
+                   {"method", to_string(r.method)},
+                   {"continuity_requested", std::string(to_string(r.requested))},
+                   {"continuity_supported", std::string(to_string(r.supported))},
+                   {"continuity_measured", to_json(r.continuity)},
+                   {"seconds", r.seconds}};
+  if (r.method == FairMethod::flow) {
+    j["flow"] = to_string(r.flow_kind);
+    j.update(to_json(r.flow));
+  } else {
+    j["harmonic"] = {{"order", r.harmonic.order}, {"backward_error", r.harmonic.backward_error}};
+  }
+  return j;
+}
+
+std::string summary(const FairRegionReport& r) {
+  char text[256];
+  if (r.method == FairMethod::harmonic)
+    std::snprintf(text, sizeof text, "%s (harmonic k = %d)", std::string(to_string(r.supported)).c_str(),
+                  r.harmonic.order);
+  else
+    std::snprintf(text, sizeof text, "%s (%s flow, %d steps, %s, max|V| %.3g)",
+                  std::string(to_string(r.supported)).c_str(), to_string(r.flow_kind), r.flow.accepted_steps,
+                  to_string(r.flow.stop_reason), r.flow.final_max_velocity);
+  std::string out = text;
+  if (r.supported != r.requested)
+    out += "; requested " + std::string(to_string(r.requested)) + " but the fixed rings support only " +
+           std::string(to_string(r.supported));
+  return out;
+}
+
+void write_log(const RegionFairingArgs& args, const nlohmann::json& log, const char* command) {
+  if (!args.log.empty()) write_output([&] { write_file_atomically(args.log, log.dump(2) + "\n", command); });
+}
+
+}  // namespace fairsurf::cli

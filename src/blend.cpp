@@ -1,0 +1,118 @@
+#include <fairsurf/blend.h>
+#include <fairsurf/errors.h>
+#include <fairsurf/topology.h>
+#include <fairsurf/tube.h>
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+namespace fairsurf {
+namespace {
+
+std::string loop_list(const std::vector<std::vector<int>>& loops) {
+  std::string out;
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    out += (i > 0 ? ", " : "") + std::to_string(i) + " (" + std::to_string(loops[i].size()) + " vertices)";
+  return out;
+}
+
+LoopPair chosen_pair(const Vertices& V, const std::vector<std::vector<int>>& loops, const BlendOptions& o) {
+  const int n = static_cast<int>(loops.size());
+  if (n < 2)
+    throw InvalidMeshError("blend_loops: the mesh has " + std::to_string(n) +
+                           (n == 1 ? " boundary loop" : " boundary loops") + "; blending needs two");
+  if (o.loop_a < 0 && o.loop_b < 0) return closest_loop_pair(V, loops);
+  for (int index : {o.loop_a, o.loop_b})
+    if (index < 0 || index >= n)
+      throw InvalidArgument("blend_loops: loop " + std::to_string(index) + " is out of range; the mesh has " +
+                            std::to_string(n) + " boundary loops: " + loop_list(loops));
+  if (o.loop_a == o.loop_b)
+    throw InvalidArgument("blend_loops: loop " + std::to_string(o.loop_a) + " given twice; two loops are needed");
+  return {o.loop_a, o.loop_b, 0.0};
+}
+
+template <class Derived>
+Eigen::Index append_rows(Eigen::PlainObjectBase<Derived>& out, const Eigen::PlainObjectBase<Derived>& a,
+                         const Eigen::PlainObjectBase<Derived>& b) {
+  out.resize(a.rows() + b.rows(), a.cols());
+  out.topRows(a.rows()) = a;
+  out.bottomRows(b.rows()) = b;
+  return a.rows();
+}
+
+}  // namespace
+
+Mesh concatenate_meshes(const Mesh& first, const Mesh& second) {
+  Mesh out;
+  append_rows(out.V, first.V, second.V);
+  Faces shifted = second.F.array() + first.num_vertices();
+  append_rows(out.F, first.F, shifted);
+  for (const auto& [name, values] : first.vertex_scalars) {
+    const auto other = second.vertex_scalars.find(name);
+    if (other == second.vertex_scalars.end()) continue;
+    Eigen::VectorXd joined(values.size() + other->second.size());
+    joined << values, other->second;
+    out.vertex_scalars[name] = joined;
+  }
+  if (first.vertex_colors.rows() > 0 && second.vertex_colors.rows() > 0)
+    append_rows(out.vertex_colors, first.vertex_colors, second.vertex_colors);
+  return out;
+}
+
+ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
+                                             const std::vector<int>& free_vertices, int rings) {
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  const std::vector<int> distance = ring_distances(topo, loop, rings);
+  std::vector<int> local(mesh.num_vertices(), -1);
+  int kept = 0;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (distance[v] >= 0) local[v] = kept++;
+  Vertices V(kept, 3);
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (local[v] >= 0) V.row(local[v]) = mesh.V.row(v);
+  std::vector<Eigen::RowVector3i> faces;
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const Eigen::RowVector3i c = mesh.F.row(f);
+    if (local[c[0]] >= 0 && local[c[1]] >= 0 && local[c[2]] >= 0)
+      faces.emplace_back(local[c[0]], local[c[1]], local[c[2]]);
+  }
+  Faces F(static_cast<int>(faces.size()), 3);
+  for (int f = 0; f < F.rows(); ++f) F.row(f) = faces[f];
+  std::vector<int> free_local;
+  for (int v : free_vertices)
+    if (local[v] >= 0) free_local.push_back(local[v]);
+  return measure_continuity(V, F, free_local);
+}
+
+BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObserver& observer) {
+  const auto start = std::chrono::steady_clock::now();
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  const std::vector<std::vector<int>> loops = boundary_loops(mesh.F, topo);
+  const LoopPair pair = chosen_pair(mesh.V, loops, options);
+
+  BlendReport report;
+  report.loops_found = static_cast<int>(loops.size());
+  report.automatic = options.loop_a < 0 && options.loop_b < 0;
+  report.loop_distance = pair.distance;
+  const std::vector<int>& loop_a = loops[pair.first];
+  const std::vector<int>& loop_b = loops[pair.second];
+  report.a.index = pair.first;
+  report.a.length = static_cast<int>(loop_a.size());
+  report.b.index = pair.second;
+  report.b.length = static_cast<int>(loop_b.size());
+
+  InitialPatch patch = tube_patch(mesh, loop_a, loop_b, options.patch);
+  report.tube_vertices = patch.mesh.num_vertices() - mesh.num_vertices();
+  report.tube_faces = patch.mesh.num_faces() - patch.first_patch_face;
+  report.tube_rings = patch.tube.rings;
+  mesh = std::move(patch.mesh);
+
+  report.fair = fair_region(mesh, patch.free_vertices, options.fair, observer);
+  report.a.border = measure_continuity_at_loop(mesh, loop_a, patch.free_vertices, options.measure_rings);
+  report.b.border = measure_continuity_at_loop(mesh, loop_b, patch.free_vertices, options.measure_rings);
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace fairsurf

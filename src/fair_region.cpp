@@ -1,0 +1,75 @@
+#include <fairsurf/errors.h>
+#include <fairsurf/fair_region.h>
+#include <fairsurf/submesh.h>
+#include <fairsurf/topology.h>
+#include <fairsurf/validate.h>
+
+#include <chrono>
+
+namespace fairsurf {
+
+const char* to_string(FairMethod method) { return method == FairMethod::flow ? "flow" : "harmonic"; }
+
+FairMethod parse_fair_method(const std::string& name) {
+  if (name == "flow") return FairMethod::flow;
+  if (name == "harmonic") return FairMethod::harmonic;
+  throw InvalidArgument("parse_fair_method: '" + name + "' is not a method (expected flow or harmonic)");
+}
+
+FlowKind flow_for(Continuity c) {
+  switch (c) {
+    case Continuity::G0: return FlowKind::mean_curvature;
+    case Continuity::G1: return FlowKind::willmore;
+    case Continuity::G2: return FlowKind::sixth_order;
+  }
+  return FlowKind::sixth_order;
+}
+
+FlowOptions FairRegionOptions::default_fair_flow_options() {
+  FlowOptions o;
+  o.tau = 1e-9;              // unit-diagonal units; the step control doubles it every acceptance
+  o.max_steps = 200;
+  // Patches start far from steady (a flattened cap: max|V| ~1e8 above the round-off floor) and
+  // their geometry has converged once max|V| has fallen by ~1e-9 (METHOD §8.6 cap: max|r−1| within
+  // 2% of its final value).
+  o.steady_relative_tolerance = 1e-9;
+  return o;
+}
+
+FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
+                             const FairRegionOptions& options, const FlowObserver& observer) {
+  const auto start = std::chrono::steady_clock::now();
+  require_valid(mesh, Requirements{}, "fair_region");
+  if (free_vertices.empty()) throw InvalidArgument("fair_region: the free region is empty");
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  Submesh sub = extract_neighbourhood(mesh.V, mesh.F, topo, free_vertices, options.submesh_rings);
+  const Topology local = build_topology(sub.mesh.F, sub.mesh.num_vertices());
+  const Region region = make_region(local, sub.free_local, options.continuity);
+
+  FairRegionReport report;
+  report.free_vertices = region.num_free();
+  report.requested = options.continuity;
+  report.supported = region.supported;
+  report.method = options.method;
+  if (options.method == FairMethod::harmonic) {
+    HarmonicOptions harmonic;
+    harmonic.order = static_cast<int>(region.supported) + 1;
+    harmonic.solver = options.harmonic_solver;
+    report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, region, harmonic);
+  } else {
+    FlowOptions flow = options.flow;
+    flow.kind = report.flow_kind = flow_for(region.supported);
+    try {
+      report.flow = run_flow(sub.mesh.V, sub.mesh.F, region, flow, observer);
+    } catch (const NumericalError&) {
+      write_back_free(sub, mesh.V);  // the last accepted state: nothing is lost
+      throw;
+    }
+  }
+  write_back_free(sub, mesh.V);
+  report.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, sub.free_local);
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace fairsurf

@@ -1,0 +1,111 @@
+// `fairsurf fair`, `blend` and `scene` from the command line: outputs, measured figures and exit codes.
+#include <fairsurf/io.h>
+#include <fairsurf/scenes.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "test_support.h"
+
+using namespace fairsurf;
+namespace fs = std::filesystem;
+
+namespace {
+
+using test::CliRun;
+using test::run_cli;
+
+class CliFair : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("fairsurf_test_cli_fair_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+}  // namespace
+
+// METHOD §8.6 through the CLI: the flattened cap of the 642-vertex icosphere comes back to the sphere.
+TEST_F(CliFair, SphereCapSceneIsFairedBackToTheSphere) {
+  const std::string scene = path("cap.ply"), out = path("cap_out.ply"), log = path("cap.json");
+  const CliRun made = run_cli("scene sphere-cap -o '" + scene + "'");
+  ASSERT_EQ(made.exit_code, 0) << made.out;
+  EXPECT_NE(made.out.find("free region: 161 of 642 vertices"), std::string::npos) << made.out;
+  const CliRun run = run_cli("fair '" + scene + "' -o '" + out + "' --region-property free --log '" + log + "' --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("faired " + scene + ": 161 free vertices, G2 (sixth-order flow"), std::string::npos) << run.out;
+  const Mesh m = read_mesh(out);
+  double worst = 0;
+  for (int v = 0; v < m.num_vertices(); ++v) worst = std::max(worst, std::abs(m.V.row(v).norm() - 1.0));
+  std::printf("[fair] sphere-cap via the CLI: max|r - 1| %.3g\n", worst);
+  EXPECT_LT(worst, 1e-3);  // METHOD §8.6: 1.4e-4 at 642 vertices
+  std::ifstream in(log);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["continuity_supported"], "G2");
+  EXPECT_LT(j["continuity_measured"]["max_mean_curvature_jump"].get<double>(), 0.05);
+}
+
+TEST_F(CliFair, RegionErrorsHaveClearMessagesAndExitCodes) {
+  const std::string mesh = test::data_path("sphere_16k.off"), out = path("out.ply");
+  CliRun r = run_cli("fair '" + mesh + "' -o '" + out + "' --region-sphere 0,0,100,0.1");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("fairsurf: error: fair: the region selects no vertex of " + mesh), std::string::npos) << r.out;
+  r = run_cli("fair '" + mesh + "' -o '" + out + "' --region-sphere 0,0,0,100");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("vertices of " + mesh + "; the rings around it must stay fixed"), std::string::npos) << r.out;
+  r = run_cli("fair '" + mesh + "' -o '" + out + "'");  // no region
+  EXPECT_EQ(r.exit_code, 1);
+  r = run_cli("fair '" + mesh + "' -o '" + out + "' --region-property free");
+  EXPECT_EQ(r.exit_code, 1);
+  r = run_cli("fair '" + mesh + "' -o '" + mesh + "' --region-sphere 0,0,1,0.2");
+  EXPECT_EQ(r.exit_code, 5);  // would overwrite the input
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(CliFair, BlendJoinsTwoMeshFilesAndReportsBothBorders) {
+  const Scene s = make_scene("fig4", {0.2});
+  // The two caps as separate files: the second is appended to the first.
+  Mesh top, bottom;
+  const int n = s.mesh.num_vertices() / 2;
+  top.V = s.mesh.V.topRows(n);
+  bottom.V = s.mesh.V.bottomRows(n);
+  const int f = s.mesh.num_faces() / 2;
+  top.F = s.mesh.F.topRows(f);
+  bottom.F = s.mesh.F.bottomRows(f).array() - n;
+  write_mesh(path("top.off"), top);
+  write_mesh(path("bottom.off"), bottom);
+  const CliRun r = run_cli("blend '" + path("top.off") + "' '" + path("bottom.off") + "' -o '" + path("joined.ply") +
+                           "' --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("blended loops 0 and 1 of 2 (closest pair)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("loop a = 0"), std::string::npos);
+  EXPECT_NE(r.out.find("loop b = 1"), std::string::npos);
+  const CliRun info = run_cli("info '" + path("joined.ply") + "'");
+  EXPECT_NE(info.out.find("boundary loops: 0"), std::string::npos) << info.out;
+}
+
+TEST_F(CliFair, BlendErrors) {
+  const std::string cross = test::data_path("fairing_cross.off");
+  CliRun r = run_cli("blend '" + cross + "' -o '" + path("x.ply") + "' --loops 0,7");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("fairsurf: error: blend_loops: loop 7 is out of range; the mesh has 4 boundary loops: 0 (52 "
+                       "vertices), 1 (52 vertices), 2 (52 vertices), 3 (52 vertices)"),
+            std::string::npos)
+      << r.out;
+  r = run_cli("blend '" + test::data_path("hemisphere.off") + "' -o '" + path("x.ply") + "'");
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.out.find("blend_loops: the mesh has 1 boundary loop; blending needs two"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(path("x.ply")));
+  r = run_cli("scene fig9 -o '" + path("x.ply") + "'");
+  EXPECT_EQ(r.exit_code, 1);
+}

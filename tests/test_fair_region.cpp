@@ -1,0 +1,107 @@
+#include <fairsurf/continuity.h>
+#include <fairsurf/errors.h>
+#include <fairsurf/fair_region.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "analytic_meshes.h"
+#include "test_support.h"
+
+using namespace fairsurf;
+
+namespace {
+
+// The METHOD §8.6 scene: a unit icosphere whose cap z > 0.5 is freed and flattened.
+struct FlattenedCap {
+  Mesh mesh;
+  std::vector<int> cap;
+  explicit FlattenedCap(int level) : mesh(test::icosphere(level, 1.0)) {
+    for (int v = 0; v < mesh.num_vertices(); ++v)
+      if (mesh.V(v, 2) > 0.5) cap.push_back(v), mesh.V(v, 2) = 0.5;
+  }
+  double max_radius_error() const {
+    double worst = 0;
+    for (int v : cap) worst = std::max(worst, std::abs(mesh.V.row(v).norm() - 1.0));
+    return worst;
+  }
+};
+
+}  // namespace
+
+TEST(Continuity, SmallOnASmoothSurfaceLargeAcrossAFold) {
+  Mesh sphere = test::icosphere(4, 1.0);
+  std::vector<int> cap;
+  for (int v = 0; v < sphere.num_vertices(); ++v)
+    if (sphere.V(v, 2) > 0.5) cap.push_back(v);
+  const ContinuityMeasure smooth = measure_continuity(sphere.V, sphere.F, cap);
+  EXPECT_GT(smooth.border_vertices, 30);
+  EXPECT_LT(smooth.max_normal_angle, 0.01);
+  EXPECT_LT(smooth.max_mean_curvature_jump, 0.05);
+  const FlattenedCap flat(4);
+  const ContinuityMeasure kink = measure_continuity(flat.mesh.V, flat.mesh.F, flat.cap);
+  // Flattening z > 0.5 turns the normal by about asin(√3/2) − something: tens of degrees.
+  EXPECT_GT(kink.max_normal_angle, 0.3);
+  EXPECT_GT(kink.max_mean_curvature_jump, 0.5);
+}
+
+TEST(FairRegion, G2FlowRecoversTheSphereCapAndBeatsG1G0AndTheHarmonicBaseline) {
+  FlattenedCap g2(3), g1(3), g0(3), harmonic(3);
+  const FairRegionReport r2 = fair_region(g2.mesh, g2.cap);
+  FairRegionOptions options;
+  options.continuity = Continuity::G1;
+  const FairRegionReport r1 = fair_region(g1.mesh, g1.cap, options);
+  options.continuity = Continuity::G0;
+  const FairRegionReport r0 = fair_region(g0.mesh, g0.cap, options);
+  options.continuity = Continuity::G2;
+  options.method = FairMethod::harmonic;
+  const FairRegionReport rh = fair_region(harmonic.mesh, harmonic.cap, options);
+  std::printf("[fair_region] cap on the 642-vertex icosphere, max|r-1|: G2 %.3g (%d steps, %s), G1 %.3g, "
+              "G0 %.3g, harmonic k=3 %.3g; G2 border: angle %.3g rad, H jump %.3g\n",
+              g2.max_radius_error(), r2.flow.accepted_steps, to_string(r2.flow.stop_reason),
+              g1.max_radius_error(), g0.max_radius_error(), harmonic.max_radius_error(),
+              r2.continuity.max_normal_angle, r2.continuity.max_mean_curvature_jump);
+  EXPECT_EQ(r2.flow_kind, FlowKind::sixth_order);
+  EXPECT_EQ(r1.flow_kind, FlowKind::willmore);
+  EXPECT_EQ(r0.flow_kind, FlowKind::mean_curvature);
+  EXPECT_EQ(r2.flow.stop_reason, FlowStopReason::steady);
+  EXPECT_LT(g2.max_radius_error(), 1e-3);  // METHOD §8.6: 1.4e-4 at 642 vertices
+  EXPECT_LT(g2.max_radius_error(), g1.max_radius_error());
+  EXPECT_LT(g1.max_radius_error(), g0.max_radius_error());
+  EXPECT_LT(10 * g2.max_radius_error(), harmonic.max_radius_error());
+  EXPECT_LT(r2.continuity.max_normal_angle, 0.02);
+  EXPECT_LT(r2.continuity.max_mean_curvature_jump, 0.05);
+  // Only the free vertices moved.
+  const Mesh untouched = test::icosphere(3, 1.0);
+  for (int v = 0; v < untouched.num_vertices(); ++v) {
+    if (untouched.V(v, 2) <= 0.5) {
+      EXPECT_EQ(g2.mesh.V.row(v), untouched.V.row(v));
+    }
+  }
+}
+
+TEST(FairRegion, FallsBackToTheContinuityTheRingsSupport) {
+  Mesh m = test::regular_grid(12, 12, 0.1);
+  std::vector<int> free;
+  for (int j = 2; j <= 6; ++j)  // two rows from the border: only rings 1-2 are complete
+    for (int i = 4; i <= 8; ++i) free.push_back(j * 13 + i), m.V(j * 13 + i, 2) = 0.05;
+  const FairRegionReport r = fair_region(m, free);
+  EXPECT_EQ(r.requested, Continuity::G2);
+  EXPECT_EQ(r.supported, Continuity::G1);
+  EXPECT_EQ(r.flow_kind, FlowKind::willmore);
+  EXPECT_LT(m.V.col(2).cwiseAbs().maxCoeff(), 1e-6);  // the plane is recovered
+}
+
+TEST(FairRegion, RejectsBadInput) {
+  Mesh m = test::icosphere(2, 1.0);
+  EXPECT_THROW(fair_region(m, std::vector<int>{}), InvalidArgument);
+  try {
+    parse_fair_method("spline");
+    FAIL() << "no exception";
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "parse_fair_method: 'spline' is not a method (expected flow or harmonic)");
+  }
+  m.F(0, 1) = m.F(0, 0);
+  EXPECT_THROW(fair_region(m, std::vector<int>{1}), InvalidMeshError);
+}
