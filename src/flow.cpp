@@ -44,6 +44,7 @@ void check_options(const FlowOptions& o) {
   else if (!(o.runaway_energy_factor > 1)) problem = "runaway_energy_factor must exceed 1";
   else if (o.border_fixed_rings < 0) problem = "border_fixed_rings must be non-negative";
   else if (!(c.max_displacement_ratio > 0)) problem = "step_control.max_displacement_ratio must be positive";
+  else if (std::isnan(c.jacobian_dominance)) problem = "step_control.jacobian_dominance must not be NaN";
   else if (!(c.max_energy_growth >= 1)) problem = "step_control.max_energy_growth must be at least 1";
   else if (!(c.reject_factor > 0 && c.reject_factor < 1)) problem = "step_control.reject_factor must lie in (0, 1)";
   else if (!(c.accept_factor >= 1)) problem = "step_control.accept_factor must be at least 1";
@@ -109,6 +110,7 @@ class FlowRun {
   // One trial step at time step tau; returns true if accepted (record filled either way).
   bool try_step(double tau, StepRecord& record);
   bool solve_step(double tau, StepRecord& record, Eigen::VectorXd& d);
+  void limit_displacement(Eigen::VectorXd& d) const;
   bool displacement_ok(const Eigen::VectorXd& d, StepRecord& record) const;
   bool faces_ok(StepRecord& record);
   bool evaluate_trial(StepRecord& record);
@@ -141,6 +143,7 @@ class FlowRun {
   Eigen::MatrixX3d face_direction_, face_direction_trial_;
   double energy_ = 0;
   SparseOperator jacobian_, step_matrix_;
+  Eigen::VectorXd damping_;  // what leaves J's diagonal in the step matrix (row_damping)
   bool jacobian_current_ = false;
 };
 
@@ -228,9 +231,15 @@ bool FlowRun::solve_step(double tau, StepRecord& record, Eigen::VectorXd& d) {
   auto start = Clock::now();
   if (!jacobian_current_) {
     flow_detail::assemble_jacobian(problem_, state_, work_, jacobian_);
+    // Without step control the step is the plain (I − τJ) d = τV of METHOD §5.
+    const auto& control = options_.step_control;
+    flow_detail::row_damping(jacobian_,
+                             control.enabled ? control.jacobian_dominance
+                                             : -std::numeric_limits<double>::infinity(),
+                             damping_);
     jacobian_current_ = true;
   }
-  flow_detail::form_step_matrix(jacobian_, tau, step_matrix_);
+  flow_detail::form_step_matrix(jacobian_, damping_, tau, step_matrix_);
   record.assembly_seconds = seconds_since(start);
   try {
     start = Clock::now();
@@ -251,6 +260,15 @@ bool FlowRun::solve_step(double tau, StepRecord& record, Eigen::VectorXd& d) {
   if (!d.allFinite()) return reject(record, StepRejection::non_finite, "non-finite displacement");
   record.max_displacement = d.cwiseAbs().maxCoeff();
   return true;
+}
+
+// Per-vertex trust region: |d_i| ≤ max_displacement_ratio · (mean edge length at i).
+void FlowRun::limit_displacement(Eigen::VectorXd& d) const {
+  const double ratio = options_.step_control.max_displacement_ratio;
+  for (int k = 0; k < region_.num_free(); ++k) {
+    const double cap = ratio * edge_length_[region_.free_vertices[k]];
+    d[k] = std::clamp(d[k], -cap, cap);
+  }
 }
 
 bool FlowRun::displacement_ok(const Eigen::VectorXd& d, StepRecord& record) const {
@@ -300,6 +318,7 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
   const bool control = options_.step_control.enabled;
   Eigen::VectorXd d;
   if (!solve_step(tau, record, d)) return false;
+  if (control && options_.step_control.limit_displacement) limit_displacement(d);
   if (control && !displacement_ok(d, record)) return false;
   X_trial_ = X_;
   for (int k = 0; k < region_.num_free(); ++k) {

@@ -157,7 +157,23 @@ void assemble_jacobian(const FlowProblem& problem, const FlowState& state, Jacob
   jacobian.makeCompressed();
 }
 
-void form_step_matrix(const SparseOperator& jacobian, double tau, SparseOperator& step) {
+void row_damping(const SparseOperator& jacobian, double dominance, Eigen::VectorXd& damping) {
+  const int n = static_cast<int>(jacobian.rows());
+  damping.resize(n);
+  const int* outer = jacobian.outerIndexPtr();
+  const int* inner = jacobian.innerIndexPtr();
+  const double* J = jacobian.valuePtr();
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    double diagonal = 0, off = 0;
+    for (int p = outer[i]; p < outer[i + 1]; ++p)
+      (inner[p] == i ? diagonal : off) += inner[p] == i ? J[p] : std::abs(J[p]);
+    damping[i] = off > 0 ? std::max(0.0, diagonal + dominance * off) : 0.0;
+  }
+}
+
+void form_step_matrix(const SparseOperator& jacobian, const Eigen::VectorXd& damping, double tau,
+                      SparseOperator& step) {
   if (step.rows() != jacobian.rows() || step.nonZeros() != jacobian.nonZeros() || !step.isCompressed())
     step = jacobian;
   const int n = static_cast<int>(jacobian.rows());
@@ -167,7 +183,8 @@ void form_step_matrix(const SparseOperator& jacobian, double tau, SparseOperator
   double* A = step.valuePtr();
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < n; ++i)
-    for (int p = outer[i]; p < outer[i + 1]; ++p) A[p] = (inner[p] == i ? 1.0 : 0.0) - tau * J[p];
+    for (int p = outer[i]; p < outer[i + 1]; ++p)
+      A[p] = inner[p] == i ? 1.0 - tau * (J[p] - damping[i]) : -tau * J[p];
 }
 
 }  // namespace fairsurf::flow_detail

@@ -53,8 +53,13 @@ struct JacobianWorkspace {
 void assemble_jacobian(const FlowProblem& problem, const FlowState& state, JacobianWorkspace& work,
                        SparseOperator& jacobian);
 
-/// step = I − τ J, J's pattern (which holds the diagonal). Keeps step's storage when the pattern
-/// matches.
-void form_step_matrix(const SparseOperator& jacobian, double tau, SparseOperator& step);
+/// damping_i = max(0, J_ii + dominance · Σ_{j≠i} |J_ij|) (#F): what must leave row i's diagonal
+/// so that J_ii ≤ −dominance · Σ_{j≠i} |J_ij|.
+void row_damping(const SparseOperator& jacobian, double dominance, Eigen::VectorXd& damping);
+
+/// step = I − τ (J − diag(damping)), J's pattern (which holds the diagonal). Keeps step's storage
+/// when the pattern matches.
+void form_step_matrix(const SparseOperator& jacobian, const Eigen::VectorXd& damping, double tau,
+                      SparseOperator& step);
 
 }  // namespace fairsurf::flow_detail

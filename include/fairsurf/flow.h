@@ -81,6 +81,15 @@ struct StepControlOptions {
   double reject_factor = 0.25;           ///< τ ← τ · this after a rejection
   double accept_factor = 2.0;            ///< τ ← min(τ · this, tau_max) after an acceptance
   int max_consecutive_rejections = 12;   ///< one more rejection in a row throws NumericalError
+  /// Clip each |d_i| to max_displacement_ratio times its local edge length (a per-vertex trust
+  /// region) instead of rejecting the step; the other rejections still apply. For rough input.
+  bool limit_displacement = false;
+  /// Row damping of the step matrix: where J_ii > −jacobian_dominance · Σ_{j≠i} |J_ij| (a row that
+  /// is not dissipative: anti-diffusive fitted stencils on irregular scans), the step uses that bound
+  /// as the diagonal, i.e. solves (I − τ(J − diag(s))) d = τV with s ≥ 0. Steady states are
+  /// unchanged (d = 0 iff V = 0); rows of regular and smooth meshes (ratio ≈ −0.38) are untouched.
+  /// Only with the control enabled; −∞ disables it (NaN is invalid).
+  double jacobian_dominance = 0.3;
 };
 
 struct FlowOptions {
