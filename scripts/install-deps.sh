@@ -17,6 +17,7 @@ packages=(
   libpng-dev               # PNG encoding for `fairsurf render`
   libstb-dev               # stb_truetype.h: glyph rasterization for render's title and colour bar
   fonts-dejavu-core        # DejaVu Sans, the font render draws its text with
+  python3                  # standard library only: the demo's and the gallery's noise and measurements
   libomp-dev               # OpenMP runtime headers
   libgtest-dev libgmock-dev
   libbenchmark-dev
