@@ -62,6 +62,7 @@ TEST(FlowRealScan, HammerPatchStaysFiniteAndLosesEnergy) {
   o.tau = 1e-21;
   o.max_steps = 12;
   o.step_control.limit_displacement = true;
+  o.step_control.jacobian_dominance = 0.3;
   o.step_control.max_consecutive_rejections = 20;
   const FlowReport report = run_flow(V, patch.mesh.F, region, o);
 

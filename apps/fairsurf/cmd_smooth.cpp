@@ -42,8 +42,9 @@ SmoothOptions smooth_options(const SmoothArgs& args, const Mesh& mesh) {
   o.flow.solver.kind = parse_linear_solver_kind(args.solver == "lu" ? "mumps" : args.solver);
   o.flow.max_steps = args.max_steps;
   // Raw scans ask for steps of about an edge length at their noise spikes whatever τ is (flow.h):
-  // clip those rather than reject every step.
+  // clip those rather than reject every step, and damp the rows that are not dissipative.
   o.flow.step_control.limit_displacement = true;
+  o.flow.step_control.jacobian_dominance = 0.3;
   o.fixed_rings = args.fixed_rings;
   if (!args.fixed_file.empty())
     o.fixed_vertices = read_vertex_indices(args.fixed_file, mesh.num_vertices());
