@@ -33,7 +33,7 @@ wrote out/torus_before_after.png
 if has_command fill; then
   run fill data/blub_open.obj -o out/blub_filled.obj --f H --force
   run render out/blub_filled.obj --compare data/blub.obj -o out/blub_filled.png --size 900x400 \
-    --title "blub_open.obj filled (G2, f = H) beside the original blub.obj" --force
+    --title "blub_open.obj filled (G2 requested; the fill reports what it reached) beside blub.obj" --force
   wrote out/blub_filled.obj; wrote out/blub_filled.png
 else
   echo; echo "demo: fairsurf fill is not in this build yet; skipping hole filling"
