@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "command.h"
+#include "flow_log.h"
 #include "region_fairing_args.h"
 
 namespace fairsurf::cli {
@@ -53,23 +54,12 @@ void run_blend(const BlendArgs& args) {
   Mesh mesh = read_input(args.inputs[0]);
   if (args.inputs.size() == 2) mesh = concatenate_meshes(mesh, read_input(args.inputs[1]));
 
-  nlohmann::json log{{"command", "blend"}, {"inputs", args.inputs}, {"functions", f.functions}};
-  nlohmann::json steps = nlohmann::json::array();
-  BlendReport report;
-  try {
-    report = blend_loops(mesh, options, step_observer(f, steps));
-  } catch (const NumericalError& e) {
-    end_progress(f);
-    write_output([&] { write_mesh(args.output, mesh); });
-    log["error"] = e.what();
-    log["steps"] = steps;
-    write_log(f, log, "blend");
-    throw CliError(kNumerical, std::string(e.what()) + " (the last accepted state was written to " +
-                                   args.output + ")");
-  }
-  end_progress(f);
+  FlowCommandRun run("blend", f.log, f.quiet,
+                     {{"command", "blend"}, {"inputs", args.inputs}, {"functions", f.functions}});
+  const BlendReport report =
+      run.run([&] { return blend_loops(mesh, options, run.observer()); }, mesh, args.output);
   write_output([&] { write_mesh(args.output, mesh); });
-  log.update(nlohmann::json{{"loops_found", report.loops_found},
+  run.finish(nlohmann::json{{"loops_found", report.loops_found},
               {"automatic", report.automatic},
               {"loop_distance", report.loop_distance},
               {"loop_a", loop_json(report.a)},
@@ -79,7 +69,6 @@ void run_blend(const BlendArgs& args) {
               {"tube_rings", report.tube_rings},
               {"fair", to_json(report.fair)},
               {"seconds", report.seconds}});
-  write_log(f, log, "blend");
   std::printf("blended loops %d and %d of %d%s: tube of %d vertices, %d faces; %s\n  %s\n  %s\n%.2f s; wrote %s\n",
               report.a.index, report.b.index, report.loops_found, report.automatic ? " (closest pair)" : "",
               report.tube_vertices, report.tube_faces, summary(report.fair).c_str(),

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "command.h"
+#include "flow_log.h"
 #include "region_fairing_args.h"
 
 namespace fairsurf::cli {
@@ -51,24 +52,12 @@ void run_fair(const FairArgs& args) {
   Mesh mesh = read_input(args.input);
   const std::vector<int> region = selected_region(args, mesh);
 
-  nlohmann::json log{{"command", "fair"}, {"input", args.input}, {"functions", f.functions}};
-  nlohmann::json steps = nlohmann::json::array();
-  FairRegionReport report;
-  try {
-    report = fair_region(mesh, region, options, step_observer(f, steps));
-  } catch (const NumericalError& e) {
-    end_progress(f);
-    write_output([&] { write_mesh(args.output, mesh); });
-    log["error"] = e.what();
-    log["steps"] = steps;
-    write_log(f, log, "fair");
-    throw CliError(kNumerical, std::string(e.what()) + " (the last accepted state was written to " +
-                                   args.output + ")");
-  }
-  end_progress(f);
+  FlowCommandRun run("fair", f.log, f.quiet,
+                     {{"command", "fair"}, {"input", args.input}, {"functions", f.functions}});
+  const FairRegionReport report =
+      run.run([&] { return fair_region(mesh, region, options, run.observer()); }, mesh, args.output);
   write_output([&] { write_mesh(args.output, mesh); });
-  log.update(to_json(report));
-  write_log(f, log, "fair");
+  run.finish(to_json(report));
   std::printf("faired %s: %d free vertices, %s; border (%d vertices): max normal angle %s, max H jump "
               "%.3g; %.2f s; wrote %s\n",
               args.input.c_str(), report.free_vertices, summary(report).c_str(),

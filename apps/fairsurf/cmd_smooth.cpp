@@ -8,8 +8,6 @@
 #include <map>
 #include <memory>
 
-#include <unistd.h>
-
 #include "command.h"
 #include "flow_log.h"
 
@@ -64,52 +62,23 @@ SmoothOptions smooth_options(const SmoothArgs& args, const Mesh& mesh) {
   return o;
 }
 
-void print_progress(const StepRecord& r) {
-  std::fprintf(stderr, "\r  step %d  t %.3g  tau %.3g  E %.4g  max|V| %.3g%s   ", r.step, r.time, r.tau,
-               r.energy, r.max_velocity, r.accepted ? "" : "  (rejected)");
-}
-
-void write_log(const std::string& path, const nlohmann::json& log) {
-  if (!path.empty()) write_output([&] { write_file_atomically(path, log.dump(2) + "\n", "smooth"); });
-}
-
 void run_smooth(const SmoothArgs& args) {
   check_output_path(args.output, {args.input}, args.force);
   if (!args.log.empty()) check_output_path(args.log, {args.input}, args.force);
   Mesh mesh = read_input(args.input);
   const SmoothOptions options = smooth_options(args, mesh);
-  const bool progress = !args.quiet && ::isatty(STDERR_FILENO);
-  nlohmann::json log{{"command", "smooth"},
-                     {"input", args.input},
-                     {"flow", to_string(options.flow.kind)},
-                     {"functions", options.flow.functions}};
-  nlohmann::json steps = nlohmann::json::array();
-  const FlowObserver observer = [&](const StepRecord& r) {
-    steps.push_back(to_json(r));
-    if (progress) print_progress(r);
-  };
-
-  FlowReport report;
-  try {
-    report = smooth(mesh, options, observer);
-  } catch (const NumericalError& e) {
-    if (progress) std::fputc('\n', stderr);
-    // Nothing is lost: the last accepted state is written, and the failure still exits 4.
-    write_output([&] { write_mesh(args.output, mesh); });
-    log["error"] = e.what();
-    log["steps"] = steps;
-    write_log(args.log, log);
-    throw CliError(kNumerical, std::string(e.what()) + " (the last accepted state was written to " +
-                                   args.output + ")");
-  }
-  if (progress) std::fputc('\n', stderr);
+  FlowCommandRun run("smooth", args.log, args.quiet,
+                     {{"command", "smooth"},
+                      {"input", args.input},
+                      {"flow", to_string(options.flow.kind)},
+                      {"functions", options.flow.functions}});
+  const FlowReport report = run.run([&] { return smooth(mesh, options, run.observer()); }, mesh, args.output);
   if (report.well_posedness.violating_vertices > 0)
     std::cerr << "fairsurf: warning: the chosen f is not parabolic at "
               << report.well_posedness.violating_vertices << " of " << report.well_posedness.vertices
               << " vertices of the input (METHOD §4); the step control kept the flow stable\n";
   write_output([&] { write_mesh(args.output, mesh); });
-  log.update(to_json(report));
-  write_log(args.log, log);
+  run.finish(to_json(report));
   std::printf("smoothed %s: %s flow, %d steps (%d rejected) to t = %.3g (%s); energy %.4g -> %.4g; "
               "max|V| %.3g -> %.3g; %d free vertices; wrote %s\n",
               args.input.c_str(), to_string(options.flow.kind), report.accepted_steps,

@@ -1,5 +1,13 @@
 #include "flow_log.h"
 
+#include <fairsurf/io.h>
+
+#include <cstdio>
+
+#include <unistd.h>
+
+#include "command.h"
+
 namespace fairsurf::cli {
 
 nlohmann::json to_json(const StepRecord& r) {
@@ -42,6 +50,44 @@ nlohmann::json to_json(const FlowReport& report) {
            {{"vertices", report.well_posedness.vertices},
             {"violating_vertices", report.well_posedness.violating_vertices}}},
           {"steps", steps}};
+}
+
+FlowCommandRun::FlowCommandRun(std::string command, std::string log_path, bool quiet, nlohmann::json log)
+    : command_(std::move(command)),
+      log_path_(std::move(log_path)),
+      progress_(!quiet && ::isatty(STDERR_FILENO)),
+      log_(std::move(log)) {}
+
+FlowObserver FlowCommandRun::observer() {
+  return [this](const StepRecord& r) {
+    steps_.push_back(to_json(r));
+    if (progress_)
+      std::fprintf(stderr, "\r  step %d  t %.3g  tau %.3g  E %.4g  max|V| %.3g%s   ", r.step, r.time, r.tau,
+                   r.energy, r.max_velocity, r.accepted ? "" : "  (rejected)");
+  };
+}
+
+void FlowCommandRun::end_progress() const {
+  if (progress_) std::fputc('\n', stderr);
+}
+
+void FlowCommandRun::fail(const NumericalError& e, const Mesh& mesh, const std::string& output) {
+  write_output([&] { write_mesh(output, mesh); });
+  log_["error"] = e.what();
+  log_["steps"] = steps_;
+  write_log();
+  throw CliError(kNumerical,
+                 std::string(e.what()) + " (the last accepted state was written to " + output + ")");
+}
+
+void FlowCommandRun::finish(const nlohmann::json& summary) {
+  log_.update(summary);
+  write_log();
+}
+
+void FlowCommandRun::write_log() const {
+  if (!log_path_.empty())
+    write_output([&] { write_file_atomically(log_path_, log_.dump(2) + "\n", command_); });
 }
 
 }  // namespace fairsurf::cli

@@ -1,20 +1,10 @@
 #include "region_fairing_args.h"
 
-#include <fairsurf/io.h>
-
 #include <cstdio>
 
-#include <unistd.h>
-
-#include "command.h"
 #include "flow_log.h"
 
 namespace fairsurf::cli {
-namespace {
-
-bool shows_progress(const RegionFairingArgs& args) { return !args.quiet && ::isatty(STDERR_FILENO); }
-
-}  // namespace
 
 void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args) {
   cmd->add_option("--continuity", args.continuity,
@@ -40,20 +30,6 @@ FairRegionOptions region_fairing_options(const RegionFairingArgs& args) {
   o.flow.functions = args.functions;
   o.flow.max_steps = args.max_steps;
   return o;
-}
-
-FlowObserver step_observer(const RegionFairingArgs& args, nlohmann::json& steps) {
-  const bool progress = shows_progress(args);
-  return [&steps, progress](const StepRecord& r) {
-    steps.push_back(to_json(r));
-    if (progress)
-      std::fprintf(stderr, "\r  step %d  t %.3g  tau %.3g  E %.4g  max|V| %.3g%s   ", r.step, r.time, r.tau,
-                   r.energy, r.max_velocity, r.accepted ? "" : "  (rejected)");
-  };
-}
-
-void end_progress(const RegionFairingArgs& args) {
-  if (shows_progress(args)) std::fputc('\n', stderr);
 }
 
 nlohmann::json to_json(const ContinuityMeasure& m) {
@@ -94,10 +70,6 @@ std::string summary(const FairRegionReport& r) {
     out += "; requested " + std::string(to_string(r.requested)) + " but the fixed rings support only " +
            std::string(to_string(r.supported));
   return out;
-}
-
-void write_log(const RegionFairingArgs& args, const nlohmann::json& log, const char* command) {
-  if (!args.log.empty()) write_output([&] { write_file_atomically(args.log, log.dump(2) + "\n", command); });
 }
 
 }  // namespace fairsurf::cli

@@ -1,5 +1,6 @@
 // The options `fair` and `blend` share: continuity, f, method, step limit, log, progress. Both run
-// fair_region (fair_region.h); this file turns the flags into its options and its report into JSON.
+// fair_region (fair_region.h); this file turns the flags into its options and its report into JSON
+// (the run itself, progress and log: FlowCommandRun in flow_log.h).
 #pragma once
 
 #include <fairsurf/fair_region.h>
@@ -27,11 +28,6 @@ void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args);
 /// The fair_region options the flags ask for (throws InvalidArgument for a bad name).
 FairRegionOptions region_fairing_options(const RegionFairingArgs& args);
 
-/// A progress line on a terminal (unless --quiet) and every step into `steps` for the log.
-FlowObserver step_observer(const RegionFairingArgs& args, nlohmann::json& steps);
-/// Ends the progress line, if one was printed.
-void end_progress(const RegionFairingArgs& args);
-
 nlohmann::json to_json(const ContinuityMeasure& measure);
 /// Method, continuity requested and supported, flow kind and run (or harmonic figures), measure.
 nlohmann::json to_json(const FairRegionReport& report);
@@ -39,8 +35,5 @@ nlohmann::json to_json(const FairRegionReport& report);
 /// "G2 (sixth-order flow, 17 steps, steady, max|V| 3.1e-2)" or "G2 (harmonic k = 3)", with
 /// "requested G2, rings support G1" when the fixed rings forced a fallback.
 std::string summary(const FairRegionReport& report);
-
-/// Writes `log` (JSON) to args.log unless it is empty; write failures exit 5.
-void write_log(const RegionFairingArgs& args, const nlohmann::json& log, const char* command);
 
 }  // namespace fairsurf::cli
