@@ -40,7 +40,8 @@ FlowReport smooth(Mesh& mesh, const SmoothOptions& options, const FlowObserver& 
                           std::to_string(options.fixed_vertices.size()) + " fixed vertices)");
 
   FlowOptions flow = options.flow;
-  if (!std::isfinite(flow.end_time) && flow.steady_tolerance <= 0)
+  if (options.default_time && !std::isfinite(flow.end_time) && flow.steady_tolerance <= 0 &&
+      flow.steady_relative_tolerance <= 0)
     flow.end_time = default_smoothing_time(mesh, flow.kind);
   const Region region = make_region(topo, free, Continuity::G2);
   return run_flow(mesh.V, mesh.F, region, flow, observer);

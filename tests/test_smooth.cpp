@@ -114,6 +114,19 @@ TEST_F(CliSmooth, DenoisesASphereAndLogsEverySteps) {
   EXPECT_TRUE(j["steps"][0].contains("seconds"));
 }
 
+// τ = 1e-3 is far above the default time (~5e-9 here): were the default time applied, the first
+// step would be cut to it and the run would stop after one step at "end time".
+TEST_F(CliSmooth, StepsStopsByStepCountNotTheDefaultTime) {
+  const std::string out = (dir_ / "steps.ply").string(), log = (dir_ / "steps.json").string();
+  const auto run = test::run_cli("smooth '" + noisy_ + "' -o '" + out + "' --steps 2 --tau 1e-3 --log '" +
+                                 log + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  std::ifstream in(log);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["stop_reason"], "max steps");
+  EXPECT_EQ(j["accepted_steps"], 2);
+}
+
 TEST_F(CliSmooth, ExitCodes) {
   auto run = test::run_cli("smooth '" + noisy_ + "' -o '" + noisy_ + "'");
   EXPECT_EQ(run.exit_code, 5) << run.out;

@@ -48,6 +48,7 @@ SmoothOptions smooth_options(const SmoothArgs& args, const Mesh& mesh) {
     o.fixed_vertices = read_vertex_indices(args.fixed_file, mesh.num_vertices());
   if (args.steps > 0) {
     o.flow.max_steps = args.steps;
+    o.default_time = false;
   } else if (args.steady) {
     o.flow.steady_tolerance = args.steady_tolerance;
   } else {

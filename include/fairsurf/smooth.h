@@ -17,9 +17,11 @@
 namespace fairsurf {
 
 struct SmoothOptions {
-  /// The flow and its stopping rule. With no stopping rule of its own (end_time infinite, no
-  /// steady tolerance) the flow runs for default_smoothing_time().
+  /// The flow and its stopping rule: max_steps, end_time, steady_tolerance (flow.h).
   FlowOptions flow;
+  /// When flow.end_time is infinite and no steady tolerance is set, run for
+  /// default_smoothing_time(). Set it to false to stop by flow.max_steps alone.
+  bool default_time = true;
   /// Rings of vertices held fixed along the mesh border (1 = the border vertices themselves). Three
   /// carry G2 data for the sixth-order flow; 0 lets the border move with one-sided fits.
   int fixed_rings = 3;
