@@ -1,10 +1,14 @@
 #include <fairsurf/blend.h>
 #include <fairsurf/errors.h>
+#include <fairsurf/membrane.h>
 #include <fairsurf/topology.h>
 #include <fairsurf/tube.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 
 namespace fairsurf {
@@ -41,6 +45,38 @@ Eigen::Index append_rows(Eigen::PlainObjectBase<Derived>& out, const Eigen::Plai
   return a.rows();
 }
 
+// Worst 4√3·area / Σ edge² over faces [first_face, #F).
+double worst_quality(const Mesh& mesh, int first_face) {
+  double worst = 1.0;
+  for (int f = first_face; f < mesh.num_faces(); ++f) {
+    const Eigen::RowVector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+    const double squares = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+    const double doubled_area = (b - a).cross(c - a).norm();
+    worst = std::min(worst, squares > 0 ? 2.0 * std::sqrt(3.0) * doubled_area / squares : 0.0);
+  }
+  return worst;
+}
+
+// The Hermite tube, relaxed to the G0 membrane when asked and when the membrane does not pinch off.
+InitialPatch initial_tube(const Mesh& mesh, const std::vector<int>& loop_a, const std::vector<int>& loop_b,
+                          const BlendOptions& options, BlendReport& report) {
+  PatchOptions hermite = options.patch;
+  hermite.relax = false;
+  InitialPatch patch = tube_patch(mesh, loop_a, loop_b, hermite);
+  report.hermite_quality = worst_quality(patch.mesh, patch.first_patch_face);
+  if (!options.patch.relax || patch.free_vertices.empty()) return patch;
+  Vertices relaxed = patch.mesh.V;
+  MembraneReport membrane = relax_membrane(relaxed, patch.mesh.F, patch.free_vertices, options.patch.membrane);
+  std::swap(relaxed, patch.mesh.V);
+  report.membrane_quality = worst_quality(patch.mesh, patch.first_patch_face);
+  report.relaxed = report.membrane_quality >= options.pinch_quality_ratio * report.hermite_quality;
+  if (report.relaxed)
+    patch.membrane = std::move(membrane);
+  else
+    std::swap(relaxed, patch.mesh.V);
+  return patch;
+}
+
 }  // namespace
 
 Mesh concatenate_meshes(const Mesh& first, const Mesh& second) {
@@ -60,8 +96,11 @@ Mesh concatenate_meshes(const Mesh& first, const Mesh& second) {
   return out;
 }
 
-ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
-                                             const std::vector<int>& free_vertices, int rings) {
+namespace {
+
+// measure_continuity on the faces within `rings` rings of `loop`, at the vertices `at` only.
+ContinuityMeasure measure_near_loop(const Mesh& mesh, const std::vector<int>& loop, int rings,
+                                    const std::vector<int>& free_vertices, const std::vector<int>& at) {
   const Topology topo = build_topology(mesh.F, mesh.num_vertices());
   const std::vector<int> distance = ring_distances(topo, loop, rings);
   std::vector<int> local(mesh.num_vertices(), -1);
@@ -79,10 +118,31 @@ ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector
   }
   Faces F(static_cast<int>(faces.size()), 3);
   for (int f = 0; f < F.rows(); ++f) F.row(f) = faces[f];
-  std::vector<int> free_local;
-  for (int v : free_vertices)
-    if (local[v] >= 0) free_local.push_back(local[v]);
-  return measure_continuity(V, F, free_local);
+  const auto to_local = [&local](const std::vector<int>& vertices) {
+    std::vector<int> out;
+    for (int v : vertices)
+      if (local[v] >= 0) out.push_back(local[v]);
+    return out;
+  };
+  return measure_continuity(V, F, to_local(free_vertices), to_local(at));
+}
+
+// The measurement on the untouched input: the vertices fewer than `offset` rings from the loop
+// play the free region, those at `offset` rings are measured.
+ContinuityMeasure reference_at_loop(const Mesh& input, const std::vector<int>& loop, int offset, int rings) {
+  const Topology topo = build_topology(input.F, input.num_vertices());
+  const std::vector<int> distance = ring_distances(topo, loop, offset);
+  std::vector<int> inner, line;
+  for (int v = 0; v < input.num_vertices(); ++v)
+    if (distance[v] >= 0) (distance[v] < offset ? inner : line).push_back(v);
+  return measure_near_loop(input, loop, offset + rings, inner, line);
+}
+
+}  // namespace
+
+ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
+                                             const std::vector<int>& free_vertices, int rings) {
+  return measure_near_loop(mesh, loop, rings, free_vertices, loop);
 }
 
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObserver& observer) {
@@ -102,7 +162,11 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
   report.b.index = pair.second;
   report.b.length = static_cast<int>(loop_b.size());
 
-  InitialPatch patch = tube_patch(mesh, loop_a, loop_b, options.patch);
+  if (options.reference_ring > 0) {
+    report.a.reference = reference_at_loop(mesh, loop_a, options.reference_ring, options.measure_rings);
+    report.b.reference = reference_at_loop(mesh, loop_b, options.reference_ring, options.measure_rings);
+  }
+  InitialPatch patch = initial_tube(mesh, loop_a, loop_b, options, report);
   report.tube_vertices = patch.mesh.num_vertices() - mesh.num_vertices();
   report.tube_faces = patch.mesh.num_faces() - patch.first_patch_face;
   report.tube_rings = patch.tube.rings;
