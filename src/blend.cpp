@@ -45,11 +45,11 @@ Eigen::Index append_rows(Eigen::PlainObjectBase<Derived>& out, const Eigen::Plai
   return a.rows();
 }
 
-// Worst 4√3·area / Σ edge² over faces [first_face, #F).
-double worst_quality(const Mesh& mesh, int first_face) {
+// Worst 4√3·area / Σ edge² over faces [first_face, #F) of (V, F).
+double worst_quality(const Vertices& V, const Faces& F, int first_face) {
   double worst = 1.0;
-  for (int f = first_face; f < mesh.num_faces(); ++f) {
-    const Eigen::RowVector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+  for (Eigen::Index f = first_face; f < F.rows(); ++f) {
+    const Eigen::RowVector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
     const double squares = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
     const double doubled_area = (b - a).cross(c - a).norm();
     worst = std::min(worst, squares > 0 ? 2.0 * std::sqrt(3.0) * doubled_area / squares : 0.0);
@@ -63,40 +63,19 @@ InitialPatch initial_tube(const Mesh& mesh, const std::vector<int>& loop_a, cons
   PatchOptions hermite = options.patch;
   hermite.relax = false;
   InitialPatch patch = tube_patch(mesh, loop_a, loop_b, hermite);
-  report.hermite_quality = worst_quality(patch.mesh, patch.first_patch_face);
+  const Faces& F = patch.mesh.F;
+  report.hermite_quality = worst_quality(patch.mesh.V, F, patch.first_patch_face);
   if (!options.patch.relax || patch.free_vertices.empty()) return patch;
   Vertices relaxed = patch.mesh.V;
-  MembraneReport membrane = relax_membrane(relaxed, patch.mesh.F, patch.free_vertices, options.patch.membrane);
-  std::swap(relaxed, patch.mesh.V);
-  report.membrane_quality = worst_quality(patch.mesh, patch.first_patch_face);
+  MembraneReport membrane = relax_membrane(relaxed, F, patch.free_vertices, options.patch.membrane);
+  report.membrane_quality = worst_quality(relaxed, F, patch.first_patch_face);
   report.relaxed = report.membrane_quality >= options.pinch_quality_ratio * report.hermite_quality;
-  if (report.relaxed)
+  if (report.relaxed) {
+    patch.mesh.V = std::move(relaxed);
     patch.membrane = std::move(membrane);
-  else
-    std::swap(relaxed, patch.mesh.V);
+  }
   return patch;
 }
-
-}  // namespace
-
-Mesh concatenate_meshes(const Mesh& first, const Mesh& second) {
-  Mesh out;
-  append_rows(out.V, first.V, second.V);
-  Faces shifted = second.F.array() + first.num_vertices();
-  append_rows(out.F, first.F, shifted);
-  for (const auto& [name, values] : first.vertex_scalars) {
-    const auto other = second.vertex_scalars.find(name);
-    if (other == second.vertex_scalars.end()) continue;
-    Eigen::VectorXd joined(values.size() + other->second.size());
-    joined << values, other->second;
-    out.vertex_scalars[name] = joined;
-  }
-  if (first.vertex_colors.rows() > 0 && second.vertex_colors.rows() > 0)
-    append_rows(out.vertex_colors, first.vertex_colors, second.vertex_colors);
-  return out;
-}
-
-namespace {
 
 // measure_continuity on the faces within `rings` rings of `loop`, at the vertices `at` only.
 ContinuityMeasure measure_near_loop(const Mesh& mesh, const std::vector<int>& loop, int rings,
@@ -139,6 +118,23 @@ ContinuityMeasure reference_at_loop(const Mesh& input, const std::vector<int>& l
 }
 
 }  // namespace
+
+Mesh concatenate_meshes(const Mesh& first, const Mesh& second) {
+  Mesh out;
+  append_rows(out.V, first.V, second.V);
+  Faces shifted = second.F.array() + first.num_vertices();
+  append_rows(out.F, first.F, shifted);
+  for (const auto& [name, values] : first.vertex_scalars) {
+    const auto other = second.vertex_scalars.find(name);
+    if (other == second.vertex_scalars.end()) continue;
+    Eigen::VectorXd joined(values.size() + other->second.size());
+    joined << values, other->second;
+    out.vertex_scalars[name] = joined;
+  }
+  if (first.vertex_colors.rows() > 0 && second.vertex_colors.rows() > 0)
+    append_rows(out.vertex_colors, first.vertex_colors, second.vertex_colors);
+  return out;
+}
 
 ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
                                              const std::vector<int>& free_vertices, int rings) {

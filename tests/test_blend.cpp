@@ -119,7 +119,7 @@ TEST(Blend, Fig3JumpsFallUnderRefinement) {
 // Real data: the three blobby pieces, joined where their borders face each other (both pairs).
 // Their mesh is coarse for its curvature (edge × curvature up to 0.4), so one-sided fits read up to
 // 15° and an H jump of 25 on the untouched input 3 rings from each loop; the blend's borders read
-// the same (mean angle within 1.5 times the input's), the G0 membrane 3 to 7 times more.
+// the same (mean angle within 1.5 times the input's), a G0 blend 3 to 6 times more.
 TEST(Blend, BlobbyPiecesJoinIntoOneClosedSurface) {
   Mesh m = read_mesh(test::data_path("cgal_blobby_3cc.off"));
   EXPECT_EQ(loop_count(m), 4);
