@@ -224,6 +224,17 @@ TEST(Blend, ConcatenationKeepsTheFirstMeshFirst) {
   EXPECT_EQ(Faces(c.F.bottomRows(80).array() - 12), b.F);
 }
 
+TEST(Blend, ContinuityAtAVertexOutOfRangeIsRefused) {
+  const Mesh sphere = icosphere(1);
+  const std::vector<int> free{0}, at{42};
+  try {
+    measure_continuity(sphere.V, sphere.F, free, at);
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "measure_continuity: vertex 42 is out of range");
+  }
+}
+
 TEST(Blend, ClearErrors) {
   Mesh closed = icosphere(1);
   try {

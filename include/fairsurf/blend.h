@@ -2,9 +2,9 @@
 //
 // Two boundary loops of one mesh — or of two meshes concatenated first (concatenate_meshes) — are
 // joined by an initial tube (patch.h's tube_patch: loops aligned, Hermite rings, zipper strips,
-// refinement to the surrounding edge length, G0 membrane), and the tube's new vertices are faired
-// by fair_region (fair_region.h): by default the sixth-order flow of f = H to a steady state with
-// the three rings of each surface around the loops as G2 boundary data.
+// refinement to the surrounding edge length, then the G0 membrane unless it pinches off), and the
+// tube's new vertices are faired by fair_region (fair_region.h): by default the sixth-order flow of
+// f = H to a steady state with the three rings of each surface around the loops as G2 boundary data.
 //
 // Loops are numbered in topology.h's boundary_loops order (sorted by their smallest vertex index).
 // Both surfaces must be oriented alike across the tube (tube.h): two outward-oriented pieces, or
