@@ -230,6 +230,7 @@ std::vector<Neighbourhood> topological_neighbourhoods(const Topology& topo,
                                                       const std::vector<char>& fitted) {
   const auto border = irregular_edge_vertices(topo);
   std::vector<Neighbourhood> choice(topo.num_vertices, Neighbourhood::kNotFitted);
+#pragma omp parallel for schedule(static)
   for (int i = 0; i < topo.num_vertices; ++i) {
     if (!fitted[i]) continue;
     if (border[i])
