@@ -19,9 +19,10 @@
 //   willmore           J = −½ L∆ A_H          (the cubic term 2H(H² − K) is explicit)
 // with A_H = L∆ ∘ (n_i·n_j), A_K = L□ ∘ (n_i·n_j) (operators.h normal_weighted). Fits and operators
 // are re-evaluated every step at every vertex (fixed vertices of rings 1–2 see the free ones); only
-// the free rows and columns are solved. The products are Eigen sparse products in this version (a
-// known optimization target: the 3-ring pattern could be assembled in place); J's pattern is fixed
-// while the connectivity is, so the solver analyzes it once and refactors every step.
+// the free rows and columns are solved. J_FF's pattern (the 3-ring stencil for the sixth order, the
+// 2-ring for surface diffusion and Willmore, the 1-ring for mean curvature) is built once per run
+// and its values are computed in place every step, so the solver analyzes it once and refactors
+// every step.
 //
 // Units (METHOD §7). With FlowOptions::normalize (the default) the engine translates and scales the
 // mesh to unit bounding-box diagonal, flows, and scales back: τ, end_time, tau_max and
