@@ -241,18 +241,21 @@ bool FlowRun::solve_step(double tau, StepRecord& record, Eigen::VectorXd& d) {
   }
   flow_detail::form_step_matrix(jacobian_, damping_, tau, step_matrix_);
   record.assembly_seconds = seconds_since(start);
+  double* phase_seconds = &record.factorize_seconds;  // the phase running, timed even if it fails
+  start = Clock::now();
   try {
-    start = Clock::now();
     if (step_matrix_.nonZeros() != analyzed_nonzeros_) {
       solver_->analyze(step_matrix_);
       analyzed_nonzeros_ = step_matrix_.nonZeros();
     }
     solver_->factorize(step_matrix_);
     record.factorize_seconds = seconds_since(start);
+    phase_seconds = &record.solve_seconds;
     start = Clock::now();
     d = solver_->solve(tau * velocity_free_);
     record.solve_seconds = seconds_since(start);
   } catch (const NumericalError& e) {
+    *phase_seconds = seconds_since(start);
     return reject(record, StepRejection::solver, e.what());
   }
   record.solver_iterations = solver_->report().iterations;
