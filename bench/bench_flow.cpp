@@ -9,8 +9,9 @@
 // before the case are printed too: on the shared 2-core machine wall times follow the load.
 // Then the scaling exponents of the step time and peak memory (pairwise and a least-squares fit)
 // and their extrapolation to 1M vertices: ~1M is not run, MUMPS needs about 6 GB at 655k unknowns
-// (METHOD §5) and the machine is shared. Last, the same 10k step with GMRES + ILUT at the default
-// options and at a larger fill, and with UMFPACK.
+// (METHOD §5) and the machine is shared. Then the 100k case with a frozen Jacobian
+// (FlowOptions::refactor_interval = 2: the second step reuses the first one's factorization). Last,
+// the same 10k step with GMRES + ILUT at the default options and at a larger fill, and with UMFPACK.
 #include <fairsurf/errors.h>
 #include <fairsurf/flow.h>
 
@@ -83,12 +84,10 @@ double cpu_seconds() {
 
 // Runs two steps and prints one line (the failing step's figures and message if a step fails);
 // writes the figures to `out_fd`; the exit code says whether the second step was accepted.
-int run_case(int n, int m, const LinearSolverOptions& solver, const char* label, int out_fd) {
+int run_case(int n, int m, FlowOptions o, const char* label, int out_fd) {
   Mesh mesh = torus(n, m);
-  FlowOptions o;
   o.tau = o.tau_max = 1e-7;
   o.max_steps = 2;
-  o.solver = solver;
   o.step_control.enabled = false;  // time the step, whatever its size
   std::vector<StepRecord> records;
   std::string failure;
@@ -99,12 +98,12 @@ int run_case(int n, int m, const LinearSolverOptions& solver, const char* label,
   }
   const double peak = static_cast<double>(bench::peak_bytes()) / 1e6;
   if (records.empty()) {
-    std::printf("%7d vertices, %-10s: failed: %s\n", n * m, label, failure.c_str());
+    std::printf("%7d vertices, %-15s: failed: %s\n", n * m, label, failure.c_str());
     return 1;
   }
   const StepRecord& s = records.back();
   const double total = s.fit_seconds + s.assembly_seconds + s.factorize_seconds + s.solve_seconds;
-  std::printf("%7d vertices, %-10s: step %d: fit+operators %.3f s, assembly %.3f s, factorize %.3f s "
+  std::printf("%7d vertices, %-15s: step %d: fit+operators %.3f s, assembly %.3f s, factorize %.3f s "
               "(first step with analysis %.3f s), solve %.3f s, step %.3f s; ",
               n * m, label, s.step, s.fit_seconds, s.assembly_seconds, s.factorize_seconds,
               records.front().factorize_seconds, s.solve_seconds, total);
@@ -118,13 +117,13 @@ int run_case(int n, int m, const LinearSolverOptions& solver, const char* label,
 }
 
 // The case's figures measured in a forked child (NaN where it failed).
-CaseFigures in_child(int n, int m, const LinearSolverOptions& solver, const char* label) {
+CaseFigures in_child(int n, int m, const FlowOptions& options, const char* label) {
   std::fflush(stdout);
   CaseFigures figures;
   int fds[2];
   if (::pipe(fds) != 0) return figures;
   const pid_t child = ::fork();
-  if (child == 0) ::_exit(run_case(n, m, solver, label, fds[1]));
+  if (child == 0) ::_exit(run_case(n, m, options, label, fds[1]));
   ::close(fds[1]);
   if (::read(fds[0], &figures, sizeof figures) != sizeof figures) figures = CaseFigures{};
   ::close(fds[0]);
@@ -168,22 +167,26 @@ int main() {
   const std::vector<std::pair<int, int>> grids = {{160, 64}, {320, 128}, {500, 200}, {640, 256}};
   std::vector<double> sizes, seconds, megabytes;
   for (const auto& [n, m] : grids) {
-    const CaseFigures f = in_child(n, m, LinearSolverOptions{}, "mumps");
+    const CaseFigures f = in_child(n, m, FlowOptions{}, "mumps");
     if (std::isfinite(f.step_seconds))
       sizes.push_back(n * m), seconds.push_back(f.step_seconds), megabytes.push_back(f.peak_megabytes);
   }
   print_scaling("step time", "s", sizes, seconds);
   print_scaling("peak memory", "MB", sizes, megabytes);
+  // The frozen Jacobian: the second step reuses the first one's factorization (same τ).
+  FlowOptions frozen;
+  frozen.refactor_interval = 2;
+  in_child(500, 200, frozen, "mumps, frozen J");
 
-  LinearSolverOptions gmres;
-  gmres.kind = LinearSolverKind::gmres;
+  FlowOptions gmres;
+  gmres.solver.kind = LinearSolverKind::gmres;
   in_child(160, 64, gmres, "gmres");
-  gmres.ilut_fill_factor = kLargeFill;
-  gmres.ilut_drop_tolerance = kLargeFillDrop;
-  gmres.gmres_tolerance = kLargeFillGmresTolerance;
+  gmres.solver.ilut_fill_factor = kLargeFill;
+  gmres.solver.ilut_drop_tolerance = kLargeFillDrop;
+  gmres.solver.gmres_tolerance = kLargeFillGmresTolerance;
   in_child(160, 64, gmres, "gmres+fill");
-  LinearSolverOptions umfpack;
-  umfpack.kind = LinearSolverKind::umfpack;
+  FlowOptions umfpack;
+  umfpack.solver.kind = LinearSolverKind::umfpack;
   in_child(160, 64, umfpack, "umfpack");
   return 0;
 }

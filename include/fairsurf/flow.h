@@ -124,6 +124,11 @@ struct FlowOptions {
   /// Fixed rings along the mesh border when run_flow is given no region (smoothing an open mesh).
   int border_fixed_rings = 3;
 
+  /// Frozen Jacobian (METHOD §5): one assembly and factorization of I − τJ serves up to this many
+  /// accepted steps while τ is unchanged (at tau_max, or with a fixed τ); every step still solves
+  /// with the current velocity V, so steady states are those of the exact step. 1: J is assembled
+  /// and factorized at every step.
+  int refactor_interval = 1;
   LinearSolverOptions solver;
   FitOptions fit;
 };
@@ -144,6 +149,7 @@ struct StepRecord {
   bool accepted = false;
   StepRejection rejection = StepRejection::none;
   std::string detail;           ///< what was rejected, e.g. "|d| 0.031 > 0.25 · 0.1 at vertex 17"
+  bool refactorized = false;    ///< J assembled and factorized for this step (not reused)
   int solver_iterations = 0;    ///< GMRES iterations (0 for direct solvers)
   double backward_error = 0;    ///< of the linear solve
   // Wall-clock seconds of the step's phases.
