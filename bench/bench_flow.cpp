@@ -1,22 +1,29 @@
 // One sixth-order step (f = H) of run_flow on regular torus grids (R = 1, r = 0.4, valence 6) of about
 // 10k, 41k, 100k and 164k vertices, with the phases of the step timed separately from its StepRecord:
-// fits + operators + energy at the trial state, assembly of J and I − τJ (Eigen sparse products),
-// factorization, solve. Each case flows two steps at a fixed τ = 1e-7 (unit-diagonal units; r = 0.1 there, so τ = 0.1 r⁶ and τ/h⁶ ≈ 1e7 at 100k) and
-// reports the second, so the one-off analysis and first fits are excluded; the first step's
-// factorize time (analysis included) is printed beside. Each case runs in a forked child, so that
-// VmHWM is the case's own peak memory. Then MUMPS against GMRES + ILUT on the 10k step.
-// ~1M vertices is not run: MUMPS needs about 6 GB at 655k unknowns (METHOD §5) and the machine is
-// shared; the measured exponent extrapolates it.
+// fits + operators + energy at the trial state, assembly of J (pattern built once, values in place)
+// and I − τJ, factorization, solve. Each case flows two steps at a fixed τ = 1e-7 (unit-diagonal
+// units; r = 0.1 there, so τ = 0.1 r⁶ and τ/h⁶ ≈ 1e7 at 100k) and reports the second, so the one-off
+// analysis, symbolic assembly and first fits are excluded; the first step's factorize time
+// (analysis included) is printed beside. Each case runs in a forked child, so that VmHWM is the
+// case's own peak memory; the child's CPU seconds (both steps, all threads) and the load average
+// before the case are printed too: on the shared 2-core machine wall times follow the load.
+// Then the scaling exponents of the step time and peak memory (pairwise and a least-squares fit)
+// and their extrapolation to 1M vertices: ~1M is not run, MUMPS needs about 6 GB at 655k unknowns
+// (METHOD §5) and the machine is shared. Then the 100k case with a frozen Jacobian
+// (FlowOptions::refactor_interval = 2: the second step reuses the first one's factorization). Last,
+// the same 10k step with GMRES + ILUT at the default options and at a larger fill, and with UMFPACK.
 #include <fairsurf/errors.h>
 #include <fairsurf/flow.h>
 
 #include "process_memory.h"
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <numbers>
 #include <string>
@@ -48,64 +55,138 @@ Mesh torus(int n, int m) {
   return mesh;
 }
 
-// Runs two steps and prints one line; writes the step's seconds to `out_fd`; the exit code says
-// whether the second step was accepted.
-int run_case(int n, int m, LinearSolverKind solver, int out_fd) {
+// GMRES + ILUT with a larger fill than the default (20, drop 1e-5, which stalls near a relative
+// residual of 1e-4 on this step): METHOD §5 says ILU needs near-complete fill on this matrix. GMRES's
+// own target is loosened to 1e-8: the backward-error check (1e-12) is what accepts the solution.
+constexpr int kLargeFill = 40;
+constexpr double kLargeFillDrop = 1e-6;
+constexpr double kLargeFillGmresTolerance = 1e-8;
+
+// What a case's child reports to the parent.
+struct CaseFigures {
+  double step_seconds = NAN;
+  double peak_megabytes = NAN;
+};
+
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string one, five;
+  in >> one >> five;
+  return one + " " + five;
+}
+
+double cpu_seconds() {
+  rusage usage{};
+  ::getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+// Runs two steps and prints one line (the failing step's figures and message if a step fails);
+// writes the figures to `out_fd`; the exit code says whether the second step was accepted.
+int run_case(int n, int m, FlowOptions o, const char* label, int out_fd) {
   Mesh mesh = torus(n, m);
-  FlowOptions o;
   o.tau = o.tau_max = 1e-7;
   o.max_steps = 2;
-  o.solver.kind = solver;
   o.step_control.enabled = false;  // time the step, whatever its size
   std::vector<StepRecord> records;
+  std::string failure;
   try {
     run_flow(mesh.V, mesh.F, o, [&](const StepRecord& s) { records.push_back(s); });
   } catch (const Error& e) {
-    std::printf("%7d vertices, %-7s: failed: %s\n", n * m, to_string(solver), e.what());
-    std::fflush(stdout);
+    failure = e.what();
+  }
+  const double peak = static_cast<double>(bench::peak_bytes()) / 1e6;
+  if (records.empty()) {
+    std::printf("%7d vertices, %-15s: failed: %s\n", n * m, label, failure.c_str());
     return 1;
   }
   const StepRecord& s = records.back();
   const double total = s.fit_seconds + s.assembly_seconds + s.factorize_seconds + s.solve_seconds;
-  std::printf("%7d vertices, %-7s: fit+operators %.3f s, assembly %.3f s, factorize %.3f s (first "
-              "step with analysis %.3f s), solve %.3f s, step %.3f s; iterations %d, backward error "
-              "%.1e; peak %.0f MB\n",
-              n * m, to_string(solver), s.fit_seconds, s.assembly_seconds, s.factorize_seconds,
-              records.front().factorize_seconds, s.solve_seconds, total, s.solver_iterations, s.backward_error,
-              static_cast<double>(bench::peak_bytes()) / 1e6);
+  std::printf("%7d vertices, %-15s: step %d: fit+operators %.3f s, assembly %.3f s, factorize %.3f s "
+              "(first step with analysis %.3f s), solve %.3f s, step %.3f s; ",
+              n * m, label, s.step, s.fit_seconds, s.assembly_seconds, s.factorize_seconds,
+              records.front().factorize_seconds, s.solve_seconds, total);
+  if (failure.empty())
+    std::printf("iterations %d, backward error %.1e; ", s.solver_iterations, s.backward_error);
+  std::printf("peak %.0f MB; CPU %.1f s; load %s\n", peak, cpu_seconds(), load_average().c_str());
+  if (!failure.empty()) std::printf("%7s  failed: %s\n", "", failure.c_str());
   std::fflush(stdout);
-  return ::write(out_fd, &total, sizeof total) == sizeof total ? 0 : 1;
+  const CaseFigures figures{failure.empty() ? total : NAN, peak};
+  return ::write(out_fd, &figures, sizeof figures) == sizeof figures && failure.empty() ? 0 : 1;
 }
 
-// The step's seconds measured in a forked child, or NaN if it failed.
-double in_child(int n, int m, LinearSolverKind solver) {
+// The case's figures measured in a forked child (NaN where it failed).
+CaseFigures in_child(int n, int m, const FlowOptions& options, const char* label) {
   std::fflush(stdout);
+  CaseFigures figures;
   int fds[2];
-  if (::pipe(fds) != 0) return NAN;
+  if (::pipe(fds) != 0) return figures;
   const pid_t child = ::fork();
-  if (child == 0) ::_exit(run_case(n, m, solver, fds[1]));
+  if (child == 0) ::_exit(run_case(n, m, options, label, fds[1]));
   ::close(fds[1]);
-  double seconds = NAN;
-  if (::read(fds[0], &seconds, sizeof seconds) != sizeof seconds) seconds = NAN;
+  if (::read(fds[0], &figures, sizeof figures) != sizeof figures) figures = CaseFigures{};
   ::close(fds[0]);
   int status = 0;
   ::waitpid(child, &status, 0);
-  return seconds;
+  return figures;
+}
+
+// Least-squares slope of log y against log x.
+double fitted_exponent(const std::vector<double>& x, const std::vector<double>& y) {
+  double mx = 0, my = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) mx += std::log(x[k]), my += std::log(y[k]);
+  mx /= static_cast<double>(x.size());
+  my /= static_cast<double>(x.size());
+  double sxy = 0, sxx = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    sxy += (std::log(x[k]) - mx) * (std::log(y[k]) - my);
+    sxx += (std::log(x[k]) - mx) * (std::log(x[k]) - mx);
+  }
+  return sxy / sxx;
+}
+
+void print_scaling(const char* what, const char* unit, const std::vector<double>& sizes,
+                   const std::vector<double>& values) {
+  if (sizes.size() < 2) return;
+  std::printf("%s exponent:", what);
+  for (std::size_t k = 1; k < sizes.size(); ++k)
+    std::printf(" %.2f (%.0fk -> %.0fk)", std::log(values[k] / values[k - 1]) / std::log(sizes[k] / sizes[k - 1]),
+                sizes[k - 1] / 1e3, sizes[k] / 1e3);
+  const double exponent = fitted_exponent(sizes, values);
+  constexpr double kMillion = 1e6;
+  std::printf("; fit %.2f, extrapolated to 1M vertices: %.3g %s\n", exponent,
+              values.back() * std::pow(kMillion / sizes.back(), exponent), unit);
 }
 
 }  // namespace
 
 int main() {
+  const char* blas_threads = std::getenv("OPENBLAS_NUM_THREADS");
+  std::printf("OPENBLAS_NUM_THREADS=%s\n", blas_threads ? blas_threads : "(unset: one thread a core)");
   const std::vector<std::pair<int, int>> grids = {{160, 64}, {320, 128}, {500, 200}, {640, 256}};
-  std::vector<double> sizes, seconds;
+  std::vector<double> sizes, seconds, megabytes;
   for (const auto& [n, m] : grids) {
-    const double t = in_child(n, m, LinearSolverKind::mumps);
-    if (std::isfinite(t)) sizes.push_back(n * m), seconds.push_back(t);
+    const CaseFigures f = in_child(n, m, FlowOptions{}, "mumps");
+    if (std::isfinite(f.step_seconds))
+      sizes.push_back(n * m), seconds.push_back(f.step_seconds), megabytes.push_back(f.peak_megabytes);
   }
-  for (std::size_t k = 1; k < sizes.size(); ++k)
-    std::printf("scaling exponent %d -> %d vertices: %.2f\n", static_cast<int>(sizes[k - 1]),
-                static_cast<int>(sizes[k]), std::log(seconds[k] / seconds[k - 1]) / std::log(sizes[k] / sizes[k - 1]));
-  in_child(160, 64, LinearSolverKind::gmres);
-  in_child(160, 64, LinearSolverKind::umfpack);
+  print_scaling("step time", "s", sizes, seconds);
+  print_scaling("peak memory", "MB", sizes, megabytes);
+  // The frozen Jacobian: the second step reuses the first one's factorization (same τ).
+  FlowOptions frozen;
+  frozen.refactor_interval = 2;
+  in_child(500, 200, frozen, "mumps, frozen J");
+
+  FlowOptions gmres;
+  gmres.solver.kind = LinearSolverKind::gmres;
+  in_child(160, 64, gmres, "gmres");
+  gmres.solver.ilut_fill_factor = kLargeFill;
+  gmres.solver.ilut_drop_tolerance = kLargeFillDrop;
+  gmres.solver.gmres_tolerance = kLargeFillGmresTolerance;
+  in_child(160, 64, gmres, "gmres+fill");
+  FlowOptions umfpack;
+  umfpack.solver.kind = LinearSolverKind::umfpack;
+  in_child(160, 64, umfpack, "umfpack");
   return 0;
 }

@@ -43,6 +43,7 @@ void check_options(const FlowOptions& o) {
   else if (!(o.curvature_scale >= 0)) problem = "curvature_scale must be non-negative";
   else if (!(o.runaway_energy_factor > 1)) problem = "runaway_energy_factor must exceed 1";
   else if (o.border_fixed_rings < 0) problem = "border_fixed_rings must be non-negative";
+  else if (o.refactor_interval < 1) problem = "refactor_interval must be at least 1";
   else if (!(c.max_displacement_ratio > 0)) problem = "step_control.max_displacement_ratio must be positive";
   else if (std::isnan(c.jacobian_dominance)) problem = "step_control.jacobian_dominance must not be NaN";
   else if (!(c.max_energy_growth >= 1)) problem = "step_control.max_energy_growth must be at least 1";
@@ -145,6 +146,10 @@ class FlowRun {
   SparseOperator jacobian_, step_matrix_;
   Eigen::VectorXd damping_;  // what leaves J's diagonal in the step matrix (row_damping)
   bool jacobian_current_ = false;
+  // The solver's factorization: valid, of I − τJ at this τ, accepted steps since it was made.
+  bool factorized_ = false;
+  double factorized_tau_ = 0;
+  int factorization_age_ = 0;
 };
 
 void FlowRun::initialize() {
@@ -209,6 +214,7 @@ void FlowRun::accept_current_state() {
   report_.final_energy = state_.energy;
   report_.final_max_velocity = state_.max_velocity;
   jacobian_current_ = false;
+  ++factorization_age_;
 }
 
 void FlowRun::write_back() const {
@@ -228,31 +234,45 @@ bool FlowRun::reject(StepRecord& record, StepRejection why, std::string detail) 
 }
 
 bool FlowRun::solve_step(double tau, StepRecord& record, Eigen::VectorXd& d) {
+  const bool reuse =
+      factorized_ && tau == factorized_tau_ && factorization_age_ < options_.refactor_interval;
   auto start = Clock::now();
-  if (!jacobian_current_) {
-    flow_detail::assemble_jacobian(problem_, state_, work_, jacobian_);
-    // Without step control the step is the plain (I − τJ) d = τV of METHOD §5.
-    const auto& control = options_.step_control;
-    flow_detail::row_damping(jacobian_,
-                             control.enabled ? control.jacobian_dominance
-                                             : -std::numeric_limits<double>::infinity(),
-                             damping_);
-    jacobian_current_ = true;
-  }
-  flow_detail::form_step_matrix(jacobian_, damping_, tau, step_matrix_);
-  record.assembly_seconds = seconds_since(start);
-  try {
-    start = Clock::now();
-    if (step_matrix_.nonZeros() != analyzed_nonzeros_) {
-      solver_->analyze(step_matrix_);
-      analyzed_nonzeros_ = step_matrix_.nonZeros();
+  if (!reuse) {
+    factorized_ = false;
+    if (!jacobian_current_) {
+      flow_detail::assemble_jacobian(problem_, state_, work_, jacobian_);
+      // Without step control the step is the plain (I − τJ) d = τV of METHOD §5.
+      const auto& control = options_.step_control;
+      flow_detail::row_damping(jacobian_,
+                               control.enabled ? control.jacobian_dominance
+                                               : -std::numeric_limits<double>::infinity(),
+                               damping_);
+      jacobian_current_ = true;
     }
-    solver_->factorize(step_matrix_);
-    record.factorize_seconds = seconds_since(start);
-    start = Clock::now();
+    flow_detail::form_step_matrix(jacobian_, damping_, tau, step_matrix_);
+    record.assembly_seconds = seconds_since(start);
+  }
+  // The phase running, timed even if it fails.
+  double* phase_seconds = reuse ? &record.solve_seconds : &record.factorize_seconds;
+  start = Clock::now();
+  try {
+    if (!reuse) {
+      if (step_matrix_.nonZeros() != analyzed_nonzeros_) {
+        solver_->analyze(step_matrix_);
+        analyzed_nonzeros_ = step_matrix_.nonZeros();
+      }
+      solver_->factorize(step_matrix_);
+      record.factorize_seconds = seconds_since(start);
+      record.refactorized = factorized_ = true;
+      factorized_tau_ = tau;
+      factorization_age_ = 0;
+      phase_seconds = &record.solve_seconds;
+      start = Clock::now();
+    }
     d = solver_->solve(tau * velocity_free_);
     record.solve_seconds = seconds_since(start);
   } catch (const NumericalError& e) {
+    *phase_seconds = seconds_since(start);
     return reject(record, StepRejection::solver, e.what());
   }
   record.solver_iterations = solver_->report().iterations;

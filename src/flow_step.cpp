@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
+
+#include <omp.h>
 
 namespace fairsurf::flow_detail {
 namespace {
@@ -23,34 +26,110 @@ void fill_like(const SparseOperator& L, SparseOperator& out, Value value) {
     for (int p = outer[i]; p < outer[i + 1]; ++p) values[p] = value(i, inner[p], p);
 }
 
-// #F by #V selection of the free rows.
-void build_selection(const Region& region, int num_vertices, SparseOperator& select) {
-  if (region.num_free() == num_vertices) {
-    select.resize(0, 0);
-    return;
+// Appends to `inner` the columns of P's row at vertex i (P = R L∆ − W: L∆'s 2-ring, which holds its
+// 1-ring; P = L∆: its 1-ring; P = I: i), sorted. `mark` (#V) remembers the row that last took a column.
+void append_left_row(FlowKind kind, const SparseOperator& L, int i, int row, std::vector<int>& mark,
+                     std::vector<int>& inner) {
+  const int* outer = L.outerIndexPtr();
+  const int* column = L.innerIndexPtr();
+  const auto begin = static_cast<std::ptrdiff_t>(inner.size());
+  const auto take = [&](int k) {
+    if (mark[k] != row) mark[k] = row, inner.push_back(k);
+  };
+  take(i);
+  if (kind != FlowKind::mean_curvature)
+    for (int p = outer[i]; p < outer[i + 1]; ++p) {
+      take(column[p]);
+      if (kind == FlowKind::sixth_order)
+        for (int q = outer[column[p]]; q < outer[column[p] + 1]; ++q) take(column[q]);
+    }
+  std::sort(inner.begin() + begin, inner.end());
+}
+
+// Symbolic phase: the patterns of P's free rows and of J_FF (free columns k ∈ L∆ row of some column
+// of P's row, and the diagonal, which the step matrix needs), and the scratch of the value loop.
+void build_pattern(FlowKind kind, const SparseOperator& L, const Region& region, JacobianWorkspace& work,
+                   SparseOperator& jacobian) {
+  const int n = static_cast<int>(L.rows());
+  const int num_free = region.num_free();
+  work.left_outer.assign(1, 0);
+  work.left_inner.clear();
+  std::vector<int> mark(n, -1), free_mark(num_free, -1);
+  std::vector<int> outer(1, 0), inner;
+  for (int r = 0; r < num_free; ++r) {
+    append_left_row(kind, L, region.free_vertices[r], r, mark, work.left_inner);
+    work.left_outer.push_back(static_cast<int>(work.left_inner.size()));
+    const auto begin = static_cast<std::ptrdiff_t>(inner.size());
+    const auto take = [&](int j) {
+      if (j >= 0 && free_mark[j] != r) free_mark[j] = r, inner.push_back(j);
+    };
+    take(r);
+    for (int e = work.left_outer[r]; e < work.left_outer[r + 1]; ++e) {
+      const int k = work.left_inner[e];
+      for (int q = L.outerIndexPtr()[k]; q < L.outerIndexPtr()[k + 1]; ++q)
+        take(region.free_index[L.innerIndexPtr()[q]]);
+    }
+    std::sort(inner.begin() + begin, inner.end());
+    outer.push_back(static_cast<int>(inner.size()));
   }
-  if (select.rows() == region.num_free()) return;
-  select.resize(region.num_free(), num_vertices);
-  select.reserve(Eigen::VectorXi::Ones(region.num_free()));
-  for (int k = 0; k < region.num_free(); ++k) select.insert(k, region.free_vertices[k]) = 1.0;
-  select.makeCompressed();
+  std::vector<double> zeros(inner.size(), 0.0);
+  jacobian = Eigen::Map<const SparseOperator>(num_free, num_free, static_cast<Eigen::Index>(inner.size()),
+                                              outer.data(), inner.data(), zeros.data());
+  work.kind = kind;
+  work.free_vertices = region.free_vertices;
+  work.operator_nonzeros = L.nonZeros();
+  work.jacobian_nonzeros = jacobian.nonZeros();
+  work.threads = std::max(1, omp_get_max_threads());
+  work.left_row.assign(static_cast<std::size_t>(work.threads) * n, 0.0);
+  work.column_slot.assign(static_cast<std::size_t>(work.threads) * num_free, 0);
 }
 
-// S·A (free rows) or A itself when every vertex is free.
-SparseOperator free_rows(const SparseOperator& select, const SparseOperator& A) {
-  if (select.rows() == 0) return A;
-  return select * A;
-}
-// A·Sᵀ (free columns).
-SparseOperator free_columns(const SparseOperator& select, const SparseOperator& A) {
-  if (select.rows() == 0) return A;
-  return A * SparseOperator(select.transpose());
+bool pattern_current(FlowKind kind, const SparseOperator& L, const Region& region,
+                     const JacobianWorkspace& work, const SparseOperator& jacobian) {
+  return work.kind == kind && work.operator_nonzeros == L.nonZeros() &&
+         work.free_vertices == region.free_vertices && jacobian.rows() == region.num_free() &&
+         jacobian.nonZeros() == work.jacobian_nonzeros && jacobian.isCompressed();
 }
 
-// J = Σ_l P′_l Q_l, P′ = R L∆ − Σ_c diag(w_c) G_c, R = L∆ diag(f_H) + 2 L□ diag(f_K) + diag(c),
-// w = 2H∇f − 2◇f, Q = ½ diag(f_H) A_H + diag(f_K) A_K.
-void add_sixth_order(const FlowState& state, const EnergyTerms& t, JacobianWorkspace& work,
-                     SparseOperator& jacobian) {
+// J_FF += α P_F: X_:F, X of L∆'s pattern with values `right`. left_row(i, row) adds P's row at vertex
+// i into the dense `row` (#V, zero on entry; only columns of P's pattern). Parallel over J's rows,
+// allocation-free: each thread has its own dense row and column slots.
+template <class LeftRow>
+void add_product(const Region& region, const SparseOperator& L, const double* right, double alpha,
+                 LeftRow left_row, JacobianWorkspace& work, SparseOperator& jacobian) {
+  const int n = static_cast<int>(L.rows());
+  const int num_free = region.num_free();
+  const int* outer = L.outerIndexPtr();
+  const int* column = L.innerIndexPtr();
+  const int* j_outer = jacobian.outerIndexPtr();
+  const int* j_inner = jacobian.innerIndexPtr();
+  double* J = jacobian.valuePtr();
+#pragma omp parallel num_threads(work.threads)
+  {
+    double* row = work.left_row.data() + static_cast<std::size_t>(omp_get_thread_num()) * n;
+    int* slot = work.column_slot.data() + static_cast<std::size_t>(omp_get_thread_num()) * num_free;
+#pragma omp for schedule(dynamic, 256)
+    for (int r = 0; r < num_free; ++r) {
+      for (int p = j_outer[r]; p < j_outer[r + 1]; ++p) slot[j_inner[p]] = p;
+      left_row(region.free_vertices[r], row);
+      for (int e = work.left_outer[r]; e < work.left_outer[r + 1]; ++e) {
+        const int k = work.left_inner[e];
+        const double a = alpha * row[k];
+        row[k] = 0;
+        if (a == 0) continue;
+        for (int q = outer[k]; q < outer[k + 1]; ++q) {
+          const int j = region.free_index[column[q]];
+          if (j >= 0) J[slot[j]] += a * right[q];
+        }
+      }
+    }
+  }
+}
+
+// J += Σ_l P′_l Q_l (free rows and columns), P′ = R L∆ − Σ_c diag(w_c) G_c,
+// R = L∆ diag(f_H) + 2 L□ diag(f_K) + diag(c), w = 2H∇f − 2◇f, Q = ½ diag(f_H) A_H + diag(f_K) A_K.
+void add_sixth_order(const FlowState& state, const Region& region, const EnergyTerms& t,
+                     JacobianWorkspace& work, SparseOperator& jacobian) {
   const SurfaceOperators& ops = state.ops;
   const double* lap = ops.laplace.valuePtr();
   const double* gia = ops.giaquinta.valuePtr();
@@ -72,13 +151,17 @@ void add_sixth_order(const FlowState& state, const EnergyTerms& t, JacobianWorks
   const double* aK = work.A_K.valuePtr();
   fill_like(ops.laplace, work.Q,
             [&](int i, int, int p) { return 0.5 * fH[i] * aH[p] + fK[i] * aK[p]; });
-  SparseOperator P = free_rows(work.select, work.R) * ops.laplace;
-  P -= free_rows(work.select, work.W);
-  const SparseOperator term = P * free_columns(work.select, work.Q);
-  if (jacobian.nonZeros() == 0)
-    jacobian = term;
-  else
-    jacobian += term;
+  const int* outer = ops.laplace.outerIndexPtr();
+  const int* column = ops.laplace.innerIndexPtr();
+  const double* R = work.R.valuePtr();
+  const double* W = work.W.valuePtr();
+  add_product(region, ops.laplace, work.Q.valuePtr(), 1.0, [&](int i, double* row) {
+    for (int p = outer[i]; p < outer[i + 1]; ++p) {
+      const int m = column[p];
+      for (int q = outer[m]; q < outer[m + 1]; ++q) row[column[q]] += R[p] * lap[q];
+      row[m] -= W[p];
+    }
+  }, work, jacobian);
 }
 
 }  // namespace
@@ -136,25 +219,30 @@ void evaluate_flow_terms(const FlowProblem& problem, FlowState& state) {
 void assemble_jacobian(const FlowProblem& problem, const FlowState& state, JacobianWorkspace& work,
                        SparseOperator& jacobian) {
   const SurfaceOperators& ops = state.ops;
-  const int n = static_cast<int>(ops.laplace.rows());
-  build_selection(*problem.region, n, work.select);
+  const Region& region = *problem.region;
+  if (!pattern_current(problem.kind, ops.laplace, region, work, jacobian))
+    build_pattern(problem.kind, ops.laplace, region, work, jacobian);
+  std::fill(jacobian.valuePtr(), jacobian.valuePtr() + jacobian.nonZeros(), 0.0);
   normal_weighted(ops.laplace, ops.geometry.normal, work.A_H);
-  jacobian.resize(problem.region->num_free(), problem.region->num_free());  // and empties it
+  const int* outer = ops.laplace.outerIndexPtr();
+  const int* column = ops.laplace.innerIndexPtr();
+  const double* lap = ops.laplace.valuePtr();
   switch (problem.kind) {
     case FlowKind::sixth_order:
       normal_weighted(ops.giaquinta, ops.geometry.normal, work.A_K);
-      for (const EnergyTerms& t : state.evaluation.terms) add_sixth_order(state, t, work, jacobian);
+      for (const EnergyTerms& t : state.evaluation.terms) add_sixth_order(state, region, t, work, jacobian);
       break;
     case FlowKind::mean_curvature:
-      jacobian = free_columns(work.select, free_rows(work.select, work.A_H));
+      add_product(region, ops.laplace, work.A_H.valuePtr(), 1.0, [](int i, double* row) { row[i] = 1.0; },
+                  work, jacobian);
       break;
     case FlowKind::surface_diffusion:
     case FlowKind::willmore:
-      jacobian = free_rows(work.select, ops.laplace) * free_columns(work.select, work.A_H);
-      jacobian *= -0.5;
+      add_product(region, ops.laplace, work.A_H.valuePtr(), -0.5, [&](int i, double* row) {
+        for (int p = outer[i]; p < outer[i + 1]; ++p) row[column[p]] = lap[p];
+      }, work, jacobian);
       break;
   }
-  jacobian.makeCompressed();
 }
 
 void row_damping(const SparseOperator& jacobian, double dominance, Eigen::VectorXd& damping) {

@@ -11,6 +11,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <vector>
+
 namespace fairsurf::flow_detail {
 
 /// What stays fixed during one run.
@@ -43,10 +45,26 @@ void update_geometry(const Vertices& X, FlowState& state);
 void evaluate_flow_terms(const FlowProblem& problem, FlowState& state);
 
 /// Buffers of the assembly, kept across steps (their patterns are fixed while the connectivity is).
+/// J_FF = α P_F: X_:F with P = R L∆ − W, X = Q (sixth order; one product per function), P = L∆,
+/// X = A_H, α = −½ (surface diffusion, Willmore) or P = I, X = A_H (mean curvature). The patterns
+/// of P's free rows and of J_FF are built once per connectivity, region and kind (symbolic phase);
+/// each step then only computes values, in place: J's pattern is identical between steps, so the
+/// linear solver keeps its analysis.
 struct JacobianWorkspace {
   SparseOperator A_H, A_K;  ///< L∆ ∘ (n_i·n_j), L□ ∘ (n_i·n_j)
   SparseOperator R, W, Q;   ///< the factors of P′ = R L∆ − W and Q (flow.h), L∆'s pattern
-  SparseOperator select;    ///< #F by #V: row k picks free vertex k (empty when every vertex is free)
+
+  // Symbolic phase, and what it was built for.
+  FlowKind kind = FlowKind::sixth_order;
+  std::vector<int> free_vertices;      ///< the region's free vertices (#F)
+  Eigen::Index operator_nonzeros = -1; ///< L∆'s non-zeros
+  Eigen::Index jacobian_nonzeros = -1; ///< J_FF's non-zeros
+  std::vector<int> left_outer, left_inner;  ///< pattern of P's free rows: #F + 1 offsets, vertex columns
+  // Per-thread scratch of the value loop: a dense row of P (#V, kept zero between rows) and the
+  // position of each free column in the current row of J (#F).
+  int threads = 1;
+  std::vector<double> left_row;
+  std::vector<int> column_slot;
 };
 
 /// J_FF (#F by #F, row-major, compressed) of the flow at `state`.

@@ -19,9 +19,10 @@
 //   willmore           J = −½ L∆ A_H          (the cubic term 2H(H² − K) is explicit)
 // with A_H = L∆ ∘ (n_i·n_j), A_K = L□ ∘ (n_i·n_j) (operators.h normal_weighted). Fits and operators
 // are re-evaluated every step at every vertex (fixed vertices of rings 1–2 see the free ones); only
-// the free rows and columns are solved. The products are Eigen sparse products in this version (a
-// known optimization target: the 3-ring pattern could be assembled in place); J's pattern is fixed
-// while the connectivity is, so the solver analyzes it once and refactors every step.
+// the free rows and columns are solved. J_FF's pattern (the 3-ring stencil for the sixth order, the
+// 2-ring for surface diffusion and Willmore, the 1-ring for mean curvature) is built once per run
+// and its values are computed in place every step, so the solver analyzes it once and refactors
+// every step.
 //
 // Units (METHOD §7). With FlowOptions::normalize (the default) the engine translates and scales the
 // mesh to unit bounding-box diagonal, flows, and scales back: τ, end_time, tau_max and
@@ -123,6 +124,11 @@ struct FlowOptions {
   /// Fixed rings along the mesh border when run_flow is given no region (smoothing an open mesh).
   int border_fixed_rings = 3;
 
+  /// Frozen Jacobian (METHOD §5): one assembly and factorization of I − τJ serves up to this many
+  /// accepted steps while τ is unchanged (at tau_max, or with a fixed τ); every step still solves
+  /// with the current velocity V, so steady states are those of the exact step. 1: J is assembled
+  /// and factorized at every step.
+  int refactor_interval = 1;
   LinearSolverOptions solver;
   FitOptions fit;
 };
@@ -143,6 +149,7 @@ struct StepRecord {
   bool accepted = false;
   StepRejection rejection = StepRejection::none;
   std::string detail;           ///< what was rejected, e.g. "|d| 0.031 > 0.25 · 0.1 at vertex 17"
+  bool refactorized = false;    ///< J assembled and factorized for this step (not reused)
   int solver_iterations = 0;    ///< GMRES iterations (0 for direct solvers)
   double backward_error = 0;    ///< of the linear solve
   // Wall-clock seconds of the step's phases.
