@@ -1,12 +1,13 @@
 // Hole filling end to end (fill_holes) against patch size: a unit icosphere with the faces above
-// z = c removed, filled with G2 data by the sixth-order flow (f = H, fair_region's default steady
-// stopping) and by the tri-harmonic baseline. Sizes: ~1k new vertices (5 subdivisions, c = 0.8),
-// ~10k (6, c = 0.5) and ~100k (7, c = −0.2). Each case runs in a forked child, so that VmHWM is the
-// case's own peak memory. Printed per case: new vertices, accepted and rejected steps, mean time of a
-// trial step (fit + assembly + factorization + solve, from the step records), total wall time of
-// fill_holes (triangulation, refinement, membrane, fairing, checks), max|r − 1| over the new
-// vertices, peak memory, and the report's note when the continuity fell back. Pass "small" as the
-// first argument to skip the 100k case, "small harmonic" to run the baseline only.
+// z = c removed, filled with G2 data by the sixth-order flow (f = H, FillOptions defaults: start from
+// the re-evaluated ∆³ solution, first step τ = 1e-2, steady stopping) and by the tri-harmonic
+// baseline. Sizes: ~800 new vertices (5 subdivisions, c = 0.8), ~2.5k (6, 0.84), ~6.5k (6, 0.5),
+// ~10k (7, 0.84) and, with "large", ~100k (8, 0.53). Each case runs in a forked child, so that VmHWM
+// is the case's own peak memory. Printed per case: new vertices, ∆³ solves of the flow's start,
+// accepted steps (trial steps), mean time of a trial step (fit + assembly + factorization + solve,
+// from the step records), total wall time of fill_holes (triangulation, refinement, membrane, ∆³,
+// flow, checks), max|r − 1| over the new vertices, peak memory, and the report's note when the
+// continuity fell back. Arguments: "large" adds the ~100k case, "harmonic" runs the baseline only.
 #include <fairsurf/errors.h>
 #include <fairsurf/fill.h>
 
@@ -69,9 +70,9 @@ int run_case(int subdivisions, double cap, FairMethod method) {
   double deviation = 0;
   for (int v = input_vertices; v < mesh.num_vertices(); ++v)
     deviation = std::max(deviation, std::abs(mesh.V.row(v).norm() - 1.0));
-  std::printf("%7d new vertices (%d subdivisions, cap z > %4.1f), %-8s: %3d steps (%d trials), %.3f s a trial "
-              "step, fill_holes %.2f s; max|r-1| %.2e, max|V| %.2e; peak %.0f MB%s%s\n",
-              h.vertices_added, subdivisions, cap, to_string(method), h.steps, attempts,
+  std::printf("%7d new vertices (%d subdivisions, cap z > %4.2f), %-8s: %d ∆³ solves, %3d steps (%d trials), "
+              "%.3f s a trial step, fill_holes %.2f s; max|r-1| %.2e, max|V| %.2e; peak %.0f MB%s%s\n",
+              h.vertices_added, subdivisions, cap, to_string(method), h.harmonic_solves, h.steps, attempts,
               attempts > 0 ? step_seconds / attempts : 0.0, report.seconds, deviation, h.final_max_velocity,
               static_cast<double>(bench::peak_bytes()) / 1e6, h.note.empty() ? "" : "; ", h.note.c_str());
   return 0;
@@ -92,14 +93,17 @@ void in_child(int subdivisions, double cap, FairMethod method) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool small = argc > 1 && std::strcmp(argv[1], "small") == 0;
-  const bool harmonic_only = argc > 2 && std::strcmp(argv[2], "harmonic") == 0;
+  bool large = false, harmonic_only = false;
+  for (int i = 1; i < argc; ++i) {
+    large = large || std::strcmp(argv[i], "large") == 0;
+    harmonic_only = harmonic_only || std::strcmp(argv[i], "harmonic") == 0;
+  }
   struct Case {
     int subdivisions;
     double cap;
   };
-  std::vector<Case> cases{{5, 0.8}, {6, 0.5}};
-  if (!small) cases.push_back({7, -0.2});
+  std::vector<Case> cases{{5, 0.8}, {6, 0.84}, {6, 0.5}, {7, 0.84}};
+  if (large) cases.push_back({8, 0.53});
   for (const Case& c : cases)
     for (const FairMethod method : {FairMethod::flow, FairMethod::harmonic})
       if (!harmonic_only || method == FairMethod::harmonic) in_child(c.subdivisions, c.cap, method);

@@ -51,12 +51,18 @@ FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
   report.requested = options.continuity;
   report.supported = region.supported;
   report.method = options.method;
+  HarmonicOptions harmonic;
+  harmonic.order = static_cast<int>(region.supported) + 1;
+  harmonic.solver = options.harmonic_solver;
   if (options.method == FairMethod::harmonic) {
-    HarmonicOptions harmonic;
-    harmonic.order = static_cast<int>(region.supported) + 1;
-    harmonic.solver = options.harmonic_solver;
     report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, region, harmonic);
   } else {
+    if (options.harmonic_start_iterations > 0) {
+      HarmonicOptions start = harmonic;
+      start.iterations = options.harmonic_start_iterations;
+      start.tolerance = options.harmonic_start_tolerance;
+      report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, region, start);
+    }
     FlowOptions flow = options.flow;
     flow.kind = report.flow_kind = flow_for(region.supported);
     try {

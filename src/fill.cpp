@@ -190,12 +190,13 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
     };
     fairing = fair_region(sub.mesh, sub.free_local, fairing_options, step_observer);
     const FlowReport& flow = fairing.flow;
-    if (fairing.method == FairMethod::flow && flow.stop_reason != FlowStopReason::steady &&
-        !(flow.final_max_velocity <= flow.initial_max_velocity)) {
+    if (fairing.method == FairMethod::flow && flow.stop_reason != FlowStopReason::steady) {
+      const bool diverged = !(flow.final_max_velocity <= flow.initial_max_velocity);
       char figures[160];
       std::snprintf(figures, sizeof figures, "%d steps without a steady state, max|V| %.3g -> %.3g",
                     flow.accepted_steps, flow.initial_max_velocity, flow.final_max_velocity);
-      return std::string("the ") + to_string(fairing.flow_kind) + " flow diverged (" + figures + ")";
+      return std::string("the ") + to_string(fairing.flow_kind) + " flow " +
+             (diverged ? "diverged" : "did not settle") + " (" + figures + ")";
     }
     write_back_free(sub, patch.mesh.V);
   }
@@ -220,14 +221,8 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
     if (fairing.supported < fairing.requested)
       r.note = "the mesh around the hole has fewer than " + std::to_string(rings_needed(fairing.requested)) +
                " complete rings: faired with " + std::string(to_string(fairing.supported));
-    if (flowed && fairing.flow.stop_reason != FlowStopReason::steady) {
-      char figures[160];
-      std::snprintf(figures, sizeof figures, "max|V| %.3g -> %.3g", fairing.flow.initial_max_velocity,
-                    fairing.flow.final_max_velocity);
-      r.note += std::string(r.note.empty() ? "" : "; ") + "no steady state after " +
-                std::to_string(fairing.flow.accepted_steps) + " steps (" + figures + ")";
-    }
     r.steps = flowed ? fairing.flow.accepted_steps : 0;
+    r.harmonic_solves = fairing.harmonic.iterations;
     r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();
     if (!free.empty()) r.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, to_local(sub, free));
   }
@@ -255,6 +250,13 @@ const char* to_string(HoleStatus status) {
     case HoleStatus::failed: return "failed";
   }
   return "unknown";
+}
+
+FairRegionOptions FillOptions::default_fairing() {
+  FairRegionOptions o;
+  o.harmonic_start_iterations = 8;
+  o.flow.tau = 1e-2;
+  return o;
 }
 
 FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver& observer) {

@@ -363,7 +363,7 @@ FlowReport FlowRun::run() {
   const double relative = options_.steady_relative_tolerance * report_.initial_max_velocity;
   auto steady = [&] {
     return (tolerance > 0 && report_.final_max_velocity <= tolerance) ||
-           (relative > 0 && report_.final_max_velocity <= relative);
+           (options_.steady_relative_tolerance > 0 && report_.final_max_velocity <= relative);
   };
   auto finished = [&] {
     if (steady()) return report_.stop_reason = FlowStopReason::steady, true;

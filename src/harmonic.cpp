@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -35,9 +36,8 @@ namespace {
 // ∆^k x = 0 determines a free vertex only through fixed data reached along free edges; a free
 // component that touches no fixed vertex leaves the system singular (and, with a zero right-hand
 // side, a direct solver may quietly return zeros). Returns such a vertex, or -1.
-int unanchored_free_vertex(const Faces& F, int num_vertices, const Region& region) {
-  const Topology topo = build_topology(F, num_vertices);
-  std::vector<char> seen(num_vertices, 0);
+int unanchored_free_vertex(const Topology& topo, const Region& region) {
+  std::vector<char> seen(topo.num_vertices, 0);
   std::vector<int> stack;
   for (int start : region.free_vertices) {
     if (seen[start]) continue;
@@ -57,16 +57,10 @@ int unanchored_free_vertex(const Faces& F, int num_vertices, const Region& regio
   return -1;
 }
 
-}  // namespace
-
-HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Region& region,
-                             const HarmonicOptions& options) {
-  if (options.order < 1 || options.order > 3)
-    throw InvalidArgument("harmonic_fair: order " + std::to_string(options.order) +
-                          " is not 1, 2 or 3");
-  if (const int v = unanchored_free_vertex(F, static_cast<int>(V.rows()), region); v >= 0)
-    throw InvalidArgument("harmonic_fair: free vertex " + std::to_string(v) +
-                          " is not connected to any fixed vertex, so the fairing is undetermined");
+// The free rows of ∆^k at the current positions: the free-column block (the system, #free by #free)
+// and the fixed columns times the fixed positions moved to the right-hand side (#free by 3).
+void assemble(const Vertices& V, const Faces& F, const Region& region, int order,
+              Eigen::SparseMatrix<double, Eigen::RowMajor>& system, Eigen::MatrixX3d& rhs) {
   const Eigen::SparseMatrix<double> L = cotangent_laplacian(V, F);
   const Eigen::VectorXd areas = vertex_areas(V, F);
   Eigen::VectorXd inverse_mass(areas.size());
@@ -76,12 +70,11 @@ HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Region& region,
   // M(M⁻¹L)^k = L(M⁻¹L)^(k−1): the rows of ∆^k scaled by the vertex areas, which keeps the system
   // as well conditioned as the plain Laplacian's powers allow.
   Eigen::SparseMatrix<double> A = L;
-  for (int k = 1; k < options.order; ++k) A = (A * inverse_mass.asDiagonal() * L).pruned();
+  for (int k = 1; k < order; ++k) A = (A * inverse_mass.asDiagonal() * L).pruned();
 
-  // Split into free columns (unknowns) and fixed columns (data) for the free rows.
   const int n = region.num_free();
   std::vector<Eigen::Triplet<double>> free_part;
-  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(n, 3);
+  rhs = Eigen::MatrixX3d::Zero(n, 3);
   const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = A;
   for (int r = 0; r < n; ++r) {
     const int v = region.free_vertices[r];
@@ -93,17 +86,72 @@ HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Region& region,
         rhs.row(r) -= it.value() * V.row(it.col());
     }
   }
-  Eigen::SparseMatrix<double, Eigen::RowMajor> system(n, n);
+  system.resize(n, n);
   system.setFromTriplets(free_part.begin(), free_part.end());
+}
 
+bool same_pattern(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
+                  const Eigen::SparseMatrix<double, Eigen::RowMajor>& b) {
+  if (a.rows() != b.rows() || a.nonZeros() != b.nonZeros()) return false;
+  return std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.rows() + 1, b.outerIndexPtr()) &&
+         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr());
+}
+
+// Mean length of the edges with a free end.
+double mean_free_edge_length(const Vertices& V, const Topology& topo, const Region& region) {
+  double total = 0;
+  int count = 0;
+  for (Eigen::Index e = 0; e < topo.edges.rows(); ++e) {
+    const int a = topo.edges(e, 0), b = topo.edges(e, 1);
+    if (!region.is_free(a) && !region.is_free(b)) continue;
+    total += (V.row(a) - V.row(b)).norm();
+    ++count;
+  }
+  return count > 0 ? total / count : 0.0;
+}
+
+}  // namespace
+
+HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Region& region,
+                             const HarmonicOptions& options) {
+  if (options.order < 1 || options.order > 3)
+    throw InvalidArgument("harmonic_fair: order " + std::to_string(options.order) +
+                          " is not 1, 2 or 3");
+  if (options.iterations < 1)
+    throw InvalidArgument("harmonic_fair: iterations must be at least 1, got " + std::to_string(options.iterations));
+  const Topology topo = build_topology(F, static_cast<int>(V.rows()));
+  if (const int v = unanchored_free_vertex(topo, region); v >= 0)
+    throw InvalidArgument("harmonic_fair: free vertex " + std::to_string(v) +
+                          " is not connected to any fixed vertex, so the fairing is undetermined");
+  const int n = region.num_free();
+  const double tolerance = options.tolerance * mean_free_edge_length(V, topo, region);
   auto solver = make_linear_solver(options.solver);
-  solver->analyze(system);
-  solver->factorize(system);
+  Eigen::SparseMatrix<double, Eigen::RowMajor> system, analyzed;
+  Eigen::MatrixX3d rhs, x(n, 3), input(n, 3);
+  for (int r = 0; r < n; ++r) input.row(r) = V.row(region.free_vertices[r]);
   HarmonicReport report{n, options.order, 0.0};
-  for (int c = 0; c < 3; ++c) {
-    const Eigen::VectorXd x = solver->solve(rhs.col(c));
-    report.backward_error = std::max(report.backward_error, solver->report().backward_error);
-    for (int r = 0; r < n; ++r) V(region.free_vertices[r], c) = x[r];
+  try {
+    for (int it = 0; it < options.iterations; ++it) {
+      assemble(V, F, region, options.order, system, rhs);
+      // The pattern is the connectivity's (unless a weight is exactly zero): analyze it once.
+      if (!same_pattern(system, analyzed)) solver->analyze(system), analyzed = system;
+      solver->factorize(system);
+      report.backward_error = 0;
+      for (int c = 0; c < 3; ++c) {
+        x.col(c) = solver->solve(rhs.col(c));
+        report.backward_error = std::max(report.backward_error, solver->report().backward_error);
+      }
+      report.max_move = 0;
+      for (int r = 0; r < n; ++r) {
+        report.max_move = std::max(report.max_move, (x.row(r) - V.row(region.free_vertices[r])).norm());
+        V.row(region.free_vertices[r]) = x.row(r);
+      }
+      report.iterations = it + 1;
+      if (report.max_move <= tolerance) break;
+    }
+  } catch (const Error&) {
+    for (int r = 0; r < n; ++r) V.row(region.free_vertices[r]) = input.row(r);
+    throw;
   }
   return report;
 }

@@ -64,6 +64,7 @@ TEST_F(CliFill, SelectedHolesAreFilledOneLineEachWithALog) {
   EXPECT_EQ(log["holes"][0]["status"], "filled");
   EXPECT_EQ(log["holes"][1]["status"], "skipped");
   EXPECT_TRUE(log["holes"][0].contains("steps_log"));
+  EXPECT_GE(log["holes"][0]["harmonic_solves"].get<int>(), 1);  // the flow's ∆³ start
   EXPECT_EQ(log["filled"], 2);
 }
 

@@ -85,6 +85,7 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"supported_continuity", std::string(to_string(r.supported))},
                    {"note", r.note},
                    {"steps", r.steps},
+                   {"harmonic_solves", r.harmonic_solves},
                    {"seconds", r.seconds},
                    {"final_max_velocity", r.final_max_velocity},
                    {"continuity",

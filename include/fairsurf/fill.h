@@ -16,9 +16,11 @@
 // surroundings offer fewer complete rings than the continuity needs (it comes close to a border that
 // stays open) is faired with the continuity the data supports, and its report says so.
 //
-// A flow diverges when it stops without a steady state and its max|V| ended above where it started;
-// the hole's fill then fails at that continuity (and, by default, is retried one continuity lower:
-// G2 → G1 → G0, the report's note saying so).
+// A hole is filled at a continuity only if its flow reaches a steady state (FlowOptions
+// steady_tolerance / steady_relative_tolerance): a flow that stops at its step limit, whether its
+// max|V| ended below where it started ("did not settle") or above ("diverged"), fails the fill at
+// that continuity, which is then (by default) retried one continuity lower: G2 → G1 → G0, the
+// report's note saying why. So `supported` G2 means a settled G2 flow, never a partial one.
 //
 // Failures are per hole and leave the mesh as it was before that hole: a non-manifold border (the
 // loop passes through a vertex twice, or a border vertex has more than two border edges), a
@@ -39,8 +41,8 @@ namespace fairsurf {
 
 struct FillOptions {
   /// The fairing step: continuity (G2 by default), method (flow or harmonic), the flow's functions
-  /// f (fairing.flow.functions, "H" by default) and stopping rule.
-  FairRegionOptions fairing;
+  /// f (fairing.flow.functions, "H" by default) and stopping rule. Defaults: default_fairing().
+  FairRegionOptions fairing = default_fairing();
   PatchOptions patch;  ///< triangulation, refinement and membrane of the initial patch
 
   // Which boundary loops are filled. A loop left out is reported as skipped with the reason.
@@ -49,9 +51,16 @@ struct FillOptions {
   bool skip_largest = false;  ///< leave the longest loop (an open surface's outer border) open
   /// Reject a patch whose faces cross the surrounding mesh (face_intersection.h).
   bool check_intersections = true;
-  /// When the fill of a hole fails at the requested continuity (the flow throws or diverges, or the
-  /// patch crosses the mesh), retry with each lower continuity down to G0; the report's `note` says so.
+  /// When the fill of a hole fails at the requested continuity (the flow throws or reaches no steady
+  /// state, or the patch crosses the mesh), retry with each lower continuity down to G0; the report's
+  /// `note` says so.
   bool fallback_on_failure = true;
+
+  /// fair_region's defaults, except that the flow starts from the re-evaluated cotangent ∆^k
+  /// solution (harmonic_start_iterations = 8) with a Newton-like first step (τ = 1e-2: the step
+  /// control quarters it on rejection): a membrane patch is far from the G2 steady state, and from
+  /// there the flow needed ~100–300 steps with τ doubling from 1e-9; from ∆³ it needs ~10.
+  static FairRegionOptions default_fairing();
 };
 
 enum class HoleStatus { filled, skipped, failed };
@@ -70,10 +79,13 @@ struct HoleReport {
   Continuity requested = Continuity::G2;
   Continuity supported = Continuity::G2;  ///< the continuity the fairing used
   /// Why `supported` is below `requested` (too few complete rings around the hole, or a failed
-  /// attempt at a higher continuity: FillOptions::fallback_on_failure), and whether the flow stopped
-  /// at its step limit without a steady state. Empty otherwise.
+  /// attempt at a higher continuity — a throw, no steady state, a crossing: FillOptions::
+  /// fallback_on_failure). Empty otherwise.
   std::string note;
   int steps = 0;                 ///< accepted flow steps (0 for the harmonic method)
+  /// Cotangent ∆^k solves: the flow's start (FairRegionOptions::harmonic_start_iterations) or the
+  /// harmonic method's one solve.
+  int harmonic_solves = 0;
   double seconds = 0;            ///< wall time of patch, fairing and checks (of the joint region)
   /// max|V| on the free vertices at the end, in the flow's units (flow.h; |EL| for the sixth-order
   /// flow); NaN for the harmonic method or a patch without interior vertices.

@@ -5,6 +5,8 @@
 // vertex areas). k = 1, 2, 3 gives membrane, thin-plate and minimum-variation surfaces with G0, G1
 // and G2 data from k fixed rings. The operator is frozen at the input: the result depends on the
 // initial patch's triangulation and is not a geometric flow — which is what fairsurf compares against.
+// Optionally the solve is repeated with the operator re-evaluated at the previous solution
+// (HarmonicOptions::iterations): the G2 fill starts its flow from that (fair_region.h).
 #pragma once
 
 #include <fairsurf/linear_solver.h>
@@ -24,6 +26,13 @@ Eigen::SparseMatrix<double> cotangent_laplacian(const Vertices& V, const Faces& 
 
 struct HarmonicOptions {
   int order = 3;  ///< k in ∆^k x = 0: 1, 2 or 3 (the continuity reached is G(k−1))
+  /// Solves, each with the operator re-evaluated at the previous solution (1: the classical frozen
+  /// operator). Pinkall–Polthier's iteration for k = 1; for k = 3 it removes the overshoot that the
+  /// operator frozen at a flat patch causes (its kink along the border; see fair_region.h).
+  int iterations = 1;
+  /// Stop iterating once a solve moves no free vertex by more than this times the mean length of
+  /// the edges at free vertices (measured on the input).
+  double tolerance = 0.0;
   LinearSolverOptions solver;
 };
 
@@ -31,12 +40,15 @@ struct HarmonicOptions {
 struct HarmonicReport {
   int free_vertices = 0;
   int order = 0;
-  double backward_error = 0;  ///< largest normwise backward error of the three solves
+  double backward_error = 0;  ///< largest normwise backward error of the last three solves
+  int iterations = 0;         ///< solves done (HarmonicOptions::iterations, tolerance)
+  double max_move = 0;        ///< largest move of a free vertex in the last solve
 };
 
 /// Moves the free vertices of `region` in `V` (#V by 3, updated in place) to the solution of
-/// ∆^k x = 0. Throws InvalidArgument for an order outside 1..3 or a free component that touches no
-/// fixed vertex (the system would be singular), NumericalError if the linear solve fails. On a
+/// ∆^k x = 0 (re-solved as HarmonicOptions::iterations says; the sparsity pattern is analyzed once).
+/// Throws InvalidArgument for an order outside 1..3, iterations < 1 or a free component that touches
+/// no fixed vertex (the system would be singular), NumericalError if the linear solve fails. On a
 /// throw, V is unchanged.
 HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Region& region,
                              const HarmonicOptions& options = {});
