@@ -102,7 +102,7 @@ struct StepControlOptions {
   /// x^k or at the input (orientation_guard.h: their moves are halved until no face is turned, at
   /// most 8 times, then undone), instead of rejecting the step; the rest of the mesh moves as
   /// solved. Keeps needle triangles of raw scans from flipping or accumulating turns over steps.
-  /// `fairsurf smooth` turns it on.
+  /// Only with the control enabled; `fairsurf smooth` turns it on.
   bool hold_back_turned_faces = false;
 };
 
