@@ -1,6 +1,7 @@
 // relax_tangentially (tangential_relaxation.h), hold_back_turned_faces (orientation_guard.h) and
 // the figures of mesh_quality.h.
 #include <fairsurf/errors.h>
+#include <fairsurf/flow.h>
 #include <fairsurf/mesh_quality.h>
 #include <fairsurf/orientation_guard.h>
 #include <fairsurf/tangential_relaxation.h>
@@ -155,4 +156,18 @@ TEST(MeshQuality, InvertedFacesAndNoiseIndex) {
   EXPECT_GT(index, 0.2);
   std::vector<char> none(sphere.num_vertices(), 0);
   EXPECT_EQ(noise_index(noisy, sphere.F, topo, none), 0.0);
+}
+
+TEST(TangentialRelaxation, RunFlowRejectsAWeightOutsideTheUnitInterval) {
+  const Mesh m = test::icosphere(1);
+  Vertices V = m.V;
+  FlowOptions o;
+  o.tangential_relaxation = -0.1;
+  try {
+    run_flow(V, m.F, o);
+    FAIL() << "no exception";
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "run_flow: tangential_relaxation must lie in [0, 1]");
+  }
+  EXPECT_EQ(V, m.V);
 }
