@@ -1,10 +1,14 @@
 #include <fairsurf/blend.h>
 #include <fairsurf/errors.h>
+#include <fairsurf/membrane.h>
 #include <fairsurf/topology.h>
 #include <fairsurf/tube.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 
 namespace fairsurf {
@@ -41,6 +45,78 @@ Eigen::Index append_rows(Eigen::PlainObjectBase<Derived>& out, const Eigen::Plai
   return a.rows();
 }
 
+// Worst 4√3·area / Σ edge² over faces [first_face, #F) of (V, F).
+double worst_quality(const Vertices& V, const Faces& F, int first_face) {
+  double worst = 1.0;
+  for (Eigen::Index f = first_face; f < F.rows(); ++f) {
+    const Eigen::RowVector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+    const double squares = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+    const double doubled_area = (b - a).cross(c - a).norm();
+    worst = std::min(worst, squares > 0 ? 2.0 * std::sqrt(3.0) * doubled_area / squares : 0.0);
+  }
+  return worst;
+}
+
+// The Hermite tube, relaxed to the G0 membrane when asked and when the membrane does not pinch off.
+InitialPatch initial_tube(const Mesh& mesh, const std::vector<int>& loop_a, const std::vector<int>& loop_b,
+                          const BlendOptions& options, BlendReport& report) {
+  PatchOptions hermite = options.patch;
+  hermite.relax = false;
+  InitialPatch patch = tube_patch(mesh, loop_a, loop_b, hermite);
+  const Faces& F = patch.mesh.F;
+  report.hermite_quality = worst_quality(patch.mesh.V, F, patch.first_patch_face);
+  if (!options.patch.relax || patch.free_vertices.empty()) return patch;
+  Vertices relaxed = patch.mesh.V;
+  MembraneReport membrane = relax_membrane(relaxed, F, patch.free_vertices, options.patch.membrane);
+  report.membrane_quality = worst_quality(relaxed, F, patch.first_patch_face);
+  report.relaxed = report.membrane_quality >= options.pinch_quality_ratio * report.hermite_quality;
+  if (report.relaxed) {
+    patch.mesh.V = std::move(relaxed);
+    patch.membrane = std::move(membrane);
+  }
+  return patch;
+}
+
+// measure_continuity on the faces within `rings` rings of `loop`, at the vertices `at` only.
+ContinuityMeasure measure_near_loop(const Mesh& mesh, const std::vector<int>& loop, int rings,
+                                    const std::vector<int>& free_vertices, const std::vector<int>& at) {
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  const std::vector<int> distance = ring_distances(topo, loop, rings);
+  std::vector<int> local(mesh.num_vertices(), -1);
+  int kept = 0;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (distance[v] >= 0) local[v] = kept++;
+  Vertices V(kept, 3);
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (local[v] >= 0) V.row(local[v]) = mesh.V.row(v);
+  std::vector<Eigen::RowVector3i> faces;
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const Eigen::RowVector3i c = mesh.F.row(f);
+    if (local[c[0]] >= 0 && local[c[1]] >= 0 && local[c[2]] >= 0)
+      faces.emplace_back(local[c[0]], local[c[1]], local[c[2]]);
+  }
+  Faces F(static_cast<int>(faces.size()), 3);
+  for (int f = 0; f < F.rows(); ++f) F.row(f) = faces[f];
+  const auto to_local = [&local](const std::vector<int>& vertices) {
+    std::vector<int> out;
+    for (int v : vertices)
+      if (local[v] >= 0) out.push_back(local[v]);
+    return out;
+  };
+  return measure_continuity(V, F, to_local(free_vertices), to_local(at));
+}
+
+// The measurement on the untouched input: the vertices fewer than `offset` rings from the loop
+// play the free region, those at `offset` rings are measured.
+ContinuityMeasure reference_at_loop(const Mesh& input, const std::vector<int>& loop, int offset, int rings) {
+  const Topology topo = build_topology(input.F, input.num_vertices());
+  const std::vector<int> distance = ring_distances(topo, loop, offset);
+  std::vector<int> inner, line;
+  for (int v = 0; v < input.num_vertices(); ++v)
+    if (distance[v] >= 0) (distance[v] < offset ? inner : line).push_back(v);
+  return measure_near_loop(input, loop, offset + rings, inner, line);
+}
+
 }  // namespace
 
 Mesh concatenate_meshes(const Mesh& first, const Mesh& second) {
@@ -62,27 +138,7 @@ Mesh concatenate_meshes(const Mesh& first, const Mesh& second) {
 
 ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
                                              const std::vector<int>& free_vertices, int rings) {
-  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
-  const std::vector<int> distance = ring_distances(topo, loop, rings);
-  std::vector<int> local(mesh.num_vertices(), -1);
-  int kept = 0;
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    if (distance[v] >= 0) local[v] = kept++;
-  Vertices V(kept, 3);
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    if (local[v] >= 0) V.row(local[v]) = mesh.V.row(v);
-  std::vector<Eigen::RowVector3i> faces;
-  for (int f = 0; f < mesh.num_faces(); ++f) {
-    const Eigen::RowVector3i c = mesh.F.row(f);
-    if (local[c[0]] >= 0 && local[c[1]] >= 0 && local[c[2]] >= 0)
-      faces.emplace_back(local[c[0]], local[c[1]], local[c[2]]);
-  }
-  Faces F(static_cast<int>(faces.size()), 3);
-  for (int f = 0; f < F.rows(); ++f) F.row(f) = faces[f];
-  std::vector<int> free_local;
-  for (int v : free_vertices)
-    if (local[v] >= 0) free_local.push_back(local[v]);
-  return measure_continuity(V, F, free_local);
+  return measure_near_loop(mesh, loop, rings, free_vertices, loop);
 }
 
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObserver& observer) {
@@ -102,7 +158,11 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
   report.b.index = pair.second;
   report.b.length = static_cast<int>(loop_b.size());
 
-  InitialPatch patch = tube_patch(mesh, loop_a, loop_b, options.patch);
+  if (options.reference_ring > 0) {
+    report.a.reference = reference_at_loop(mesh, loop_a, options.reference_ring, options.measure_rings);
+    report.b.reference = reference_at_loop(mesh, loop_b, options.reference_ring, options.measure_rings);
+  }
+  InitialPatch patch = initial_tube(mesh, loop_a, loop_b, options, report);
   report.tube_vertices = patch.mesh.num_vertices() - mesh.num_vertices();
   report.tube_faces = patch.mesh.num_faces() - patch.first_patch_face;
   report.tube_rings = patch.tube.rings;

@@ -1,10 +1,12 @@
 #include <fairsurf/continuity.h>
+#include <fairsurf/errors.h>
 #include <fairsurf/operators.h>
 #include <fairsurf/quadratic_fit.h>
 #include <fairsurf/topology.h>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace fairsurf {
@@ -26,8 +28,8 @@ bool usable(FitStatus s) { return s == FitStatus::kOk || s == FitStatus::kIllCon
 
 }  // namespace
 
-ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F,
-                                     std::span<const int> free_vertices) {
+ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F, std::span<const int> free_vertices,
+                                     std::span<const int> at) {
   std::vector<char> is_free(V.rows(), 0), inside(F.rows(), 0), outside(F.rows(), 0);
   for (int v : free_vertices) is_free[v] = 1;
   std::vector<char> border(V.rows(), 0);
@@ -37,6 +39,15 @@ ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F,
     if (touches)
       for (int k = 0; k < 3; ++k)
         if (!is_free[F(f, k)]) border[F(f, k)] = 1;
+  }
+  if (!at.empty()) {
+    std::vector<char> listed(V.rows(), 0);
+    for (int v : at) {
+      if (v < 0 || v >= V.rows())
+        throw InvalidArgument("measure_continuity: vertex " + std::to_string(v) + " is out of range");
+      listed[v] = 1;
+    }
+    for (Eigen::Index v = 0; v < V.rows(); ++v) border[v] = border[v] && listed[v];
   }
   std::vector<int> border_vertices;
   for (Eigen::Index v = 0; v < V.rows(); ++v)

@@ -85,6 +85,7 @@ void store_geometry(SurfaceGeometry& out, int i, const Eigen::Vector3d& n, doubl
   out.k2[i] = H - root;
 }
 
+// Sized without initialization: evaluate_vertices writes every entry, in parallel.
 void resize_geometry(SurfaceGeometry& out, int n) {
   out.normal.resize(n, 3);
   out.H.resize(n);
@@ -121,14 +122,16 @@ void check_size(const QuadraticFits& fits, const Vertices& V, const char* functi
                           " vertices");
 }
 
-// Row offsets of the pattern N(i) ∪ {i} (empty rows where not fitted).
+// Length of row i of the pattern N(i) ∪ {i} (empty where not fitted).
+int pattern_row_length(const QuadraticFits& fits, int i) {
+  return fits.neighbourhood[i] == Neighbourhood::kNotFitted ? 0 : fits.neighbours.size(i) + 1;
+}
+
+// Row offsets of the pattern.
 std::vector<int> pattern_offsets(const QuadraticFits& fits) {
   const int n = fits.num_vertices();
   std::vector<int> outer(n + 1, 0);
-  for (int i = 0; i < n; ++i)
-    outer[i + 1] = outer[i] + (fits.neighbourhood[i] == Neighbourhood::kNotFitted
-                                   ? 0
-                                   : fits.neighbours.size(i) + 1);
+  for (int i = 0; i < n; ++i) outer[i + 1] = outer[i] + pattern_row_length(fits, i);
   return outer;
 }
 
@@ -139,9 +142,9 @@ std::array<SparseOperator*, 8> all_operators(SurfaceOperators& ops) {
           &ops.second_gradient[2]};
 }
 
-// Sizes every operator for the pattern and writes its column indices (N(i) with i inserted in
-// order). Rows are filled in parallel, so the pages of the large arrays are first touched by the
-// threads that later write their values.
+// Sizes every operator for the pattern and writes its row offsets and column indices (N(i) with i
+// inserted in order). Rows are filled in parallel, so the pages of the large arrays are first
+// touched by the threads that later write their values.
 void build_patterns(const QuadraticFits& fits, SurfaceOperators& ops) {
   const int n = fits.num_vertices();
   const std::vector<int> outer = pattern_offsets(fits);
@@ -149,10 +152,10 @@ void build_patterns(const QuadraticFits& fits, SurfaceOperators& ops) {
   for (SparseOperator* m : matrices) {
     m->resize(n, n);
     m->resizeNonZeros(outer.back());
-    std::copy(outer.begin(), outer.end(), m->outerIndexPtr());
   }
 #pragma omp parallel for schedule(dynamic, 512)
   for (int i = 0; i < n; ++i) {
+    for (SparseOperator* m : matrices) m->outerIndexPtr()[i + 1] = outer[i + 1];
     if (outer[i] == outer[i + 1]) continue;
     const auto row = fits.neighbours.row(i);
     const auto split = std::lower_bound(row.begin(), row.end(), i);
@@ -165,15 +168,20 @@ void build_patterns(const QuadraticFits& fits, SurfaceOperators& ops) {
   }
 }
 
-bool same_pattern(const QuadraticFits& fits, const SparseOperator& m) {
+// Whether every operator of `ops` has the fits' pattern row lengths (checked in one parallel pass).
+bool has_pattern(const QuadraticFits& fits, SurfaceOperators& ops) {
   const int n = fits.num_vertices();
-  if (m.rows() != n || m.cols() != n || !m.isCompressed()) return false;
+  const auto matrices = all_operators(ops);
+  for (const SparseOperator* m : matrices)
+    if (m->rows() != n || m->cols() != n || !m->isCompressed()) return false;
+  bool same = true;
+#pragma omp parallel for schedule(static) reduction(&& : same)
   for (int i = 0; i < n; ++i) {
-    const int expected =
-        fits.neighbourhood[i] == Neighbourhood::kNotFitted ? 0 : fits.neighbours.size(i) + 1;
-    if (m.outerIndexPtr()[i + 1] - m.outerIndexPtr()[i] != expected) return false;
+    const int length = pattern_row_length(fits, i);
+    for (const SparseOperator* m : matrices)
+      same = same && m->outerIndexPtr()[i + 1] - m->outerIndexPtr()[i] == length;
   }
-  return true;
+  return same;
 }
 
 // Fills row i of every operator: w_ij at the neighbours' slots, −Σ_j w_ij on the diagonal.
@@ -223,9 +231,7 @@ SurfaceOperators compute_operators(const QuadraticFits& fits, const Vertices& V)
 
 void update_operators(const QuadraticFits& fits, const Vertices& V, SurfaceOperators& ops) {
   check_size(fits, V, "update_operators");
-  const auto matrices = all_operators(ops);
-  if (!std::all_of(matrices.begin(), matrices.end(),
-                   [&](const SparseOperator* m) { return same_pattern(fits, *m); }))
+  if (!has_pattern(fits, ops))
     throw InvalidArgument("update_operators: the operators were not built from these fits' pattern");
   evaluate_vertices(fits, V, ops.geometry,
                     [&](int i, const LocalGeometry* geo) { write_operator_row(fits, i, geo, ops); });

@@ -21,25 +21,47 @@ struct Frame {
   bool valid = false;
 };
 
+// Working storage for one vertex's fit, reused from vertex to vertex by one thread, so that fitting
+// allocates nothing once the largest neighbourhood has been seen and every gathered quantity is
+// computed once.
+struct FitScratch {
+  std::vector<Eigen::Vector3d> face_normals;  // (b − a) × (c − a) of the faces incident to i
+  std::vector<Eigen::Vector3d> offsets;       // x_j − x_i for j ∈ N(i), in N(i)'s order
+  std::vector<Eigen::Vector2d> uv;            // (u_j, v_j), unscaled
+  // w_j b_j: scaled design rows b_j = (u/s, v/s, u²/s², uv/s², v²/s²) times w_j = s²/r_j²
+  std::vector<Vector5d> weighted_rows;
+};
+
+// Unnormalized normal of face f: twice its area times its unit normal.
+Eigen::Vector3d face_cross(int f, const Vertices& V, const Faces& F) {
+  const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+  return (b - a).cross(c - a);
+}
+
+// Reads what vertex i's fit needs from V: its incident faces' normals and its neighbours' offsets.
+void gather(int i, const Vertices& V, const Faces& F, std::span<const int> incident,
+            std::span<const int> neighbours, FitScratch& scratch) {
+  scratch.face_normals.clear();
+  for (int f : incident) scratch.face_normals.push_back(face_cross(f, V, F));
+  const Eigen::Vector3d xi = V.row(i);
+  scratch.offsets.clear();
+  for (int j : neighbours) scratch.offsets.push_back(V.row(j).transpose() - xi);
+}
+
 // N0 from the incident faces (area-weighted: unnormalized cross products), e1 from the first
 // neighbour whose edge has a non-negligible tangential part.
-Frame local_frame(int i, const Vertices& V, const Faces& F, std::span<const int> incident,
-                  std::span<const int> neighbours) {
+Frame local_frame(const FitScratch& scratch) {
   Frame frame;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   double total = 0.0;
-  for (int f : incident) {
-    const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
-    const Eigen::Vector3d cross = (b - a).cross(c - a);
+  for (const Eigen::Vector3d& cross : scratch.face_normals) {
     sum += cross;
     total += cross.norm();
   }
   const double norm = sum.norm();
   if (!(norm > 1e-12 * total)) return frame;
   frame.normal = sum / norm;
-  const Eigen::Vector3d xi = V.row(i);
-  for (int j : neighbours) {
-    const Eigen::Vector3d d = V.row(j).transpose() - xi;
+  for (const Eigen::Vector3d& d : scratch.offsets) {
     const Eigen::Vector3d p = d - d.dot(frame.normal) * frame.normal;
     if (p.norm() > 1e-8 * d.norm()) {
       frame.e1 = p.normalized();
@@ -49,21 +71,6 @@ Frame local_frame(int i, const Vertices& V, const Faces& F, std::span<const int>
     }
   }
   return frame;
-}
-
-// One scaled design row (u/s, v/s, u²/s², uv/s², v²/s²) and its weight s²/r² (scale-free 1/r²).
-struct DesignRow {
-  Vector5d b;
-  double weight;
-};
-
-DesignRow design_row(const Eigen::Vector3d& d, const Frame& frame, double inv_s) {
-  const double u = d.dot(frame.e1) * inv_s, v = d.dot(frame.e2) * inv_s;
-  const double r2 = u * u + v * v;
-  DesignRow row;
-  row.b << u, v, u * u, u * v, v * v;
-  row.weight = r2 > 0.0 ? 1.0 / r2 : 0.0;
-  return row;
 }
 
 // Inverse of a symmetric positive definite 5 × 5 matrix by Cholesky, M = LLᵀ, M⁻¹ = L⁻ᵀL⁻¹; false
@@ -103,26 +110,31 @@ struct LocalSystem {
 };
 
 // Scaled weighted normal matrix M = Σ w b bᵀ, its inverse and the condition number
-// sqrt(‖M‖₁‖M⁻¹‖₁) of the scaled least-squares problem. Column scaling keeps M's condition near
-// that of the geometry (≈ 10–100 on good meshes), so the normal equations lose nothing that matters,
-// and a fixed-size 5 × 5 Cholesky is several times cheaper than an eigen-decomposition or QR.
-void assemble_system(int i, const Vertices& V, const Frame& frame, std::span<const int> neighbours,
-                     double singular_tolerance, LocalSystem& system) {
-  const Eigen::Vector3d xi = V.row(i);
+// sqrt(‖M‖₁‖M⁻¹‖₁) of the scaled least-squares problem; leaves the weighted design rows w_j b_j
+// in `scratch`. Column scaling keeps M's condition near that of the geometry (≈ 10–100 on good
+// meshes), so the normal equations lose nothing that matters, and a fixed-size 5 × 5 Cholesky is
+// several times cheaper than an eigen-decomposition or QR.
+void assemble_system(const Frame& frame, double singular_tolerance, FitScratch& scratch,
+                     LocalSystem& system) {
   double sum_r2 = 0.0;
-  for (int j : neighbours) {
-    const Eigen::Vector3d d = V.row(j).transpose() - xi;
+  scratch.uv.clear();
+  for (const Eigen::Vector3d& d : scratch.offsets) {
     const double u = d.dot(frame.e1), v = d.dot(frame.e2);
+    scratch.uv.emplace_back(u, v);
     sum_r2 += u * u + v * v;
   }
   system.singular = true;
   system.condition = kInfinity;
   if (!(sum_r2 > 0.0)) return;
-  system.inv_s = 1.0 / std::sqrt(sum_r2 / static_cast<double>(neighbours.size()));
+  system.inv_s = 1.0 / std::sqrt(sum_r2 / static_cast<double>(scratch.offsets.size()));
+  scratch.weighted_rows.clear();
   Matrix5d M = Matrix5d::Zero();
-  for (int j : neighbours) {
-    const DesignRow row = design_row(V.row(j).transpose() - xi, frame, system.inv_s);
-    M.noalias() += (row.weight * row.b) * row.b.transpose();
+  for (const Eigen::Vector2d& uv : scratch.uv) {
+    const double u = uv.x() * system.inv_s, v = uv.y() * system.inv_s;
+    const double r2 = u * u + v * v;
+    const Vector5d b(u, v, u * u, u * v, v * v);
+    const Vector5d& wb = scratch.weighted_rows.emplace_back((r2 > 0.0 ? 1.0 / r2 : 0.0) * b);
+    M.noalias() += wb * b.transpose();
   }
   if (!cholesky_inverse(M, system.inverse)) return;
   const double norm_product = M.cwiseAbs().colwise().sum().maxCoeff() *
@@ -132,18 +144,14 @@ void assemble_system(int i, const Vertices& V, const Frame& frame, std::span<con
   system.condition = std::sqrt(norm_product);
 }
 
-// Signed area of the projection of face f onto (e1, e2), positive when it keeps its orientation.
-double projected_orientation(int f, const Vertices& V, const Faces& F, const Frame& frame) {
-  const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
-  const Eigen::Vector3d cross = (b - a).cross(c - a);
-  return cross.dot(frame.normal);
-}
-
-bool has_fold(int i, const Vertices& V, const QuadraticFits& fits, const Frame& frame) {
-  for (int f : fits.vertex_faces.row(i))
-    if (projected_orientation(f, V, fits.faces, frame) < 0.0) return true;
+// A face incident to i (normals in `scratch`) or, for 2-ring fits, to a 1-ring neighbour projects
+// onto (e1, e2) with negative orientation.
+bool has_fold(int i, const Vertices& V, const QuadraticFits& fits, const Frame& frame,
+              const FitScratch& scratch) {
+  for (const Eigen::Vector3d& cross : scratch.face_normals)
+    if (cross.dot(frame.normal) < 0.0) return true;
   for (int f : fits.outer_faces.row(i))
-    if (projected_orientation(f, V, fits.faces, frame) < 0.0) return true;
+    if (face_cross(f, V, fits.faces).dot(frame.normal) < 0.0) return true;
   return false;
 }
 
@@ -153,45 +161,54 @@ void store_frame(QuadraticFits& fits, int i, const Frame& frame) {
   fits.frame_tangent2.row(i) = frame.e2;
 }
 
-void fit_vertex(int i, const Vertices& V, QuadraticFits& fits, LocalSystem& system) {
-  const auto neighbours = fits.neighbours.row(i);
-  double* C = fits.coefficients.data() + 5 * static_cast<std::ptrdiff_t>(fits.neighbours.offsets[i]);
-  std::fill(C, C + 5 * neighbours.size(), 0.0);
+void clear_frame(QuadraticFits& fits, int i) {
+  fits.frame_normal.row(i).setZero();
+  fits.frame_tangent1.row(i).setZero();
+  fits.frame_tangent2.row(i).setZero();
+}
+
+double* columns_of(QuadraticFits& fits, int i) {
+  return fits.coefficients.data() + 5 * static_cast<std::ptrdiff_t>(fits.neighbours.offsets[i]);
+}
+
+// What a vertex without a fit stores besides its frame: C_i = 0 and an infinite condition.
+void store_no_fit(QuadraticFits& fits, int i, FitStatus status) {
+  std::fill(columns_of(fits, i), columns_of(fits, i) + 5 * fits.neighbours.size(i), 0.0);
   fits.condition[i] = kInfinity;
-  const Frame frame = local_frame(i, V, fits.faces, fits.vertex_faces.row(i), neighbours);
-  if (frame.valid) {
+  fits.status[i] = status;
+}
+
+// Writes every per-vertex output of vertex i (frame, C_i, condition, status), so that the buffers
+// need no initialization: the parallel fit is their first touch.
+void fit_vertex(int i, const Vertices& V, QuadraticFits& fits, FitScratch& scratch,
+                LocalSystem& system) {
+  if (fits.neighbourhood[i] == Neighbourhood::kNotFitted) {
+    clear_frame(fits, i);
+    return store_no_fit(fits, i, FitStatus::kNotFitted);
+  }
+  const auto neighbours = fits.neighbours.row(i);
+  gather(i, V, fits.faces, fits.vertex_faces.row(i), neighbours, scratch);
+  const Frame frame = local_frame(scratch);
+  if (frame.valid)
     store_frame(fits, i, frame);
-  } else {
-    fits.frame_normal.row(i).setZero();
-    fits.frame_tangent1.row(i).setZero();
-    fits.frame_tangent2.row(i).setZero();
-  }
-  if (neighbours.size() < QuadraticFits::kTerms) {
-    fits.status[i] = FitStatus::kTooFewNeighbours;
-    return;
-  }
-  if (!frame.valid) {
-    fits.status[i] = FitStatus::kDegenerate;
-    return;
-  }
-  assemble_system(i, V, frame, neighbours, fits.options.singular_tolerance, system);
+  else
+    clear_frame(fits, i);
+  if (neighbours.size() < QuadraticFits::kTerms)
+    return store_no_fit(fits, i, FitStatus::kTooFewNeighbours);
+  if (!frame.valid) return store_no_fit(fits, i, FitStatus::kDegenerate);
+  assemble_system(frame, fits.options.singular_tolerance, scratch, system);
+  if (system.singular) return store_no_fit(fits, i, FitStatus::kDegenerate);
   fits.condition[i] = system.condition;
-  if (system.singular) {
-    fits.status[i] = FitStatus::kDegenerate;
-    return;
-  }
   // C = D⁻¹ M⁻¹ Bₛᵀ W with D = diag(s, s, s², s², s²) undoing the column scaling.
-  const Matrix5d& M_inv = system.inverse;
   const double is = system.inv_s;
   const Vector5d unscale(is, is, is * is, is * is, is * is);
-  const Eigen::Vector3d xi = V.row(i);
-  for (int j : neighbours) {
-    const DesignRow row = design_row(V.row(j).transpose() - xi, frame, is);
+  double* C = columns_of(fits, i);
+  for (const Vector5d& wb : scratch.weighted_rows) {
     Eigen::Map<Vector5d> column(C);
-    column = (M_inv * (row.weight * row.b)).cwiseProduct(unscale);
+    column = (system.inverse * wb).cwiseProduct(unscale);
     C += 5;
   }
-  if (has_fold(i, V, fits, frame))
+  if (has_fold(i, V, fits, frame, scratch))
     fits.status[i] = FitStatus::kFold;
   else if (system.condition > fits.options.max_condition)
     fits.status[i] = FitStatus::kIllConditioned;
@@ -213,6 +230,7 @@ std::vector<Neighbourhood> topological_neighbourhoods(const Topology& topo,
                                                       const std::vector<char>& fitted) {
   const auto border = irregular_edge_vertices(topo);
   std::vector<Neighbourhood> choice(topo.num_vertices, Neighbourhood::kNotFitted);
+#pragma omp parallel for schedule(static)
   for (int i = 0; i < topo.num_vertices; ++i) {
     if (!fitted[i]) continue;
     if (border[i])
@@ -285,13 +303,13 @@ void allocate_neighbourhoods(QuadraticFits& fits, const Topology& topo) {
     sort_unique(row);
     std::erase_if(row, [&](int f) { return F(f, 0) == i || F(f, 1) == i || F(f, 2) == i; });
   });
-  // Left uninitialized: every entry is written by the (parallel) fit, which first-touches its pages.
+  // Left uninitialized: fit_vertex writes every entry, in parallel, which first-touches the pages.
   fits.coefficients.resize(5 * static_cast<Eigen::Index>(fits.neighbours.indices.size()));
-  fits.frame_normal.setZero(n, 3);
-  fits.frame_tangent1.setZero(n, 3);
-  fits.frame_tangent2.setZero(n, 3);
-  fits.condition.setConstant(n, kInfinity);
-  fits.status.assign(n, FitStatus::kNotFitted);
+  fits.frame_normal.resize(n, 3);
+  fits.frame_tangent1.resize(n, 3);
+  fits.frame_tangent2.resize(n, 3);
+  fits.condition.resize(n);
+  fits.status.resize(n);
 }
 
 }  // namespace
@@ -372,10 +390,10 @@ void refit_quadratics(QuadraticFits& fits, const Vertices& V) {
                           " positions for fits over " + std::to_string(n) + " vertices");
 #pragma omp parallel
   {
+    FitScratch scratch;
     LocalSystem system;
 #pragma omp for schedule(dynamic, 512)
-    for (int i = 0; i < n; ++i)
-      if (fits.neighbourhood[i] != Neighbourhood::kNotFitted) fit_vertex(i, V, fits, system);
+    for (int i = 0; i < n; ++i) fit_vertex(i, V, fits, scratch, system);
   }
 }
 

@@ -234,13 +234,19 @@ void face_normals_and_areas(const Vertices& V, const Faces& F, Eigen::MatrixX3d&
   }
 }
 
+// The face areas (the costly part: three gathered corners per face) are computed in parallel; the
+// scatter to the corners stays serial and in face order, so the sums do not depend on threads.
 Eigen::VectorXd vertex_areas(const Vertices& V, const Faces& F) {
-  Eigen::VectorXd areas = Eigen::VectorXd::Zero(V.rows());
-  for (int f = 0; f < F.rows(); ++f) {
+  const int num_faces = static_cast<int>(F.rows());
+  Eigen::VectorXd thirds(num_faces);
+#pragma omp parallel for schedule(static)
+  for (int f = 0; f < num_faces; ++f) {
     const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
-    const double third = (b - a).cross(c - a).norm() / 6.0;
-    for (int k = 0; k < 3; ++k) areas[F(f, k)] += third;
+    thirds[f] = (b - a).cross(c - a).norm() / 6.0;
   }
+  Eigen::VectorXd areas = Eigen::VectorXd::Zero(V.rows());
+  for (int f = 0; f < num_faces; ++f)
+    for (int k = 0; k < 3; ++k) areas[F(f, k)] += thirds[f];
   return areas;
 }
 

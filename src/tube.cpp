@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 
 namespace fairsurf {
@@ -109,6 +110,20 @@ void zip(const std::vector<int>& p, const std::vector<int>& q, const Vertices& V
   }
 }
 
+// Tangent length over chord length of the cubic Hermite that approximates a circular arc of angle
+// φ (4R·tan(φ/4) over 2R·sin(φ/2)): 1 for a straight line, 2 for a half circle, 6.83 for 3π/2.
+// The arc's angle is the sum of the angles the end directions make with the chord (each φ/2 on a
+// circle); it is capped at 3π/2, beyond which the factor grows without bound.
+double arc_tangent_factor(const Vec3& chord, const Vec3& start_direction, const Vec3& end_direction) {
+  constexpr double kMaxArc = 1.5 * std::numbers::pi;
+  const double length = chord.norm();
+  if (length == 0.0) return 1.0;
+  const Vec3 u = chord / length;
+  const auto angle = [&u](const Vec3& d) { return std::acos(std::clamp(d.dot(u), -1.0, 1.0)); };
+  const double phi = std::min(angle(start_direction) + angle(end_direction), kMaxArc);
+  return phi < 1e-6 ? 1.0 : 2.0 * std::tan(phi / 4) / std::sin(phi / 2);
+}
+
 Vec3 hermite(const Vec3& p0, const Vec3& t0, const Vec3& p1, const Vec3& t1, double t) {
   const double t2 = t * t, t3 = t2 * t;
   return (2 * t3 - 3 * t2 + 1) * p0 + (t3 - 2 * t2 + t) * t0 + (-2 * t3 + 3 * t2) * p1 + (t3 - t2) * t1;
@@ -155,7 +170,8 @@ Tube build_tube(const Vertices& V, const Faces& F, const Topology& topo, std::sp
       const double u = static_cast<double>(k) / count;
       const auto [pa, da] = a.at(u);
       const auto [pb, db] = b.at(u);
-      const double length = options.tangent_scale * (pb - pa).norm();
+      const double length =
+          options.tangent_scale * arc_tangent_factor(pb - pa, da, -db) * (pb - pa).norm();
       ring.push_back(static_cast<int>(V.rows() + new_points.size()));
       new_points.push_back(options.hermite ? hermite(pa, length * da, pb, -length * db, t)
                                            : ((1 - t) * pa + t * pb).eval());

@@ -34,15 +34,22 @@ BlendOptions blend_options(const BlendArgs& args) {
 }
 
 std::string border_text(const char* name, const BlendLoop& loop) {
-  char text[200];
-  std::snprintf(text, sizeof text, "loop %s = %d (%d vertices): max normal angle %.3g°, max H jump %.3g", name,
-                loop.index, loop.length, loop.border.max_normal_angle * 180.0 / M_PI,
-                loop.border.max_mean_curvature_jump);
+  constexpr double kDegrees = 180.0 / M_PI;
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "loop %s = %d (%d vertices): max normal angle %.3g°, max H jump %.3g "
+                "(the same fits on the untouched input read %.3g°, %.3g)",
+                name, loop.index, loop.length, loop.border.max_normal_angle * kDegrees,
+                loop.border.max_mean_curvature_jump, loop.reference.max_normal_angle * kDegrees,
+                loop.reference.max_mean_curvature_jump);
   return text;
 }
 
 nlohmann::json loop_json(const BlendLoop& loop) {
-  return {{"index", loop.index}, {"length", loop.length}, {"continuity_measured", to_json(loop.border)}};
+  return {{"index", loop.index},
+          {"length", loop.length},
+          {"continuity_measured", to_json(loop.border)},
+          {"continuity_reference", to_json(loop.reference)}};
 }
 
 void run_blend(const BlendArgs& args) {
@@ -67,11 +74,17 @@ void run_blend(const BlendArgs& args) {
               {"tube_vertices", report.tube_vertices},
               {"tube_faces", report.tube_faces},
               {"tube_rings", report.tube_rings},
+              {"hermite_quality", report.hermite_quality},
+              {"membrane_quality", report.membrane_quality},
+              {"relaxed", report.relaxed},
               {"fair", to_json(report.fair)},
               {"seconds", report.seconds}});
-  std::printf("blended loops %d and %d of %d%s: tube of %d vertices, %d faces; %s\n  %s\n  %s\n%.2f s; wrote %s\n",
+  const char* start = report.relaxed                 ? "from the membrane"
+                      : args.no_relax                  ? "from the Hermite tube"
+                                                       : "from the Hermite tube (the membrane pinched off)";
+  std::printf("blended loops %d and %d of %d%s: tube of %d vertices, %d faces, %s; %s\n  %s\n  %s\n%.2f s; wrote %s\n",
               report.a.index, report.b.index, report.loops_found, report.automatic ? " (closest pair)" : "",
-              report.tube_vertices, report.tube_faces, summary(report.fair).c_str(),
+              report.tube_vertices, report.tube_faces, start, summary(report.fair).c_str(),
               border_text("a", report.a).c_str(), border_text("b", report.b).c_str(), report.seconds,
               args.output.c_str());
 }
@@ -90,8 +103,8 @@ void setup_blend(CLI::App& app) {
       ->expected(2)
       ->delimiter(',');
   cmd->add_flag("--no-relax", args->no_relax,
-                "Start the flow from the Hermite tube, without the G0 membrane (which pinches off when "
-                "no minimal surface spans the two loops, e.g. loops far apart for their size)");
+                "Start the flow from the Hermite tube, without the G0 membrane (the membrane is dropped "
+                "by itself when it pinches off: no minimal surface spans loops far apart for their size)");
   add_region_fairing_options(cmd, args->fairing);
   cmd->callback([args] { run_blend(*args); });
 }

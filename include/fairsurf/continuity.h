@@ -20,9 +20,11 @@ struct ContinuityMeasure {
   double mean_mean_curvature_jump = 0;  ///< 1/length
 };
 
-/// Measures the one-sided normals and mean curvatures at the border of `free_vertices` on (V, F).
-/// Border vertices where either side's fit is ill-posed are skipped (not counted).
-ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F,
-                                     std::span<const int> free_vertices);
+/// Measures the one-sided normals and mean curvatures at the border of `free_vertices` on (V, F):
+/// at every border vertex, or only at those listed in `at` when it is not empty (one border of a
+/// region that has several, e.g. one loop of a blend). Border vertices where either side's fit is
+/// ill-posed are skipped (not counted). Throws InvalidArgument for a vertex of `at` out of range.
+ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F, std::span<const int> free_vertices,
+                                     std::span<const int> at = {});
 
 }  // namespace fairsurf

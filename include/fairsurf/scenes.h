@@ -10,9 +10,9 @@
 //                   and the mesh carries it as the per-vertex scalar "free" (1 free, 0 fixed), so that
 //                   `fairsurf fair SCENE.ply --region-property free` fairs it.
 //
-//   fig3        A spherical cap above a flat disk with a hole (Fig 3a). Disk: z = 0, radii 1 to 2,
-//               normal +z. Cap: the sphere of radius 1 about (0, 0, 0.3), polar angle ≤ 60° (rim
-//               radius √3/2 at z = 0.8). Blend the hole's loop with the cap's rim.
+//   fig3        A spherical cap above a flat disk with a hole (Fig 3a). Disk: z = 0, radii 1.5 to
+//               2.75, normal +z. Cap: the sphere of radius 1 about (0, 0, 0.1), polar angle ≤ 60°
+//               (rim radius √3/2 at z = 0.6). Blend the hole's loop with the cap's rim.
 //   fig4        Two spherical caps facing each other (Fig 4a): the caps of the unit sphere within
 //               polar angle 60° of its poles (rims of radius √3/2 at z = ±0.5). They are caps of one
 //               sphere so that the blend has a known answer: the G2 blend with f = H (constant H is

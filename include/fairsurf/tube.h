@@ -12,12 +12,17 @@
 //   2. Rings. With h the mean length of the two loops' edges and D the mean matched distance
 //      |A(s) − B(s)|, R = max(0, round(D / h) − 1) intermediate rings (or options.rings). Ring r
 //      (t = r/(R+1)) has round(#A + (#B − #A)·t) points at equally spaced s; a point is the cubic
-//      Hermite blend of A(s) and B(s) with end tangents ℓ·d_A(s) and −ℓ·d_B(s), ℓ = tangent_scale
-//      · |B(s) − A(s)|, where d is the loop's outward direction: the unit direction in the surface's
-//      tangent plane, perpendicular to the loop, pointing away from the surface (for a loop edge
-//      a→b of a face with normal n, along (b − a) × n; averaged over a vertex's two edges). Tube
-//      sides thus leave each surface tangentially, a much better start for a G2 flow than straight
-//      lines (options.hermite = false gives the linear blend).
+//      Hermite blend of A(s) and B(s) with end tangents ℓ·d_A(s) and −ℓ·d_B(s), where d is the
+//      loop's outward direction: the unit direction in the surface's tangent plane, perpendicular to
+//      the loop, pointing away from the surface (for a loop edge a→b of a face with normal n, along
+//      (b − a) × n; averaged over a vertex's two edges). ℓ = tangent_scale · c · 2tan(φ/4)/sin(φ/2),
+//      c = |B(s) − A(s)|, is the tangent of the cubic that approximates the circular arc of angle φ
+//      from A(s) to B(s), φ = the sum of the angles that d_A(s) and −d_B(s) make with the chord
+//      (capped at 3π/2): ℓ = c between facing loops (φ = 0), 6.83c for two ends that face away
+//      from each other at right angles (adjacent ends of a cross, φ = 3π/2). With ℓ = c there, the
+//      outer side's curves ran inside the inner side's and the tube folded flat. Tube sides thus
+//      leave each surface tangentially, a much better start for a G2 flow than straight lines
+//      (options.hermite = false gives the linear blend).
 //   3. Strips. Consecutive rings (different counts allowed) are joined by the shortest-diagonal
 //      zipper: walking both rings from their starts, each step adds the triangle whose new diagonal
 //      is shorter.
@@ -35,7 +40,7 @@ namespace fairsurf {
 struct TubeOptions {
   int rings = -1;              ///< intermediate rings; negative: automatic (header, step 2)
   bool hermite = true;         ///< Hermite along the outward directions; false: straight lines
-  double tangent_scale = 1.0;  ///< Hermite tangent length over the distance of the matched points
+  double tangent_scale = 1.0;  ///< factor on the circular-arc Hermite tangent length (header, step 2)
 };
 
 struct Tube {
