@@ -155,7 +155,7 @@ fi
 end_commands
 if [ "${#scan_runs[@]}" -gt 0 ]; then
   render_row "$images/fig2_scan.png" "$range" "real scan: sixth-order flow with several f, mean curvature flow" input "${scan_runs[@]}"
-  note "**Known defect (open):** on this scan the sixth-order flow leaves spikes and folded faces at needle triangles (near the eye and the ear); the step control damps them but does not remove them yet. See docs/flow.md, 'Real scans: diagnosis and the row damping'."
+  note "Every run relaxes the vertices tangentially and holds back those whose faces would turn over, so no face ends inverted against the scan (the needle triangles near the eye and the ear used to leave spikes). See docs/flow.md, 'Real scans: what fairsurf smooth does'."
   table "$work/input.obj" input "${scan_runs[@]}"
 fi
 

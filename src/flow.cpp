@@ -2,6 +2,8 @@
 
 #include <fairsurf/errors.h>
 #include <fairsurf/flow.h>
+#include <fairsurf/orientation_guard.h>
+#include <fairsurf/tangential_relaxation.h>
 #include <fairsurf/topology.h>
 
 #include <Eigen/Geometry>
@@ -42,6 +44,8 @@ void check_options(const FlowOptions& o) {
   else if (!(o.relative_epsilon >= 0)) problem = "relative_epsilon must be non-negative";
   else if (!(o.curvature_scale >= 0)) problem = "curvature_scale must be non-negative";
   else if (!(o.runaway_energy_factor > 1)) problem = "runaway_energy_factor must exceed 1";
+  else if (!(o.tangential_relaxation >= 0 && o.tangential_relaxation <= 1))
+    problem = "tangential_relaxation must lie in [0, 1]";
   else if (o.border_fixed_rings < 0) problem = "border_fixed_rings must be non-negative";
   else if (o.refactor_interval < 1) problem = "refactor_interval must be at least 1";
   else if (!(c.max_displacement_ratio > 0)) problem = "step_control.max_displacement_ratio must be positive";
@@ -81,17 +85,6 @@ Eigen::VectorXd local_edge_lengths(const Vertices& X, const Topology& topo) {
   for (int v = 0; v < topo.num_vertices; ++v)
     if (topo.vertex_vertices.size(v) > 0) sum[v] /= topo.vertex_vertices.size(v);
   return sum;
-}
-
-// Unnormalized normals of the listed faces.
-void face_directions(const Vertices& X, const Faces& F, const std::vector<int>& faces,
-                     Eigen::MatrixX3d& out) {
-  out.resize(static_cast<Eigen::Index>(faces.size()), 3);
-  for (std::size_t k = 0; k < faces.size(); ++k) {
-    const auto f = F.row(faces[k]);
-    const Eigen::Vector3d a = X.row(f[0]), b = X.row(f[1]), c = X.row(f[2]);
-    out.row(static_cast<Eigen::Index>(k)) = (b - a).cross(c - a).transpose();
-  }
 }
 
 // The run: the accepted state (positions X, with its normals, velocity and J) and the trial.
@@ -142,6 +135,7 @@ class FlowRun {
   Eigen::VectorXd velocity_free_;  // τ-free right-hand side V_F
   Eigen::VectorXd edge_length_;
   Eigen::MatrixX3d face_direction_, face_direction_trial_;
+  Eigen::MatrixX3d input_face_direction_;  // of the moving faces at the input
   double energy_ = 0;
   SparseOperator jacobian_, step_matrix_;
   Eigen::VectorXd damping_;  // what leaves J's diagonal in the step matrix (row_damping)
@@ -150,6 +144,9 @@ class FlowRun {
   bool factorized_ = false;
   double factorized_tau_ = 0;
   int factorization_age_ = 0;
+  // Weight of the tangential relaxation of the next trial: scaled with τ by the step control, so
+  // that a trial tends to x^k as rejections pile up.
+  double relaxation_ = 0;
 };
 
 void FlowRun::initialize() {
@@ -171,6 +168,7 @@ void FlowRun::initialize() {
     if (region_.is_free(F_(f, 0)) || region_.is_free(F_(f, 1)) || region_.is_free(F_(f, 2)))
       moving_faces_.push_back(f);
 
+  input_face_direction_ = face_directions(X_, F_, moving_faces_);
   flow_detail::initialize_geometry(X_, F_, topo_, options_.fit, state_);
   const SurfaceGeometry& geo = state_.ops.geometry;
   if (options_.kind == FlowKind::sixth_order) {
@@ -209,7 +207,7 @@ void FlowRun::accept_current_state() {
   for (int k = 0; k < region_.num_free(); ++k)
     velocity_free_[k] = state_.velocity[region_.free_vertices[k]];
   edge_length_ = local_edge_lengths(X_, topo_);
-  face_directions(X_, F_, moving_faces_, face_direction_);
+  face_direction_ = face_directions(X_, F_, moving_faces_);
   energy_ = state_.energy;
   report_.final_energy = state_.energy;
   report_.final_max_velocity = state_.max_velocity;
@@ -306,7 +304,7 @@ bool FlowRun::displacement_ok(const Eigen::VectorXd& d, StepRecord& record) cons
 }
 
 bool FlowRun::faces_ok(StepRecord& record) {
-  face_directions(X_trial_, F_, moving_faces_, face_direction_trial_);
+  face_direction_trial_ = face_directions(X_trial_, F_, moving_faces_);
   for (Eigen::Index k = 0; k < face_direction_trial_.rows(); ++k)
     if (!(face_direction_trial_.row(k).dot(face_direction_.row(k)) > 0))
       return reject(record, StepRejection::inverted_face,
@@ -345,6 +343,11 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
     const int v = region_.free_vertices[k];
     X_trial_.row(v) += d[k] * normal_.row(v);
   }
+  relax_tangentially(X_trial_, topo_, region_.free_vertices, normal_, relaxation_);
+  if (control && options_.step_control.hold_back_turned_faces) {
+    const Eigen::MatrixX3d* const references[] = {&face_direction_, &input_face_direction_};
+    record.held_back_vertices = hold_back_turned_faces(X_, X_trial_, F_, moving_faces_, references);
+  }
   if (!faces_ok(record) || !evaluate_trial(record)) return false;
   const double growth = options_.step_control.max_energy_growth;
   if (control && state_.energy > growth * energy_ + energy_floor_)
@@ -359,6 +362,7 @@ FlowReport FlowRun::run() {
   const auto& control = options_.step_control;
   const double tolerance = options_.steady_tolerance;
   double tau = options_.tau;
+  relaxation_ = options_.tangential_relaxation;
   int consecutive_rejections = 0;
   const double relative = options_.steady_relative_tolerance * report_.initial_max_velocity;
   auto steady = [&] {
@@ -397,6 +401,7 @@ FlowReport FlowRun::run() {
       accept_current_state();
       write_back();
       tau = std::min(control.accept_factor * tau, options_.tau_max);
+      relaxation_ = std::min(control.accept_factor * relaxation_, options_.tangential_relaxation);
     } else {
       ++report_.rejected_steps;
       ++consecutive_rejections;
@@ -411,6 +416,7 @@ FlowReport FlowRun::run() {
                        " consecutive rejected steps; the last: " + to_string(record.rejection) +
                        ": " + record.detail);
     tau = tau_try * control.reject_factor;
+    relaxation_ *= control.reject_factor;
   }
   report_.tau = tau;
   return report_;

@@ -21,6 +21,22 @@ double default_smoothing_time(const Mesh& mesh, FlowKind kind) {
   return std::pow(2 * h, flow_order(kind));
 }
 
+SmoothOptions scan_smoothing_options(const Mesh& mesh, FlowKind kind) {
+  SmoothOptions o;
+  o.flow.kind = kind;
+  o.flow.end_time = default_smoothing_time(mesh, kind);
+  o.flow.tau = o.flow.end_time / 64;
+  // Raw scans ask for steps of about an edge length at their noise spikes whatever τ is (flow.h):
+  // clip those rather than reject every step, and damp the rows that are not dissipative. Needle
+  // triangles shear over under the normal motion: relax the vertices tangentially, and hold back the
+  // few whose faces would still turn over (against x^k or the input) rather than reject the step.
+  o.flow.step_control.limit_displacement = true;
+  o.flow.step_control.jacobian_dominance = 0.3;
+  o.flow.step_control.hold_back_turned_faces = true;
+  o.flow.tangential_relaxation = 0.5;
+  return o;
+}
+
 FlowReport smooth(Mesh& mesh, const SmoothOptions& options, const FlowObserver& observer) {
   require_valid(mesh, Requirements{}, "smooth");
   const Topology topo = build_topology(mesh.F, mesh.num_vertices());

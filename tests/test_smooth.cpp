@@ -139,3 +139,43 @@ TEST_F(CliSmooth, ExitCodes) {
   run = test::run_cli("smooth /nonexistent.obj -o " + (dir_ / "x.ply").string());
   EXPECT_EQ(run.exit_code, 2) << run.out;
 }
+
+// The failure path of `fairsurf smooth`: f = K is ill posed where K < 0 (the inner half of a torus),
+// and τ = 0.9 is far beyond any stable step. The first steps are accepted (faces are held back, not
+// flipped), then the energy more than doubles at every τ down to 6e-8 and the control gives up
+// after 13 rejections in a row (step 7 when this was written). The command must exit 4 naming the step, still write the last accepted state to
+// -o, and leave the error and every trial step in the log.
+TEST_F(CliSmooth, FailedFlowExitsFourWithTheLastAcceptedStateAndTheLog) {
+  const std::string torus = (dir_ / "torus.ply").string(), out = (dir_ / "failed.ply").string(),
+                    log = (dir_ / "failed.json").string();
+  write_mesh(torus, test::noisy_torus(48, 16, 1.0, 0.4, 0.12));
+  const Mesh input = read_mesh(torus);
+  const auto run = test::run_cli("smooth '" + torus + "' -o '" + out + "' --f K --tau 0.9 --steps 30 --log '" +
+                                 log + "'");
+  std::printf("[cli smooth failure] exit %d: %s\n", run.exit_code, run.out.c_str());
+  EXPECT_EQ(run.exit_code, 4) << run.out;
+  EXPECT_NE(run.out.find("fairsurf: error: run_flow: step "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find(": 13 consecutive rejected steps; the last: "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("(the last accepted state was written to " + out + ")"), std::string::npos) << run.out;
+
+  std::ifstream in(log);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const std::string error = j["error"].get<std::string>();
+  EXPECT_EQ(error.rfind("run_flow: step ", 0), 0u) << error;
+  EXPECT_NE(run.out.find(error), std::string::npos) << error;
+  int accepted = 0, rejected_in_a_row = 0;
+  for (const auto& step : j["steps"]) {
+    rejected_in_a_row = step["accepted"].get<bool>() ? 0 : rejected_in_a_row + 1;
+    accepted += step["accepted"].get<bool>();
+  }
+  EXPECT_EQ(rejected_in_a_row, 13);
+  EXPECT_EQ(error.rfind("run_flow: step " + std::to_string(accepted + 1) + " ", 0), 0u) << error;
+
+  // -o holds the last accepted state: the input if no step was accepted, a moved torus otherwise,
+  // finite and with the input's connectivity.
+  const Mesh written = read_mesh(out);
+  ASSERT_EQ(written.F, input.F);
+  ASSERT_TRUE(written.V.allFinite());
+  if (accepted > 0) EXPECT_GT((written.V - input.V).cwiseAbs().maxCoeff(), 0.0);
+  else EXPECT_EQ(written.V, input.V);
+}

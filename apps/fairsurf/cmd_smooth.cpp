@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -34,32 +35,29 @@ FlowKind flow_kind(const std::string& name) {
 }
 
 SmoothOptions smooth_options(const SmoothArgs& args, const Mesh& mesh) {
-  SmoothOptions o;
-  o.flow.kind = flow_kind(args.flow);
+  SmoothOptions o = scan_smoothing_options(mesh, flow_kind(args.flow));
   o.flow.functions = args.functions;
   o.flow.solver.kind = parse_linear_solver_kind(args.solver == "lu" ? "mumps" : args.solver);
   o.flow.max_steps = args.max_steps;
-  // Raw scans ask for steps of about an edge length at their noise spikes whatever τ is (flow.h):
-  // clip those rather than reject every step, and damp the rows that are not dissipative.
-  o.flow.step_control.limit_displacement = true;
-  o.flow.step_control.jacobian_dominance = 0.3;
   o.fixed_rings = args.fixed_rings;
   if (!args.fixed_file.empty())
     o.fixed_vertices = read_vertex_indices(args.fixed_file, mesh.num_vertices());
+  // Runs without an end time start from the library's τ; timed runs from 1/64 of their time, which
+  // the control reaches in about seven accepted steps.
+  if (args.steps > 0 || args.steady) {
+    o.flow.end_time = std::numeric_limits<double>::infinity();
+    o.flow.tau = FlowOptions{}.tau;
+    o.default_time = false;
+  }
   if (args.steps > 0) {
     o.flow.max_steps = args.steps;
-    o.default_time = false;
   } else if (args.steady) {
     o.flow.steady_tolerance = args.steady_tolerance;
-  } else {
-    o.flow.end_time = args.time > 0 ? args.time : default_smoothing_time(mesh, o.flow.kind);
+  } else if (args.time > 0) {
+    o.flow.end_time = args.time;
+    o.flow.tau = args.time / 64;
   }
-  // Without --tau, start small and let the control double τ: 1/64 of the run reaches its end in
-  // about seven accepted steps.
-  if (args.tau > 0)
-    o.flow.tau = args.tau;
-  else if (std::isfinite(o.flow.end_time))
-    o.flow.tau = o.flow.end_time / 64;
+  if (args.tau > 0) o.flow.tau = args.tau;
   return o;
 }
 

@@ -17,6 +17,7 @@ nlohmann::json to_json(const StepRecord& r) {
                    {"tau", r.tau},
                    {"energy", r.energy},
                    {"max_displacement", r.max_displacement},
+                   {"held_back_vertices", r.held_back_vertices},
                    {"max_velocity", r.max_velocity},
                    {"accepted", r.accepted},
                    {"solver_iterations", r.solver_iterations},

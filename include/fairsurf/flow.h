@@ -41,6 +41,12 @@
 // small τ gives d ≈ τV with V huge, large τ a damped, Newton-like step −J⁻¹V, and τ ≈ 1/λ for the
 // positive eigenvalues λ of J (lower-order terms) a near-singular system; so a rejected large step
 // is not always cured by a smaller one.
+// Rough input (raw scans, `fairsurf smooth`): optionally each |d_i| is clipped instead of rejected
+// (limit_displacement), non-dissipative rows of J are damped (jacobian_dominance), the trial is
+// relaxed tangentially (FlowOptions::tangential_relaxation, scaled with τ by the control: ×reject_
+// factor after a rejection, ×accept_factor after an acceptance, up to the option's value) and the
+// vertices of faces it would turn over — against x^k or against the input — are held back
+// (hold_back_turned_faces). The face, energy and finiteness checks then apply to that trial.
 // The energy the control watches is the flow's own: E = Σ_l ∫‖∇f_l‖² (sixth order), the area (mean
 // curvature, surface diffusion) or ∫H² dA (Willmore), summed over the free vertices and their three
 // fixed rings.
@@ -93,6 +99,12 @@ struct StepControlOptions {
   /// uses 0.3 for rough scans; it is off elsewhere because it slows convergence to steady states
   /// (a G2 hole fill on a 2562-vertex sphere stalled at 200 steps with it, 145 steps without).
   double jacobian_dominance = -std::numeric_limits<double>::infinity();
+  /// Hold back the vertices of faces that a trial would turn over, against their orientation at
+  /// x^k or at the input (orientation_guard.h: their moves are halved until no face is turned, at
+  /// most 8 times, then undone), instead of rejecting the step; the rest of the mesh moves as
+  /// solved. Keeps needle triangles of raw scans from flipping or accumulating turns over steps.
+  /// Only with the control enabled; `fairsurf smooth` turns it on.
+  bool hold_back_turned_faces = false;
 };
 
 struct FlowOptions {
@@ -119,6 +131,13 @@ struct FlowOptions {
   double steady_relative_tolerance = 0;
 
   StepControlOptions step_control;
+  /// Tangential relaxation of every trial state (tangential_relaxation.h): after the normal step,
+  /// each free vertex moves this fraction of the way towards its neighbours' mean within its
+  /// tangent plane at x^k; the trial is then checked (faces, energy, finiteness) as a whole. Keeps
+  /// needle triangles of raw scans from shearing over; changes the shape only to second order and
+  /// steady shapes not at all, but vertex positions of steady states are then those of a relaxed
+  /// distribution. 0 (the default): off; `fairsurf smooth` uses 0.5 (docs/flow.md).
+  double tangential_relaxation = 0;
   /// An accepted state with energy above this times the initial energy stops the flow.
   double runaway_energy_factor = 1e6;
   /// Fixed rings along the mesh border when run_flow is given no region (smoothing an open mesh).
@@ -146,6 +165,9 @@ struct StepRecord {
   double energy = 0;     ///< the flow's energy at the trial state (NaN if not evaluated)
   double max_displacement = 0;  ///< max_i |d_i|
   double max_velocity = 0;      ///< max over free vertices of |V| at the trial state (|EL|)
+  /// Free vertices held back because a face of theirs would have turned over
+  /// (StepControlOptions::hold_back_turned_faces).
+  int held_back_vertices = 0;
   bool accepted = false;
   StepRejection rejection = StepRejection::none;
   std::string detail;           ///< what was rejected, e.g. "|d| 0.031 > 0.25 · 0.1 at vertex 17"

@@ -32,6 +32,12 @@ struct SmoothOptions {
 /// (2h̄)^order in unit-diagonal units, h̄ = mean edge length / bounding-box diagonal.
 double default_smoothing_time(const Mesh& mesh, FlowKind kind);
 
+/// What `fairsurf smooth` runs with by default on `mesh`, for raw scans as well as clean meshes:
+/// the flow `kind` to default_smoothing_time(), τ starting at 1/64 of it (the control doubles it
+/// after each accepted step), per-vertex displacement clipping, row damping 0.3 and tangential
+/// relaxation 0.5 (flow.h; docs/flow.md says what each does on the scans of data/).
+SmoothOptions scan_smoothing_options(const Mesh& mesh, FlowKind kind = FlowKind::sixth_order);
+
 /// Smooths `mesh.V` in place. Requires a manifold, consistently oriented mesh without degenerate
 /// faces (InvalidMeshError naming the problem otherwise); throws InvalidArgument if no vertex is
 /// left free, and NumericalError as run_flow does — with mesh.V at the last accepted state.
