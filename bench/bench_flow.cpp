@@ -8,8 +8,9 @@
 // case's own peak memory; the child's CPU seconds (both steps, all threads) and the load average
 // before the case are printed too: on the shared 2-core machine wall times follow the load.
 // Then the scaling exponents of the step time and peak memory (pairwise and a least-squares fit)
-// and their extrapolation to 1M vertices: ~1M is not run, MUMPS needs about 6 GB at 655k unknowns
-// (METHOD §5) and the machine is shared. Then the 100k case with a frozen Jacobian
+// and their extrapolation to 1M vertices. `bench_flow --million` also runs a 1,024,000-vertex grid
+// (about 13 GB peak, as MUMPS needs about 6 GB at 655k unknowns, METHOD §5): by default it is not
+// run, since the machine is shared. Then the 100k case with a frozen Jacobian
 // (FlowOptions::refactor_interval = 2: the second step reuses the first one's factorization). Last,
 // the same 10k step with GMRES + ILUT at the default options and at a larger fill, and with UMFPACK.
 #include <fairsurf/errors.h>
@@ -161,10 +162,12 @@ void print_scaling(const char* what, const char* unit, const std::vector<double>
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  const bool million = argc > 1 && std::string(argv[1]) == "--million";
   const char* blas_threads = std::getenv("OPENBLAS_NUM_THREADS");
   std::printf("OPENBLAS_NUM_THREADS=%s\n", blas_threads ? blas_threads : "(unset: one thread a core)");
-  const std::vector<std::pair<int, int>> grids = {{160, 64}, {320, 128}, {500, 200}, {640, 256}};
+  std::vector<std::pair<int, int>> grids = {{160, 64}, {320, 128}, {500, 200}, {640, 256}};
+  if (million) grids.emplace_back(1600, 640);  // 1,024,000 vertices, ~13 GB: a quiet machine only
   std::vector<double> sizes, seconds, megabytes;
   for (const auto& [n, m] : grids) {
     const CaseFigures f = in_child(n, m, FlowOptions{}, "mumps");
