@@ -74,7 +74,7 @@ class MumpsSolver final : public LinearSolver {
     icntl(id_, 2) = -1;
     icntl(id_, 3) = -1;
     icntl(id_, 4) = 0;
-    icntl(id_, 7) = 7;  // automatic choice of the fill-reducing ordering
+    icntl(id_, 7) = options.ordering == FillOrdering::minimum_degree ? 6 : 7;  // QAMD, or MUMPS chooses
   }
 
   ~MumpsSolver() override {
