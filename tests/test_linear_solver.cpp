@@ -84,6 +84,23 @@ TEST_P(LinearSolverTest, RandomWellConditionedSystemsReachTheTolerance) {
   }
 }
 
+TEST_P(LinearSolverTest, MinimumDegreeOrderingSolvesTheStepMatrixProxy) {
+  // The step matrix proxy at τ = 1 (entries up to ~1e11), analyzed with the ordering fills use.
+  const SparseRowMatrix A = test::step_matrix_proxy(24, 1.0);
+  const Eigen::VectorXd exact = random_vector(static_cast<int>(A.rows()), 11);
+  const Eigen::VectorXd b = A * exact;
+  LinearSolverOptions options;
+  options.ordering = FillOrdering::minimum_degree;
+  options.ilut_drop_tolerance = 1e-8;
+  options.ilut_fill_factor = 60;
+  auto solver = make(options);
+  solver->analyze(A);
+  solver->factorize(A);
+  solver->solve(b);
+  EXPECT_LE(solver->report().backward_error, 1e-12);
+  EXPECT_EQ(solver->report().ordering, GetParam() == LinearSolverKind::mumps ? "QAMD" : "AMD");
+}
+
 TEST_P(LinearSolverTest, BadlyScaledStepMatrixProxyPassesTheResidualCheck) {
   // 24 by 24 torus grid, h = 1/24: τ/h⁶ ≈ 1.9e8 and the entries span about 2e8 .. 1e11.
   LinearSolverOptions options;
