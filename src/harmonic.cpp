@@ -133,7 +133,9 @@ HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Region& region,
                           " is not connected to any fixed vertex, so the fairing is undetermined");
   const int n = region.num_free();
   const double tolerance = options.tolerance * mean_free_edge_length(V, topo, region);
-  auto solver = make_linear_solver(options.solver);
+  LinearSolverOptions solver_options = options.solver;
+  solver_options.symmetric = true;  // the free block of L(M⁻¹L)^(k−1) is symmetric
+  auto solver = make_linear_solver(solver_options);
   Eigen::SparseMatrix<double, Eigen::RowMajor> system, analyzed;
   Eigen::MatrixX3d rhs, x(n, 3), input(n, 3);
   for (int r = 0; r < n; ++r) input.row(r) = V.row(region.free_vertices[r]);

@@ -84,6 +84,22 @@ TEST_P(LinearSolverTest, RandomWellConditionedSystemsReachTheTolerance) {
   }
 }
 
+TEST_P(LinearSolverTest, SymmetricSystemsSolvedFromTheLowerTriangle) {
+  // A + Aᵀ of a diagonally dominant matrix is symmetric, indefinite and still dominant.
+  const SparseRowMatrix B = random_dominant_matrix(800, 8, 5);
+  const SparseRowMatrix A = SparseRowMatrix(B + SparseRowMatrix(B.transpose()));
+  const Eigen::VectorXd exact = random_vector(800, 105);
+  const Eigen::VectorXd b = A * exact;
+  LinearSolverOptions options;
+  options.symmetric = true;
+  auto solver = make(options);
+  solver->analyze(A);
+  solver->factorize(A);
+  const Eigen::VectorXd x = solver->solve(b);
+  EXPECT_LE(solver->report().backward_error, 1e-12);
+  EXPECT_LT(relative_error(x, exact), 1e-9);
+}
+
 TEST_P(LinearSolverTest, MinimumDegreeOrderingSolvesTheStepMatrixProxy) {
   // The step matrix proxy at τ = 1 (entries up to ~1e11), analyzed with the ordering fills use.
   const SparseRowMatrix A = test::step_matrix_proxy(24, 1.0);

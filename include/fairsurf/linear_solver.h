@@ -58,6 +58,9 @@ enum class FillOrdering {
 struct LinearSolverOptions {
   LinearSolverKind kind = LinearSolverKind::mumps;
   FillOrdering ordering = FillOrdering::automatic;
+  /// A is symmetric (to round-off): MUMPS then factors LDLᵀ from its lower triangle, about half
+  /// the work of LU; residuals and refinement still use the whole A. UMFPACK and GMRES ignore it.
+  bool symmetric = false;
   ResidualMeasure residual_measure = ResidualMeasure::backward_error;
   /// Accept x once the residual measure is at most this.
   double residual_tolerance = 1e-12;
