@@ -1,4 +1,4 @@
-// fairsurf — sparse non-symmetric linear systems A x = b: one interface, three back ends.
+// fairsurf — sparse linear systems A x = b (non-symmetric in general): one interface, three back ends.
 //
 // Made for the flow's step matrix (I − τ (P′Q)_FF) of METHOD §5: non-symmetric, a 3-ring stencil
 // (≈ 37 non-zeros a row), entries growing like τ/h⁶, the sparsity pattern fixed while the mesh
@@ -15,7 +15,8 @@
 // 1e-16. Both figures are reported.
 //
 // Back ends (docs/solvers.md has the measured comparison):
-//   mumps    sequential MUMPS LU, automatic ordering (ICNTL(7) = 7). The default and the fastest.
+//   mumps    sequential MUMPS LU (LDLᵀ with options.symmetric), automatic ordering (ICNTL(7) = 7)
+//            or QAMD (options.ordering). The default and the fastest.
 //   umfpack  UMFPACK LU, 64-bit interface (umfpack_dl_*), METIS ordering, AMD if METIS is missing.
 //   gmres    restarted GMRES preconditioned by incomplete LU with threshold (Eigen's ILUT).
 //            Needs near-complete fill (drop ≈ 1e-5, large fill factor) once τ ≫ h⁶.
