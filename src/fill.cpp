@@ -256,6 +256,8 @@ FairRegionOptions FillOptions::default_fairing() {
   FairRegionOptions o;
   o.harmonic_start_iterations = 8;
   o.flow.tau = 1e-2;
+  // Patch-sized systems: a minimum-degree ordering analyzes ~30x faster than nested dissection.
+  o.harmonic_solver.ordering = o.flow.solver.ordering = FillOrdering::minimum_degree;
   return o;
 }
 

@@ -68,24 +68,32 @@ void assemble(const Vertices& V, const Faces& F, const Region& region, int order
     inverse_mass[i] = areas[i] > 0 ? 1.0 / areas[i] : 0.0;
 
   // M(M⁻¹L)^k = L(M⁻¹L)^(k−1): the rows of ∆^k scaled by the vertex areas, which keeps the system
-  // as well conditioned as the plain Laplacian's powers allow.
-  Eigen::SparseMatrix<double> A = L;
-  for (int k = 1; k < order; ++k) A = (A * inverse_mass.asDiagonal() * L).pruned();
-
+  // as well conditioned as the plain Laplacian's powers allow. Only the free rows are formed, each
+  // product in row storage (L is symmetric, so its column storage is its row storage).
   const int n = region.num_free();
+  const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> L_rows(
+      L.rows(), L.cols(), L.nonZeros(), L.outerIndexPtr(), L.innerIndexPtr(), L.valuePtr());
+  Eigen::SparseMatrix<double, Eigen::RowMajor> rows(n, L.cols());
+  {
+    std::vector<Eigen::Triplet<double>> picked;
+    for (int r = 0; r < n; ++r)
+      for (decltype(L_rows)::InnerIterator it(L_rows, region.free_vertices[r]); it; ++it)
+        picked.emplace_back(r, static_cast<int>(it.col()), it.value());
+    rows.setFromTriplets(picked.begin(), picked.end());
+  }
+  for (int k = 1; k < order; ++k) rows = rows * inverse_mass.asDiagonal() * L_rows;
+
   std::vector<Eigen::Triplet<double>> free_part;
+  free_part.reserve(static_cast<std::size_t>(rows.nonZeros()));
   rhs = Eigen::MatrixX3d::Zero(n, 3);
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = A;
-  for (int r = 0; r < n; ++r) {
-    const int v = region.free_vertices[r];
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows, v); it; ++it) {
+  for (int r = 0; r < n; ++r)
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows, r); it; ++it) {
       const int c = region.free_index[it.col()];
       if (c >= 0)
         free_part.emplace_back(r, c, it.value());
       else
         rhs.row(r) -= it.value() * V.row(it.col());
     }
-  }
   system.resize(n, n);
   system.setFromTriplets(free_part.begin(), free_part.end());
 }
@@ -125,7 +133,9 @@ HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Region& region,
                           " is not connected to any fixed vertex, so the fairing is undetermined");
   const int n = region.num_free();
   const double tolerance = options.tolerance * mean_free_edge_length(V, topo, region);
-  auto solver = make_linear_solver(options.solver);
+  LinearSolverOptions solver_options = options.solver;
+  solver_options.symmetric = true;  // the free block of L(M⁻¹L)^(k−1) is symmetric
+  auto solver = make_linear_solver(solver_options);
   Eigen::SparseMatrix<double, Eigen::RowMajor> system, analyzed;
   Eigen::MatrixX3d rhs, x(n, 3), input(n, 3);
   for (int r = 0; r < n; ++r) input.row(r) = V.row(region.free_vertices[r]);

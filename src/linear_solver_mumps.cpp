@@ -59,7 +59,7 @@ class MumpsSolver final : public LinearSolver {
   explicit MumpsSolver(const LinearSolverOptions& options) : LinearSolver(options) {
     id_.job = -1;
     id_.par = 1;  // the host takes part in the factorization (the only process)
-    id_.sym = 0;  // unsymmetric
+    id_.sym = options.symmetric ? 2 : 0;  // general symmetric (LDLᵀ with pivoting), or unsymmetric
     id_.comm_fortran = kUseCommWorld;
     dmumps_c(&id_);
     if (infog(id_, 1) < 0) {
@@ -74,7 +74,7 @@ class MumpsSolver final : public LinearSolver {
     icntl(id_, 2) = -1;
     icntl(id_, 3) = -1;
     icntl(id_, 4) = 0;
-    icntl(id_, 7) = 7;  // automatic choice of the fill-reducing ordering
+    icntl(id_, 7) = options.ordering == FillOrdering::minimum_degree ? 6 : 7;  // QAMD, or MUMPS chooses
   }
 
   ~MumpsSolver() override {
@@ -85,15 +85,20 @@ class MumpsSolver final : public LinearSolver {
  private:
   void analyze_pattern() override {
     const SparseRowMatrix& A = matrix();
-    rows_.resize(A.nonZeros());
-    cols_.resize(A.nonZeros());
+    rows_.clear();
+    cols_.clear();
+    passed_.clear();
     for (int i = 0; i < A.outerSize(); ++i)
       for (int k = A.outerIndexPtr()[i]; k < A.outerIndexPtr()[i + 1]; ++k) {
-        rows_[k] = i + 1;
-        cols_[k] = A.innerIndexPtr()[k] + 1;
+        const int j = A.innerIndexPtr()[k];
+        if (id_.sym != 0 && j > i) continue;  // MUMPS would add (j, i) to (i, j): lower triangle only
+        rows_.push_back(i + 1);
+        cols_.push_back(j + 1);
+        passed_.push_back(k);
       }
+    values_.resize(passed_.size());
     id_.n = static_cast<int>(A.rows());
-    id_.nnz = A.nonZeros();
+    id_.nnz = static_cast<MUMPS_INT8>(passed_.size());
     id_.irn = rows_.data();
     id_.jcn = cols_.data();
     run(1, "analyze");
@@ -102,7 +107,9 @@ class MumpsSolver final : public LinearSolver {
 
   void factorize_values() override {
     for (int attempt = 0;; ++attempt) {
-      id_.a = const_cast<double*>(matrix().valuePtr());  // MUMPS only reads a
+      const double* all = matrix().valuePtr();
+      for (std::size_t e = 0; e < passed_.size(); ++e) values_[e] = all[passed_[e]];
+      id_.a = values_.data();
       id_.job = 2;
       dmumps_c(&id_);
       if (!is_workspace_error(infog(id_, 1)) || attempt == kMaxWorkspaceRetries) break;
@@ -134,7 +141,9 @@ class MumpsSolver final : public LinearSolver {
   }
 
   DMUMPS_STRUC_C id_{};
-  std::vector<int> rows_, cols_;  // 1-based coordinates, in the stored matrix's value order
+  std::vector<int> rows_, cols_;  // 1-based coordinates of the entries passed to MUMPS
+  std::vector<int> passed_;       // their positions in the stored matrix's values
+  std::vector<double> values_;    // their values
 };
 
 }  // namespace

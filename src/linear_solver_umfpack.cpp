@@ -53,9 +53,10 @@ class UmfpackSolver final : public LinearSolver {
   void analyze_pattern() override {
     free_factors();
     build_columns();
-    control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
+    const bool minimum_degree = options().ordering == FillOrdering::minimum_degree;
+    control_[UMFPACK_ORDERING] = minimum_degree ? UMFPACK_ORDERING_AMD : UMFPACK_ORDERING_METIS;
     Index status = symbolic();
-    if (status != UMFPACK_OK) {  // METIS missing from this UMFPACK build, or failing: AMD instead
+    if (status != UMFPACK_OK && !minimum_degree) {  // METIS missing from this UMFPACK build, or failing: AMD instead
       control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_AMD;
       status = symbolic();
     }

@@ -2,6 +2,7 @@
 #include <fairsurf/harmonic.h>
 #include <fairsurf/membrane.h>
 #include <fairsurf/region.h>
+#include <fairsurf/submesh.h>
 #include <fairsurf/topology.h>
 
 #include <Eigen/Geometry>
@@ -14,18 +15,10 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-// Faces with at least one free vertex: the only ones whose weights enter the free rows.
-std::vector<int> faces_touching(const Faces& F, const std::vector<int>& free_index) {
-  std::vector<int> faces;
-  for (int f = 0; f < F.rows(); ++f)
-    if (free_index[F(f, 0)] >= 0 || free_index[F(f, 1)] >= 0 || free_index[F(f, 2)] >= 0)
-      faces.push_back(f);
-  return faces;
-}
-
-double area_of(const Vertices& V, const Faces& F, const std::vector<int>& faces) {
+// The area of the faces F (#f by 3).
+double area_of(const Vertices& V, const Faces& F) {
   double area = 0.0;
-  for (int f : faces) {
+  for (int f = 0; f < F.rows(); ++f) {
     const Vec3 a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
     area += 0.5 * (b - a).cross(c - a).norm();
   }
@@ -47,24 +40,25 @@ MembraneReport relax_membrane(Vertices& V, const Faces& F, std::span<const int> 
     if (free_index[v] < 0) free_index[v] = static_cast<int>(free_list.size()), free_list.push_back(v);
   }
   const Topology topo = build_topology(F, static_cast<int>(V.rows()));  // checks the faces
-  const Region region = make_region(topo, free_list, Continuity::G0);
-  const std::vector<int> faces = faces_touching(F, free_index);
+  // The free rows of ∆ involve only the faces touching a free vertex: solve on those alone, so that
+  // relaxing a hole's patch costs in proportion to the patch, not to the mesh around it.
+  Submesh sub = extract_neighbourhood(V, F, topo, free_list, 0);
+  const Region region = make_region(build_topology(sub.mesh.F, sub.mesh.num_vertices()), sub.free_local,
+                                    Continuity::G0);
   HarmonicOptions membrane;
   membrane.order = 1;  // ∆x = 0 with the cotangent weights of the current positions
   membrane.solver = options.solver;
 
   MembraneReport report;
-  report.area.push_back(area_of(V, F, faces));
+  report.area.push_back(area_of(sub.mesh.V, sub.mesh.F));
   for (int it = 0; it < options.iterations; ++it) {
-    Eigen::MatrixX3d before(free_list.size(), 3);
-    for (std::size_t r = 0; r < free_list.size(); ++r) before.row(r) = V.row(free_list[r]);
-    harmonic_fair(V, F, region, membrane);
-    report.max_displacement = 0.0;
-    for (std::size_t r = 0; r < free_list.size(); ++r)
-      report.max_displacement = std::max(report.max_displacement, (V.row(free_list[r]) - before.row(r)).norm());
-    report.area.push_back(area_of(V, F, faces));
+    const Vertices before = sub.mesh.V;
+    harmonic_fair(sub.mesh.V, sub.mesh.F, region, membrane);
+    report.max_displacement = (sub.mesh.V - before).rowwise().norm().maxCoeff();
+    report.area.push_back(area_of(sub.mesh.V, sub.mesh.F));
     ++report.iterations;
   }
+  write_back_free(sub, V);
   return report;
 }
 

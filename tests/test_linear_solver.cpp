@@ -84,6 +84,39 @@ TEST_P(LinearSolverTest, RandomWellConditionedSystemsReachTheTolerance) {
   }
 }
 
+TEST_P(LinearSolverTest, SymmetricSystemsSolvedFromTheLowerTriangle) {
+  // A + Aᵀ of a diagonally dominant matrix is symmetric, indefinite and still dominant.
+  const SparseRowMatrix B = random_dominant_matrix(800, 8, 5);
+  const SparseRowMatrix A = SparseRowMatrix(B + SparseRowMatrix(B.transpose()));
+  const Eigen::VectorXd exact = random_vector(800, 105);
+  const Eigen::VectorXd b = A * exact;
+  LinearSolverOptions options;
+  options.symmetric = true;
+  auto solver = make(options);
+  solver->analyze(A);
+  solver->factorize(A);
+  const Eigen::VectorXd x = solver->solve(b);
+  EXPECT_LE(solver->report().backward_error, 1e-12);
+  EXPECT_LT(relative_error(x, exact), 1e-9);
+}
+
+TEST_P(LinearSolverTest, MinimumDegreeOrderingSolvesTheStepMatrixProxy) {
+  // The step matrix proxy at τ = 1 (entries up to ~1e11), analyzed with the ordering fills use.
+  const SparseRowMatrix A = test::step_matrix_proxy(24, 1.0);
+  const Eigen::VectorXd exact = random_vector(static_cast<int>(A.rows()), 11);
+  const Eigen::VectorXd b = A * exact;
+  LinearSolverOptions options;
+  options.ordering = FillOrdering::minimum_degree;
+  options.ilut_drop_tolerance = 1e-8;
+  options.ilut_fill_factor = 60;
+  auto solver = make(options);
+  solver->analyze(A);
+  solver->factorize(A);
+  solver->solve(b);
+  EXPECT_LE(solver->report().backward_error, 1e-12);
+  EXPECT_EQ(solver->report().ordering, GetParam() == LinearSolverKind::mumps ? "QAMD" : "AMD");
+}
+
 TEST_P(LinearSolverTest, BadlyScaledStepMatrixProxyPassesTheResidualCheck) {
   // 24 by 24 torus grid, h = 1/24: τ/h⁶ ≈ 1.9e8 and the entries span about 2e8 .. 1e11.
   LinearSolverOptions options;

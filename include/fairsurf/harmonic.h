@@ -33,6 +33,7 @@ struct HarmonicOptions {
   /// Stop iterating once a solve moves no free vertex by more than this times the mean length of
   /// the edges at free vertices (measured on the input).
   double tolerance = 0.0;
+  /// The system's free block of L(M⁻¹L)^(k−1) is symmetric: harmonic_fair always sets `symmetric`.
   LinearSolverOptions solver;
 };
 

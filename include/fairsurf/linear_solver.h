@@ -1,4 +1,4 @@
-// fairsurf — sparse non-symmetric linear systems A x = b: one interface, three back ends.
+// fairsurf — sparse linear systems A x = b (non-symmetric in general): one interface, three back ends.
 //
 // Made for the flow's step matrix (I − τ (P′Q)_FF) of METHOD §5: non-symmetric, a 3-ring stencil
 // (≈ 37 non-zeros a row), entries growing like τ/h⁶, the sparsity pattern fixed while the mesh
@@ -15,7 +15,8 @@
 // 1e-16. Both figures are reported.
 //
 // Back ends (docs/solvers.md has the measured comparison):
-//   mumps    sequential MUMPS LU, automatic ordering (ICNTL(7) = 7). The default and the fastest.
+//   mumps    sequential MUMPS LU (LDLᵀ with options.symmetric), automatic ordering (ICNTL(7) = 7)
+//            or QAMD (options.ordering). The default and the fastest.
 //   umfpack  UMFPACK LU, 64-bit interface (umfpack_dl_*), METIS ordering, AMD if METIS is missing.
 //   gmres    restarted GMRES preconditioned by incomplete LU with threshold (Eigen's ILUT).
 //            Needs near-complete fill once τ ≫ h⁶ (the defaults: drop 1e-6, fill factor 40).
@@ -46,8 +47,21 @@ enum class ResidualMeasure {
   relative_residual,  ///< ‖r‖₂ / ‖b‖₂: meaningful only for well-scaled systems
 };
 
+/// The fill-reducing ordering of the direct back ends' analysis (GMRES ignores it).
+enum class FillOrdering {
+  automatic,  ///< MUMPS chooses (ICNTL(7) = 7: nested dissection on large systems); UMFPACK: METIS
+  /// Approximate minimum degree (MUMPS QAMD, UMFPACK AMD). On a hole patch's systems (~10k unknowns,
+  /// ∆³ or the step matrix) the analysis is ~30× cheaper than nested dissection's and the
+  /// factorization no slower (docs/fill.md, benchmark); on very large systems prefer automatic.
+  minimum_degree,
+};
+
 struct LinearSolverOptions {
   LinearSolverKind kind = LinearSolverKind::mumps;
+  FillOrdering ordering = FillOrdering::automatic;
+  /// A is symmetric (to round-off): MUMPS then factors LDLᵀ from its lower triangle, about half
+  /// the work of LU; residuals and refinement still use the whole A. UMFPACK and GMRES ignore it.
+  bool symmetric = false;
   ResidualMeasure residual_measure = ResidualMeasure::backward_error;
   /// Accept x once the residual measure is at most this.
   double residual_tolerance = 1e-12;

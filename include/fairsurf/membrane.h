@@ -21,7 +21,8 @@ namespace fairsurf {
 
 struct MembraneOptions {
   int iterations = 3;            ///< solves, each with weights from the previous positions
-  LinearSolverOptions solver{};  ///< the solver of the (#free by #free) Laplace systems
+  /// The solver of the (#free by #free) Laplace systems (patch-sized: minimum-degree ordering).
+  LinearSolverOptions solver{.ordering = FillOrdering::minimum_degree};
 };
 
 struct MembraneReport {
