@@ -106,7 +106,8 @@ to its scale-aware default time (2h)^order (h the mean edge length), i.e. over t
 length h' = t^(1/order), unless a time is given; mean curvature flow is also run to 3 times its time.
 Tables: steps and energies from `smooth --log`, H quantiles from `curvature --json`; volume, mean
 distance to the centroid and vertex deviation (from the clean mesh, over its bounding-box diagonal)
-by `scripts/gallery_measure.py`.
+by `scripts/gallery_measure.py`. `fairsurf smooth` also relaxes vertices tangentially (docs/flow.md,
+'Real scans'), so the vertex deviation includes tangential motion, not only a change of shape.
 
 EOF
 
