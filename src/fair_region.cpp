@@ -36,6 +36,14 @@ FlowOptions FairRegionOptions::default_fair_flow_options() {
   return o;
 }
 
+FairRegionOptions FairRegionOptions::harmonic_started() {
+  FairRegionOptions o;
+  o.harmonic_start_iterations = 8;
+  o.flow.tau = 1e-2;
+  o.harmonic_solver.ordering = o.flow.solver.ordering = FillOrdering::minimum_degree;
+  return o;
+}
+
 FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
                              const FairRegionOptions& options, const FlowObserver& observer) {
   const auto start = std::chrono::steady_clock::now();

@@ -41,17 +41,30 @@ TEST_F(CliFair, SphereCapSceneIsFairedBackToTheSphere) {
   const CliRun made = run_cli("scene sphere-cap -o '" + scene + "'");
   ASSERT_EQ(made.exit_code, 0) << made.out;
   EXPECT_NE(made.out.find("free region: 161 of 642 vertices"), std::string::npos) << made.out;
+  const auto radius_error = [](const std::string& file) {
+    const Mesh m = read_mesh(file);
+    double worst = 0;
+    for (int v = 0; v < m.num_vertices(); ++v) worst = std::max(worst, std::abs(m.V.row(v).norm() - 1.0));
+    return worst;
+  };
+  // --start flat: the flattened cap as given, METHOD §8.6's run (1.4e-4 at 642 vertices).
+  const std::string flat = path("cap_flat.ply");
+  const CliRun from_flat = run_cli("fair '" + scene + "' -o '" + flat + "' --region-property free --start flat --quiet");
+  ASSERT_EQ(from_flat.exit_code, 0) << from_flat.out;
+  // The default start, the re-evaluated ∆³ solution, settles in a few steps but also moves vertices
+  // tangentially; on this coarse cap the discrete steady state of that distribution is farther from
+  // the sphere (1.4e-3; both converge like h², fair_region tests and bench_fair: 6e-5 at 2.5k).
   const CliRun run = run_cli("fair '" + scene + "' -o '" + out + "' --region-property free --log '" + log + "' --quiet");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("faired " + scene + ": 161 free vertices, G2 (sixth-order flow"), std::string::npos) << run.out;
-  const Mesh m = read_mesh(out);
-  double worst = 0;
-  for (int v = 0; v < m.num_vertices(); ++v) worst = std::max(worst, std::abs(m.V.row(v).norm() - 1.0));
-  std::printf("[fair] sphere-cap via the CLI: max|r - 1| %.3g\n", worst);
-  EXPECT_LT(worst, 1e-3);  // METHOD §8.6: 1.4e-4 at 642 vertices
+  const double worst_flat = radius_error(flat), worst = radius_error(out);
+  std::printf("[fair] sphere-cap via the CLI: max|r - 1| %.3g (--start flat %.3g)\n", worst, worst_flat);
+  EXPECT_LT(worst_flat, 1e-3);
+  EXPECT_LT(worst, 2e-3);
   std::ifstream in(log);
   const nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_EQ(j["continuity_supported"], "G2");
+  EXPECT_GE(j["harmonic_start_solves"].get<int>(), 1);
   EXPECT_LT(j["continuity_measured"]["max_mean_curvature_jump"].get<double>(), 0.05);
 }
 

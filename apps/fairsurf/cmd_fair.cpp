@@ -18,6 +18,7 @@ namespace {
 struct FairArgs {
   std::string input, output, region_file, region_property;
   std::vector<double> region_sphere;
+  std::string start = "harmonic";
   RegionFairingArgs fairing;
 };
 
@@ -48,7 +49,8 @@ void run_fair(const FairArgs& args) {
   const RegionFairingArgs& f = args.fairing;
   check_output_path(args.output, {args.input}, f.force);
   if (!f.log.empty()) check_output_path(f.log, {args.input}, f.force);
-  const FairRegionOptions options = region_fairing_options(f);
+  const FairRegionOptions options = region_fairing_options(
+      f, args.start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{});
   Mesh mesh = read_input(args.input);
   const std::vector<int> region = selected_region(args, mesh);
 
@@ -81,6 +83,10 @@ void setup_fair(CLI::App& app) {
   group->add_option("--region-property", args->region_property,
                     "Per-vertex property (PLY) whose non-zero vertices are free");
   group->require_option(1);
+  cmd->add_option("--start", args->start,
+                  "Flow start: harmonic (default: the re-evaluated cotangent Delta^k solution, a few "
+                  "Newton-like steps) or flat (the region as given, tau doubling from 1e-9)")
+      ->check(CLI::IsMember({"harmonic", "flat"}));
   add_region_fairing_options(cmd, args->fairing);
   cmd->callback([args] { run_fair(*args); });
 }

@@ -23,8 +23,7 @@ void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args) {
   cmd->add_flag("--force", args.force, "Allow outputs to overwrite an input");
 }
 
-FairRegionOptions region_fairing_options(const RegionFairingArgs& args) {
-  FairRegionOptions o;
+FairRegionOptions region_fairing_options(const RegionFairingArgs& args, FairRegionOptions o) {
   o.continuity = parse_continuity(args.continuity);
   o.method = parse_fair_method(args.method);
   o.flow.functions = args.functions;
@@ -49,6 +48,7 @@ nlohmann::json to_json(const FairRegionReport& r) {
                    {"seconds", r.seconds}};
   if (r.method == FairMethod::flow) {
     j["flow"] = to_string(r.flow_kind);
+    j["harmonic_start_solves"] = r.harmonic.iterations;  // 0: the flow started from the input
     j.update(to_json(r.flow));
   } else {
     j["harmonic"] = {{"order", r.harmonic.order}, {"backward_error", r.harmonic.backward_error}};
@@ -58,13 +58,17 @@ nlohmann::json to_json(const FairRegionReport& r) {
 
 std::string summary(const FairRegionReport& r) {
   char text[256];
-  if (r.method == FairMethod::harmonic)
+  if (r.method == FairMethod::harmonic) {
     std::snprintf(text, sizeof text, "%s (harmonic k = %d)", std::string(to_string(r.supported)).c_str(),
                   r.harmonic.order);
-  else
-    std::snprintf(text, sizeof text, "%s (%s flow, %d steps, %s, max|V| %.3g)",
-                  std::string(to_string(r.supported)).c_str(), to_string(r.flow_kind), r.flow.accepted_steps,
-                  to_string(r.flow.stop_reason), r.flow.final_max_velocity);
+  } else {
+    std::string start;
+    if (r.harmonic.iterations > 0)
+      start.append("harmonic start (").append(std::to_string(r.harmonic.iterations)).append(" solves), ");
+    std::snprintf(text, sizeof text, "%s (%s flow, %s%d steps, %s, max|V| %.3g)",
+                  std::string(to_string(r.supported)).c_str(), to_string(r.flow_kind), start.c_str(),
+                  r.flow.accepted_steps, to_string(r.flow.stop_reason), r.flow.final_max_velocity);
+  }
   std::string out = text;
   if (r.supported != r.requested)
     out += "; requested " + std::string(to_string(r.requested)) + " but the fixed rings support only " +

@@ -25,8 +25,9 @@ struct RegionFairingArgs {
 /// Adds --continuity, --f, --method, --max-steps, --log, --force, --quiet to `cmd`.
 void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args);
 
-/// The fair_region options the flags ask for (throws InvalidArgument for a bad name).
-FairRegionOptions region_fairing_options(const RegionFairingArgs& args);
+/// `base` with what the flags ask for (throws InvalidArgument for a bad name). `fair` starts from
+/// FairRegionOptions::harmonic_started(), `blend` from the plain defaults (fair_region.h says why).
+FairRegionOptions region_fairing_options(const RegionFairingArgs& args, FairRegionOptions base = {});
 
 nlohmann::json to_json(const ContinuityMeasure& measure);
 /// Method, continuity requested and supported, flow kind and run (or harmonic figures), measure.
