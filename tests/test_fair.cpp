@@ -68,6 +68,19 @@ TEST_F(CliFair, SphereCapSceneIsFairedBackToTheSphere) {
   EXPECT_LT(j["continuity_measured"]["max_mean_curvature_jump"].get<double>(), 0.05);
 }
 
+TEST_F(CliFair, AFlowStoppedAtItsStepLimitIsReportedAsNotSteady) {
+  const std::string scene = path("cap.ply"), out = path("cap_out.ply");
+  ASSERT_EQ(run_cli("scene sphere-cap -o '" + scene + "'").exit_code, 0);
+  const CliRun cut = run_cli("fair '" + scene + "' -o '" + out + "' --region-property free --max-steps 2 --quiet");
+  ASSERT_EQ(cut.exit_code, 0) << cut.out;
+  EXPECT_NE(cut.out.find("2 steps, max steps, max|V| "), std::string::npos) << cut.out;
+  EXPECT_NE(cut.out.find("; NOT steady: the result is the flow's state after its last step"), std::string::npos)
+      << cut.out;
+  const CliRun full = run_cli("fair '" + scene + "' -o '" + out + "' --region-property free --quiet --force");
+  ASSERT_EQ(full.exit_code, 0) << full.out;
+  EXPECT_EQ(full.out.find("NOT steady"), std::string::npos) << full.out;
+}
+
 TEST_F(CliFair, RegionErrorsHaveClearMessagesAndExitCodes) {
   const std::string mesh = test::data_path("sphere_16k.off"), out = path("out.ply");
   CliRun r = run_cli("fair '" + mesh + "' -o '" + out + "' --region-sphere 0,0,100,0.1");

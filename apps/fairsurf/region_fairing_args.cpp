@@ -70,6 +70,9 @@ std::string summary(const FairRegionReport& r) {
                   r.flow.accepted_steps, to_string(r.flow.stop_reason), r.flow.final_max_velocity);
   }
   std::string out = text;
+  if (r.method == FairMethod::flow && r.flow.stop_reason != FlowStopReason::steady)
+    out += "; NOT steady: the result is the flow's state after its last step (raise --max-steps, or see "
+           "docs/blend.md for regions with no steady state)";
   if (r.supported != r.requested)
     out += "; requested " + std::string(to_string(r.requested)) + " but the fixed rings support only " +
            std::string(to_string(r.supported));

@@ -33,8 +33,9 @@ nlohmann::json to_json(const ContinuityMeasure& measure);
 /// Method, continuity requested and supported, flow kind and run (or harmonic figures), measure.
 nlohmann::json to_json(const FairRegionReport& report);
 
-/// "G2 (sixth-order flow, 17 steps, steady, max|V| 3.1e-2)" or "G2 (harmonic k = 3)", with
-/// "requested G2, rings support G1" when the fixed rings forced a fallback.
+/// "G2 (sixth-order flow, 17 steps, steady, max|V| 3.1e-2)" or "G2 (harmonic k = 3)", with a
+/// "NOT steady" warning when the flow stopped at its step limit, and "requested G2 but the fixed
+/// rings support only G1" when the fixed rings forced a fallback.
 std::string summary(const FairRegionReport& report);
 
 }  // namespace fairsurf::cli
