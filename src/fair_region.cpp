@@ -4,7 +4,9 @@
 #include <fairsurf/topology.h>
 #include <fairsurf/validate.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 
 namespace fairsurf {
 
@@ -41,8 +43,53 @@ FairRegionOptions FairRegionOptions::harmonic_started() {
   o.harmonic_start_iterations = 8;
   o.flow.tau = 1e-2;
   o.harmonic_solver.ordering = o.flow.solver.ordering = FillOrdering::minimum_degree;
+  o.flow.step_kind = FlowStepKind::energy_descent;
+  o.flow.steady_energy_tolerance = 1e-5;
+  o.flow.step_control.max_consecutive_rejections = 30;
+  o.linear_floor = true;
   return o;
 }
+
+namespace {
+
+// "did not settle (200 steps, max|V| 1.2e9 -> 3.3e7)" or "diverged (...)".
+std::string unsettled_reason(const FlowReport& flow) {
+  char figures[160];
+  std::snprintf(figures, sizeof figures, "%d steps without a steady state, max|V| %.3g -> %.3g",
+                flow.accepted_steps, flow.initial_max_velocity, flow.final_max_velocity);
+  const bool diverged = !(flow.final_max_velocity <= flow.initial_max_velocity);
+  return std::string(diverged ? "diverged" : "did not settle") + " (" + figures + ")";
+}
+
+// Runs the flow on the submesh. With the linear floor (and a ∆^k start), a flow that throws or does
+// not settle leaves the ∆^k solution in place, reported linear; without it, a throw leaves the last
+// accepted state in the caller's mesh and propagates.
+void run_flow_with_floor(Submesh& sub, const Region& region, const FairRegionOptions& options,
+                         const FlowObserver& observer, FairRegionReport& report, Vertices& caller) {
+  FlowOptions flow = options.flow;
+  flow.kind = report.flow_kind = flow_for(region.supported);
+  const bool floor = options.linear_floor && options.harmonic_start_iterations > 0;
+  const Vertices start = floor ? sub.mesh.V : Vertices();
+  std::string failure;
+  try {
+    report.flow = run_flow(sub.mesh.V, sub.mesh.F, region, flow, observer);
+    if (report.flow.stop_reason != FlowStopReason::steady) failure = unsettled_reason(report.flow);
+  } catch (const NumericalError& e) {
+    if (!floor) {
+      write_back_free(sub, caller);  // the last accepted state: nothing is lost
+      throw;
+    }
+    failure = e.what();
+  }
+  if (!floor || failure.empty()) return;
+  sub.mesh.V = start;
+  report.linear = true;
+  report.note = std::string("the ") + to_string(report.flow_kind) + " flow " + failure +
+                "; kept the linear ∆" + std::to_string(static_cast<int>(region.supported) + 1) +
+                " solution it started from";
+}
+
+}  // namespace
 
 FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
                              const FairRegionOptions& options, const FlowObserver& observer) {
@@ -62,23 +109,15 @@ FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
   HarmonicOptions harmonic;
   harmonic.order = static_cast<int>(region.supported) + 1;
   harmonic.solver = options.harmonic_solver;
+  harmonic.iterations = std::max(1, options.harmonic_start_iterations);
+  harmonic.tolerance = options.harmonic_start_tolerance;
   if (options.method == FairMethod::harmonic) {
     report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, region, harmonic);
+    report.linear = true;
   } else {
-    if (options.harmonic_start_iterations > 0) {
-      HarmonicOptions start = harmonic;
-      start.iterations = options.harmonic_start_iterations;
-      start.tolerance = options.harmonic_start_tolerance;
-      report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, region, start);
-    }
-    FlowOptions flow = options.flow;
-    flow.kind = report.flow_kind = flow_for(region.supported);
-    try {
-      report.flow = run_flow(sub.mesh.V, sub.mesh.F, region, flow, observer);
-    } catch (const NumericalError&) {
-      write_back_free(sub, mesh.V);  // the last accepted state: nothing is lost
-      throw;
-    }
+    if (options.harmonic_start_iterations > 0)
+      report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, region, harmonic);
+    run_flow_with_floor(sub, region, options, observer, report, mesh.V);
   }
   write_back_free(sub, mesh.V);
   report.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, sub.free_local);

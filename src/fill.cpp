@@ -190,7 +190,7 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
     };
     fairing = fair_region(sub.mesh, sub.free_local, fairing_options, step_observer);
     const FlowReport& flow = fairing.flow;
-    if (fairing.method == FairMethod::flow && flow.stop_reason != FlowStopReason::steady) {
+    if (!fairing.linear && flow.stop_reason != FlowStopReason::steady) {
       const bool diverged = !(flow.final_max_velocity <= flow.initial_max_velocity);
       char figures[160];
       std::snprintf(figures, sizeof figures, "%d steps without a steady state, max|V| %.3g -> %.3g",
@@ -209,7 +209,7 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
   }
 
   const PatchOwnership own = patch_ownership(patch, mesh.num_vertices(), loops, group);
-  const bool flowed = fairing.method == FairMethod::flow && !patch.free_vertices.empty();
+  const bool flowed = !fairing.linear && !patch.free_vertices.empty();
   for (int h : group) {
     HoleReport& r = reports[h];
     std::vector<int> free;
@@ -218,9 +218,11 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
     r.vertices_added = static_cast<int>(free.size());
     r.faces_added = static_cast<int>(std::count(own.face_hole.begin(), own.face_hole.end(), h));
     r.supported = fairing.supported;
+    r.linear = fairing.linear;
     if (fairing.supported < fairing.requested)
       r.note = "the mesh around the hole has fewer than " + std::to_string(rings_needed(fairing.requested)) +
                " complete rings: faired with " + std::string(to_string(fairing.supported));
+    if (!fairing.note.empty()) r.note += (r.note.empty() ? "" : "; ") + fairing.note;
     r.steps = flowed ? fairing.flow.accepted_steps : 0;
     r.harmonic_solves = fairing.harmonic.iterations;
     r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();
@@ -287,7 +289,8 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
       for (int other : group)
         if (other != h) report.holes[h].filled_with.push_back(other);
     const auto group_start = Clock::now();
-    // Try the requested continuity, then (with fallback_on_failure) each lower one.
+    // Try the requested fairing, then (with fallback_on_failure) the linear ∆^k solutions from the
+    // requested continuity down: never a flow the user did not ask for.
     FairRegionOptions fairing = options.fairing;
     std::string reason, first_failure;
     for (;;) {
@@ -296,15 +299,19 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
       } catch (const Error& e) {
         reason = e.what();
       }
-      if (reason.empty() || !options.fallback_on_failure || fairing.continuity == Continuity::G0) break;
+      if (reason.empty() || !options.fallback_on_failure) break;
+      if (fairing.method == FairMethod::harmonic && fairing.continuity == Continuity::G0) break;
       if (first_failure.empty()) first_failure = reason;
-      fairing.continuity = static_cast<Continuity>(static_cast<int>(fairing.continuity) - 1);
+      if (fairing.method == FairMethod::harmonic)
+        fairing.continuity = static_cast<Continuity>(static_cast<int>(fairing.continuity) - 1);
+      fairing.method = FairMethod::harmonic;
     }
     mark(report.holes, group, reason.empty() ? HoleStatus::filled : HoleStatus::failed, reason);
     if (reason.empty() && !first_failure.empty())
       for (int h : group)
         report.holes[h].note = "the " + std::string(to_string(options.fairing.continuity)) + " fill failed (" +
-                               first_failure + "); filled with " + std::string(to_string(fairing.continuity));
+                               first_failure + "); filled with " +
+                               delivered_label(fairing.continuity, report.holes[h].linear);
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
   }
   for (const auto& r : report.holes) {

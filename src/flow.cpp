@@ -1,3 +1,4 @@
+#include "energy_descent.h"
 #include "flow_step.h"
 
 #include <fairsurf/errors.h>
@@ -48,6 +49,8 @@ void check_options(const FlowOptions& o) {
     problem = "tangential_relaxation must lie in [0, 1]";
   else if (o.border_fixed_rings < 0) problem = "border_fixed_rings must be non-negative";
   else if (o.refactor_interval < 1) problem = "refactor_interval must be at least 1";
+  else if (!(o.steady_energy_tolerance >= 0)) problem = "steady_energy_tolerance must be non-negative";
+
   else if (!(c.max_displacement_ratio > 0)) problem = "step_control.max_displacement_ratio must be positive";
   else if (std::isnan(c.jacobian_dominance)) problem = "step_control.jacobian_dominance must not be NaN";
   else if (!(c.max_energy_growth >= 1)) problem = "step_control.max_energy_growth must be at least 1";
@@ -87,6 +90,14 @@ Eigen::VectorXd local_edge_lengths(const Vertices& X, const Topology& topo) {
   return sum;
 }
 
+// The energy descent's matrix N + diag(A)/(2τ) is symmetric: MUMPS factors it as LDLᵀ.
+LinearSolverOptions step_solver_options(const FlowOptions& options) {
+  LinearSolverOptions solver = options.solver;
+  if (options.step_kind == FlowStepKind::energy_descent && options.kind == FlowKind::sixth_order)
+    solver.symmetric = true;
+  return solver;
+}
+
 // The run: the accepted state (positions X, with its normals, velocity and J) and the trial.
 class FlowRun {
  public:
@@ -94,7 +105,7 @@ class FlowRun {
           const FlowObserver& observer)
       : V_(V), F_(F), region_(region), options_(options), observer_(observer),
         topo_(build_topology(F, static_cast<int>(V.rows()))),
-        solver_(make_linear_solver(options.solver)) {}
+        solver_(make_linear_solver(step_solver_options(options))) {}
 
   FlowReport run();
 
@@ -104,6 +115,10 @@ class FlowRun {
   // One trial step at time step tau; returns true if accepted (record filled either way).
   bool try_step(double tau, StepRecord& record);
   bool solve_step(double tau, StepRecord& record, Eigen::VectorXd& d);
+  void form_matrix(double tau);
+  bool descending() const {
+    return options_.step_kind == FlowStepKind::energy_descent && options_.kind == FlowKind::sixth_order;
+  }
   void limit_displacement(Eigen::VectorXd& d) const;
   bool displacement_ok(const Eigen::VectorXd& d, StepRecord& record) const;
   bool faces_ok(StepRecord& record);
@@ -138,6 +153,7 @@ class FlowRun {
   Eigen::MatrixX3d input_face_direction_;  // of the moving faces at the input
   double energy_ = 0;
   SparseOperator jacobian_, step_matrix_;
+  flow_detail::GaussNewtonModel model_;  // energy_descent's model in place of J
   Eigen::VectorXd damping_;  // what leaves J's diagonal in the step matrix (row_damping)
   bool jacobian_current_ = false;
   // The solver's factorization: valid, of I − τJ at this τ, accepted steps since it was made.
@@ -237,17 +253,7 @@ bool FlowRun::solve_step(double tau, StepRecord& record, Eigen::VectorXd& d) {
   auto start = Clock::now();
   if (!reuse) {
     factorized_ = false;
-    if (!jacobian_current_) {
-      flow_detail::assemble_jacobian(problem_, state_, work_, jacobian_);
-      // Without step control the step is the plain (I − τJ) d = τV of METHOD §5.
-      const auto& control = options_.step_control;
-      flow_detail::row_damping(jacobian_,
-                               control.enabled ? control.jacobian_dominance
-                                               : -std::numeric_limits<double>::infinity(),
-                               damping_);
-      jacobian_current_ = true;
-    }
-    flow_detail::form_step_matrix(jacobian_, damping_, tau, step_matrix_);
+    form_matrix(tau);
     record.assembly_seconds = seconds_since(start);
   }
   // The phase running, timed even if it fails.
@@ -267,7 +273,7 @@ bool FlowRun::solve_step(double tau, StepRecord& record, Eigen::VectorXd& d) {
       phase_seconds = &record.solve_seconds;
       start = Clock::now();
     }
-    d = solver_->solve(tau * velocity_free_);
+    d = descending() ? Eigen::VectorXd(solver_->solve(-model_.gradient)) : solver_->solve(tau * velocity_free_);
     record.solve_seconds = seconds_since(start);
   } catch (const NumericalError& e) {
     *phase_seconds = seconds_since(start);
@@ -278,6 +284,29 @@ bool FlowRun::solve_step(double tau, StepRecord& record, Eigen::VectorXd& d) {
   if (!d.allFinite()) return reject(record, StepRejection::non_finite, "non-finite displacement");
   record.max_displacement = d.cwiseAbs().maxCoeff();
   return true;
+}
+
+// The step matrix at τ: I − τ(J − diag(damping)) for the flow, N + diag(A)/(2τ) for the descent.
+// J (or the model) is assembled once per accepted state.
+void FlowRun::form_matrix(double tau) {
+  if (!jacobian_current_) {
+    if (descending()) {
+      flow_detail::assemble_gauss_newton(problem_, state_, model_);
+    } else {
+      flow_detail::assemble_jacobian(problem_, state_, work_, jacobian_);
+      // Without step control the step is the plain (I − τJ) d = τV of METHOD §5.
+      const auto& control = options_.step_control;
+      flow_detail::row_damping(jacobian_,
+                               control.enabled ? control.jacobian_dominance
+                                               : -std::numeric_limits<double>::infinity(),
+                               damping_);
+    }
+    jacobian_current_ = true;
+  }
+  if (descending())
+    flow_detail::form_descent_matrix(model_, tau, step_matrix_);
+  else
+    flow_detail::form_step_matrix(jacobian_, damping_, tau, step_matrix_);
 }
 
 // Per-vertex trust region: |d_i| ≤ max_displacement_ratio · (mean edge length at i).
@@ -337,7 +366,7 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
   Eigen::VectorXd d;
   if (!solve_step(tau, record, d)) return false;
   if (control && options_.step_control.limit_displacement) limit_displacement(d);
-  if (control && !displacement_ok(d, record)) return false;
+  if (control && !descending() && !displacement_ok(d, record)) return false;
   X_trial_ = X_;
   for (int k = 0; k < region_.num_free(); ++k) {
     const int v = region_.free_vertices[k];
@@ -349,6 +378,9 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
     record.held_back_vertices = hold_back_turned_faces(X_, X_trial_, F_, moving_faces_, references);
   }
   if (!faces_ok(record) || !evaluate_trial(record)) return false;
+  if (descending() && !(state_.energy < energy_))
+    return reject(record, StepRejection::energy,
+                  format("energy %.17g does not decrease from %.17g", state_.energy, energy_));
   const double growth = options_.step_control.max_energy_growth;
   if (control && state_.energy > growth * energy_ + energy_floor_)
     return reject(record, StepRejection::energy,
@@ -365,9 +397,12 @@ FlowReport FlowRun::run() {
   relaxation_ = options_.tangential_relaxation;
   int consecutive_rejections = 0;
   const double relative = options_.steady_relative_tolerance * report_.initial_max_velocity;
+  // energy_descent: the fraction of E the last accepted step removed (∞ before the first).
+  double last_decrease = std::numeric_limits<double>::infinity();
   auto steady = [&] {
     return (tolerance > 0 && report_.final_max_velocity <= tolerance) ||
-           (options_.steady_relative_tolerance > 0 && report_.final_max_velocity <= relative);
+           (options_.steady_relative_tolerance > 0 && report_.final_max_velocity <= relative) ||
+           (descending() && last_decrease < options_.steady_energy_tolerance);
   };
   auto finished = [&] {
     if (steady()) return report_.stop_reason = FlowStopReason::steady, true;
@@ -393,6 +428,7 @@ FlowReport FlowRun::run() {
                           report_.initial_energy));
     }
     if (accepted) {
+      last_decrease = (energy_ - state_.energy) / energy_;
       X_.swap(X_trial_);
       report_.time = tau_try >= remaining ? options_.end_time : report_.time + tau_try;
       record.time = report_.time;
@@ -411,6 +447,11 @@ FlowReport FlowRun::run() {
     if (accepted) continue;
     if (!control.enabled)
       fail(record, std::string(to_string(record.rejection)) + " (step control is off): " + record.detail);
+    if (consecutive_rejections > control.max_consecutive_rejections && descending()) {
+      // No step lowers E any more, however small: E has stopped decreasing.
+      report_.stop_reason = FlowStopReason::steady;
+      break;
+    }
     if (consecutive_rejections > control.max_consecutive_rejections)
       fail(record, std::to_string(consecutive_rejections) +
                        " consecutive rejected steps; the last: " + to_string(record.rejection) +
@@ -465,6 +506,10 @@ const char* to_string(StepRejection reason) {
     case StepRejection::solver: return "solver";
   }
   return "?";
+}
+
+const char* to_string(FlowStepKind kind) {
+  return kind == FlowStepKind::energy_descent ? "energy-descent" : "implicit-flow";
 }
 
 const char* to_string(FlowStopReason reason) {

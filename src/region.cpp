@@ -16,6 +16,13 @@ std::string_view to_string(Continuity c) {
   return "G?";
 }
 
+std::string delivered_label(Continuity continuity, bool linear) {
+  static const char* const geometric[] = {"G0", "G1", "G2"};
+  static const char* const linear_labels[] = {"C0 (linear)", "C1 (linear)", "C2 (linear)"};
+  const int k = std::clamp(static_cast<int>(continuity), 0, 2);
+  return linear ? linear_labels[k] : geometric[k];
+}
+
 Continuity parse_continuity(std::string_view text) {
   if (text.size() == 2 && std::toupper(static_cast<unsigned char>(text[0])) == 'G' &&
       text[1] >= '0' && text[1] <= '2')

@@ -36,7 +36,8 @@ struct FairRegionOptions {
   LinearSolverOptions harmonic_solver;  ///< for method == harmonic (and harmonic_start)
   /// method == flow: start the flow from the cotangent ∆^k x = 0 solution (k = supported
   /// continuity + 1) instead of the given positions, solved up to this many times with the operator
-  /// re-evaluated at the previous solution each time; 0: flow from the given positions. One solve is
+  /// re-evaluated at the previous solution each time; 0: flow from the given positions.
+  /// method == harmonic: the same re-evaluated solution (at least one solve). One solve is
   /// not enough from a flat patch: the operator frozen there carries the patch's kink along its
   /// border, and ∆³ then overshoots by O(1/h) (0.14, 0.27, 0.57 above a unit sphere cap at 386,
   /// 1536, 6460 patch vertices); re-evaluated, it settles within 3e-3 of the sphere in 4 solves.
@@ -45,11 +46,19 @@ struct FairRegionOptions {
   /// length of the edges at free vertices (HarmonicOptions::tolerance).
   double harmonic_start_tolerance = 0.1;
   int submesh_rings = 6;                ///< rings kept around the free region (submesh.h)
+  /// method == flow with a ∆^k start: when the flow throws or ends without a steady state, keep the
+  /// ∆^k solution it started from — the linear C(k−1) result, reported `linear` with the reason —
+  /// instead of throwing or returning an unsettled state. The result is then never worse than the
+  /// classical baseline, and the energy descent (FlowStepKind::energy_descent) only lowers E from it.
+  bool linear_floor = false;
 
   static FlowOptions default_fair_flow_options();
   /// The options that settle a disk-like region (a hole's patch, a marked region) in a few steps:
   /// the flow starts from the re-evaluated cotangent ∆^k solution (harmonic_start_iterations = 8)
-  /// with a Newton-like first step (flow.tau = 1e-2; a rejected step still quarters it), and both
+  /// with a Newton-like first step (flow.tau = 1e-2; a rejected step still quarters it); the
+  /// sixth-order flow descends the energy (FlowStepKind::energy_descent, steady once a step lowers E
+  /// by less than 1e-5 of itself, 30 rejections in a row allowed) and keeps the ∆³ solution as its
+  /// floor (linear_floor); and both
   /// linear solvers use the minimum-degree ordering (patch-sized systems analyze ~30x faster than
   /// with nested dissection). From a flattened cap the plain defaults need 160–300 trial steps and
   /// do not settle beyond ~1k free vertices (bench_fair: max|r − 1| 0.20 and 0.54 at 2.6k and 10k
@@ -67,6 +76,10 @@ struct FairRegionReport {
   FlowReport flow;                             ///< when method == flow
   /// When method == harmonic, or of the flow's start (FairRegionOptions::harmonic_start_iterations)
   HarmonicReport harmonic;
+  /// The result is the linear ∆^k solution (C(k−1), reported as such, not as G(k−1)): method
+  /// harmonic, or the flow's floor (FairRegionOptions::linear_floor); `note` says why for the floor.
+  bool linear = false;
+  std::string note;
   ContinuityMeasure continuity;                ///< measured after fairing
   double seconds = 0;                          ///< wall time of the whole call
 };

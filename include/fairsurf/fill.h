@@ -51,9 +51,10 @@ struct FillOptions {
   bool skip_largest = false;  ///< leave the longest loop (an open surface's outer border) open
   /// Reject a patch whose faces cross the surrounding mesh (face_intersection.h).
   bool check_intersections = true;
-  /// When the fill of a hole fails at the requested continuity (the flow throws or reaches no steady
-  /// state, or the patch crosses the mesh), retry with each lower continuity down to G0; the report's
-  /// `note` says so.
+  /// When the fill of a hole fails (the flow throws or reaches no steady state without a linear
+  /// floor, or the patch crosses the mesh), retry with the linear ∆^k solution at the requested
+  /// continuity, then at each lower one down to the membrane (C0); the report's `note` says so. A
+  /// lower continuity's flow runs only when asked for (fairing.continuity).
   bool fallback_on_failure = true;
 
   /// fair_region's defaults, except that the flow starts from the re-evaluated cotangent ∆^k
@@ -80,6 +81,10 @@ struct HoleReport {
   int faces_added = 0;           ///< this hole's new faces
   Continuity requested = Continuity::G2;
   Continuity supported = Continuity::G2;  ///< the continuity the fairing used
+  /// The patch is the linear ∆^k solution (k = supported + 1): C(k−1), not G(k−1) — the harmonic
+  /// method, or the floor kept when the flow did not settle or its patch crossed the mesh.
+  /// delivered_label(supported, linear) names it ("G2", "C2 (linear)").
+  bool linear = false;
   /// Why `supported` is below `requested` (too few complete rings around the hole, or a failed
   /// attempt at a higher continuity — a throw, no steady state, a crossing: FillOptions::
   /// fallback_on_failure). Empty otherwise.

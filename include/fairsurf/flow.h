@@ -73,6 +73,24 @@ namespace fairsurf {
 
 enum class FlowKind { sixth_order, willmore, surface_diffusion, mean_curvature };
 
+/// How a trial step is computed and judged (docs/flow.md).
+///   implicit_flow   the semi-implicit time step of METHOD §5 with the step control below: follows
+///                   the flow in time (`fairsurf smooth`).
+///   energy_descent  the sixth-order flow (the others step in time regardless): minimizes the discrete energy E directly (Levenberg–Marquardt
+///                   on its Gauss–Newton model, energy_descent.h): (N + diag(A_F)/(2τ)) d_F = −g, a
+///                   trial accepted only if E decreases and no face turns over, τ ← τ·reject_factor
+///                   otherwise (no displacement bound: the energy test is the trust region). Small τ
+///                   gives the flow's explicit step, large τ the Gauss–Newton step. E is monotone
+///                   over accepted steps; the run is steady once E stops decreasing (FlowOptions::
+///                   steady_energy_tolerance, or max_consecutive_rejections rejections in a row: no
+///                   descent is left to round-off). For fill, fair and blend, which need the steady
+///                   state only: on real meshes the fitted EL is not the gradient of the discrete E
+///                   (METHOD §3: composed operators are inconsistent on irregular meshes), so its
+///                   Newton steps can raise E and its small steps stall above zero.
+enum class FlowStepKind { implicit_flow, energy_descent };
+/// "implicit-flow" or "energy-descent".
+const char* to_string(FlowStepKind kind);
+
 /// "sixth-order", "willmore", "surface-diffusion", "mean-curvature".
 const char* to_string(FlowKind kind);
 /// Inverse of to_string ('_' accepted for '-'); throws InvalidArgument naming the valid kinds.
@@ -129,6 +147,9 @@ struct FlowOptions {
   /// Steady state also when max|V| ≤ this · max|V| of the input; 0: off. Scale-free, so it suits
   /// runs that start far from steady (a flattened hole patch starts ~1e8 above its round-off floor).
   double steady_relative_tolerance = 0;
+  /// energy_descent: steady once an accepted step lowers E by less than this fraction of E; 0: off.
+  double steady_energy_tolerance = 0;
+  FlowStepKind step_kind = FlowStepKind::implicit_flow;
 
   StepControlOptions step_control;
   /// Tangential relaxation of every trial state (tangential_relaxation.h): after the normal step,
@@ -181,6 +202,7 @@ struct StepRecord {
   double solve_seconds = 0;
 };
 
+/// steady: max|V| under its tolerance, or (energy_descent) E stopped decreasing.
 enum class FlowStopReason { max_steps, end_time, steady };
 const char* to_string(FlowStopReason reason);
 

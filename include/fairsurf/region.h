@@ -11,6 +11,7 @@
 #include <fairsurf/topology.h>
 
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -24,6 +25,10 @@ constexpr int rings_needed(Continuity c) { return static_cast<int>(c) + 1; }
 
 /// "G0", "G1", "G2".
 std::string_view to_string(Continuity c);
+/// What a fairing delivers: "G2" (a flow with three fixed rings) or, for the linear cotangent ∆^k
+/// solution on the same rings, "C2 (linear)" — curvature continuous only to the order of the
+/// linear operator, not geometrically.
+std::string delivered_label(Continuity continuity, bool linear);
 /// Parses "G0"/"G1"/"G2" (case-insensitive); throws InvalidArgument otherwise.
 Continuity parse_continuity(std::string_view text);
 
