@@ -182,6 +182,16 @@ struct Tally {
     log_ratio += std::log(r);
     worst = std::max(worst, r);
   }
+  int baseline_compared = 0, below_baseline = 0;
+  // fairsurf's mean distance against the ∆³ baseline's on the same input.
+  void baseline(const Row& row) {
+    if (row.ours.count == 0 || !row.has_baseline) return;
+    ++baseline_compared;
+    below_baseline += row.ours.mean < row.baseline.mean;
+  }
+  std::string baseline_text() const {
+    return "below D3 on " + std::to_string(below_baseline) + " of " + std::to_string(baseline_compared);
+  }
   std::string ratio_text() const {
     if (compared == 0) return "no CGAL comparison";
     char text[160];
@@ -332,8 +342,9 @@ Row fill_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) 
 
 std::string fill_summary(const char* label, const Tally& t) {
   char text[512];
-  std::snprintf(text, sizeof text, "%s holes: %d (+%d not disks), failed %d, G2 %d (%s), folds %d, %s", label, t.rows,
-                t.excluded, t.failed, t.g2, percent(t.g2, t.rows).c_str(), t.folds, t.ratio_text().c_str());
+  std::snprintf(text, sizeof text, "%s holes: %d (+%d not disks), failed %d, G2 %d (%s), folds %d, %s, %s", label,
+                t.rows, t.excluded, t.failed, t.g2, percent(t.g2, t.rows).c_str(), t.folds, t.ratio_text().c_str(),
+                t.baseline_text().c_str());
   return text;
 }
 
@@ -368,6 +379,7 @@ std::string fill_section(const std::vector<Loaded>& meshes, bool cgal) {
           t.g2 += row.status == "ok" && all_g2(row.continuity);
           t.folds += row.fold;
           t.ratio(row.ratio);
+          if (row.status == "ok") t.baseline(row);
         }
   const std::string summary = fill_summary("clean", tally[0]) + " | " + fill_summary("noise 0.1h", tally[1]);
   std::printf("fill summary: %s\n\n", summary.c_str());
@@ -479,10 +491,11 @@ std::string fair_section(const std::vector<Loaded>& meshes, bool cgal) {
           tally.steady += row.status == "steady" && row.continuity == "G2";
           tally.folds += row.fold;
           tally.ratio(row.ratio);
+          tally.baseline(row);
         }
   char text[512];
-  std::snprintf(text, sizeof text, "fair: %d steady G2 of %d, errors %d, folds %d, %s", tally.steady, tally.rows,
-                errors, tally.folds, tally.ratio_text().c_str());
+  std::snprintf(text, sizeof text, "fair: %d steady G2 of %d, errors %d, folds %d, %s, %s", tally.steady, tally.rows,
+                errors, tally.folds, tally.ratio_text().c_str(), tally.baseline_text().c_str());
   std::printf("fair summary: %s\n\n", text);
   return text;
 }
@@ -496,18 +509,18 @@ struct Slab {
 
 constexpr int kMaxBlendLoop = 200;  // border edges; larger loops make the default run too slow
 
-// Planes through the vertex at the 50%, 35%, 65%, 20%, 80% quantile of x, y, z whose slab leaves
-// exactly two loops of at most kMaxBlendLoop edges; the first `wanted` of them.
+// Planes through the vertex at the 50%, 35%, 65%, 20%, 80%, 10%, 90%, 95% quantile of x, y, z whose
+// slab (bench::cut_slab) leaves exactly two loops of at most kMaxBlendLoop edges; at most one per
+// axis, the first `wanted` of them.
 std::vector<Slab> blend_slabs(const Loaded& m, std::size_t wanted) {
   std::vector<Slab> slabs;
   for (int axis = 0; axis < 3 && slabs.size() < wanted; ++axis) {
     std::vector<int> order(m.mesh.num_vertices());
     for (int v = 0; v < m.mesh.num_vertices(); ++v) order[v] = v;
     std::sort(order.begin(), order.end(), [&](int a, int b) { return m.mesh.V(a, axis) < m.mesh.V(b, axis); });
-    for (double q : {0.5, 0.35, 0.65, 0.2, 0.8}) {
+    for (double q : {0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0.95}) {
       const int vertex = order[static_cast<std::size_t>(q * (order.size() - 1))];
-      const bench::CutMesh cut =
-          bench::cut_slab(m.mesh, m.mesh.V.row(vertex).transpose(), Eigen::Vector3d::Unit(axis), 2 * m.h);
+      const bench::CutMesh cut = bench::cut_slab(m.mesh, vertex, Eigen::Vector3d::Unit(axis), 2 * m.h);
       const auto loops = loops_of(cut.mesh);
       if (loops.size() == 2 && std::max(loops[0].size(), loops[1].size()) <= kMaxBlendLoop) {
         slabs.push_back({vertex, axis});
@@ -525,7 +538,7 @@ Row blend_case(const Loaded& m, const Slab& slab) {
   row.centre = slab.vertex;
   row.radius_h = slab.axis;  // the CSV's radius_h column holds the axis (0 x, 1 y, 2 z)
   const Eigen::Vector3d c = m.mesh.V.row(slab.vertex).transpose();
-  const bench::CutMesh cut = bench::cut_slab(m.mesh, c, Eigen::Vector3d::Unit(slab.axis), 2 * m.h);
+  const bench::CutMesh cut = bench::cut_slab(m.mesh, slab.vertex, Eigen::Vector3d::Unit(slab.axis), 2 * m.h);
   row.size = border_sizes(cut.mesh);
   const bench::SurfaceDistance distance(m.mesh, c);
   Mesh mesh = cut.mesh;
@@ -548,7 +561,8 @@ Row blend_case(const Loaded& m, const Slab& slab) {
 }
 
 std::string blend_section(const std::vector<Loaded>& meshes, bool quick) {
-  std::printf("== blend: slab |(x - centre)·axis| < 2h removed, the two loops blended; distances in h ==\n");
+  std::printf("== blend: the band of the slab |(x - centre)·axis| < 2h through `centre` removed, the two loops "
+              "blended; distances in h ==\n");
   std::printf("%-9s %6s %4s %-8s %-10s %-4s %5s %6s | %-12s | %6s %6s %s\n", "mesh", "centre", "axis", "loops",
               "exit", "cont", "steps", "sec", "fairsurf h", "angle", "ref", "fold");
   int rows = 0, steady = 0, folds = 0;

@@ -66,12 +66,32 @@ CutMesh cut_ball(const Mesh& mesh, const Eigen::Vector3d& centre, double radius)
   return cut_faces(mesh, [&](int f) { return inside[mesh.F(f, 0)] && inside[mesh.F(f, 1)] && inside[mesh.F(f, 2)]; });
 }
 
-CutMesh cut_slab(const Mesh& mesh, const Eigen::Vector3d& point, const Eigen::Vector3d& axis,
-                 double half_width) {
+CutMesh cut_slab(const Mesh& mesh, int vertex, const Eigen::Vector3d& axis, double half_width) {
+  const Eigen::Vector3d point = mesh.V.row(vertex).transpose();
   std::vector<char> inside(mesh.num_vertices());
   for (int v = 0; v < mesh.num_vertices(); ++v)
     inside[v] = std::abs((mesh.V.row(v).transpose() - point).dot(axis)) < half_width;
-  return cut_faces(mesh, [&](int f) { return inside[mesh.F(f, 0)] && inside[mesh.F(f, 1)] && inside[mesh.F(f, 2)]; });
+  const auto in_slab = [&](int f) { return inside[mesh.F(f, 0)] && inside[mesh.F(f, 1)] && inside[mesh.F(f, 2)]; };
+  // Flood the slab's faces from those at `vertex` across their edges.
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  std::vector<char> removed(mesh.num_faces(), 0);
+  std::vector<int> stack;
+  for (int f : topo.vertex_faces.row(vertex))
+    if (in_slab(f)) {
+      removed[f] = 1;
+      stack.push_back(f);
+    }
+  while (!stack.empty()) {
+    const int f = stack.back();
+    stack.pop_back();
+    for (int k = 0; k < 3; ++k)
+      for (int g : topo.edge_faces.row(topo.face_edges[3 * f + k]))
+        if (!removed[g] && in_slab(g)) {
+          removed[g] = 1;
+          stack.push_back(g);
+        }
+  }
+  return cut_faces(mesh, [&](int f) { return removed[f] != 0; });
 }
 
 void add_normal_noise(Mesh& mesh, double sigma, std::uint64_t seed) {

@@ -29,9 +29,10 @@ struct CutMesh {
 /// Removes every face whose three vertices lie in the closed ball (centre, radius).
 CutMesh cut_ball(const Mesh& mesh, const Eigen::Vector3d& centre, double radius);
 
-/// Removes every face whose three vertices satisfy |(x − point)·axis| < half_width (axis unit).
-CutMesh cut_slab(const Mesh& mesh, const Eigen::Vector3d& point, const Eigen::Vector3d& axis,
-                 double half_width);
+/// Removes the faces whose three vertices satisfy |(x − V(vertex))·axis| < half_width (axis unit)
+/// and that are connected, through shared edges of such faces, to a face at `vertex`: the band the
+/// slab cuts across one neck or tube, not every place the plane meets the mesh.
+CutMesh cut_slab(const Mesh& mesh, int vertex, const Eigen::Vector3d& axis, double half_width);
 
 /// Moves every vertex used by a face along its area-weighted unit normal by a Gaussian of standard
 /// deviation `sigma`, drawn by Box–Muller from std::mt19937_64(seed), so the same seed gives the
