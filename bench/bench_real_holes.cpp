@@ -1,0 +1,643 @@
+// Real holes (issue #11): fairsurf's fill, fair and blend on holes cut out of clean closed meshes,
+// measured against the uncut surface and, when CMake finds CGAL, against CGAL 5.5's
+// triangulate_refine_and_fair_hole and fair at fairing_continuity(2). The protocol and every column
+// are described in docs/fill.md, "Real holes benchmark".
+//
+// Usage: bench_real_holes [--section fill|fair|blend|all] [--mesh NAME] [--no-cgal] [--quick]
+//                         [--csv FILE]
+#include <fairsurf/blend.h>
+#include <fairsurf/continuity.h>
+#include <fairsurf/errors.h>
+#include <fairsurf/fair_region.h>
+#include <fairsurf/fill.h>
+#include <fairsurf/io.h>
+#include <fairsurf/region_selection.h>
+#include <fairsurf/topology.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "real_holes.h"
+#ifdef FAIRSURF_BENCH_CGAL
+#include "cgal_reference.h"
+#endif
+
+namespace {
+
+using namespace fairsurf;
+using bench::DistanceStats;
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+constexpr double kNoise = 0.1;  // σ of the normal noise, in h
+
+struct Args {
+  std::string section = "all", mesh, csv;
+  bool cgal = true, quick = false;
+};
+
+// A clean closed mesh and the ball centres of docs/fill.md (cases/real_holes.md's first).
+struct MeshCase {
+  std::string name, file;
+  std::vector<Eigen::Vector3d> centres;  // nearest vertices are used; more are added by rule
+};
+
+std::vector<MeshCase> mesh_cases() {
+  return {{"spot", "spot.obj",
+           {{0.112515, -0.451919, 0.0935688}, {0.312594, 0.674309, -0.341185}, {-0.178799, 0.187723, 0.48375}}},
+          {"blub", "blub.obj",
+           {{0.00697216, -0.181279, -1.03702}, {-0.565203, -0.333718, 0.0970017}, {0.176282, 0.148983, -0.699856}}},
+          {"bunny", "stanford_bunny_remesh_closed.obj", {{-0.417303, 0.45242, 0.224485}}},
+          {"airplane", "airplane.obj", {}},
+          {"torus", "torus.obj", {}}};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Loaded meshes and their ball centres
+
+struct Loaded {
+  std::string name;
+  Mesh mesh;
+  double h = 0;
+  std::vector<int> centres;  // vertex indices
+};
+
+int nearest_vertex(const Mesh& mesh, const Eigen::Vector3d& p) {
+  int best = 0;
+  for (int v = 1; v < mesh.num_vertices(); ++v)
+    if ((mesh.V.row(v).transpose() - p).squaredNorm() < (mesh.V.row(best).transpose() - p).squaredNorm())
+      best = v;
+  return best;
+}
+
+// The vertex farthest along `direction`.
+int extreme_vertex(const Mesh& mesh, const Eigen::Vector3d& direction) {
+  int best = 0;
+  for (int v = 1; v < mesh.num_vertices(); ++v)
+    if (mesh.V.row(v).dot(direction) > mesh.V.row(best).dot(direction)) best = v;
+  return best;
+}
+
+// The given centres, then the vertices farthest along three fixed skew directions, until there are
+// three (--quick: one).
+std::vector<int> centre_vertices(const MeshCase& c, const Mesh& mesh, bool quick) {
+  const std::size_t wanted = quick ? 1 : 3;
+  const Eigen::Vector3d directions[] = {{1, 0.3, 0.1}, {-0.2, 1, 0.5}, {0.3, -0.6, 1}};
+  std::vector<int> centres;
+  for (const auto& p : c.centres)
+    if (centres.size() < wanted) centres.push_back(nearest_vertex(mesh, p));
+  for (int k = 0; centres.size() < wanted; ++k) centres.push_back(extreme_vertex(mesh, directions[k].normalized()));
+  return centres;
+}
+
+std::vector<Loaded> load_meshes(const Args& args) {
+  std::vector<Loaded> out;
+  for (const MeshCase& c : mesh_cases()) {
+    if (!args.mesh.empty() && c.file.find(args.mesh) == std::string::npos) continue;
+    const std::filesystem::path path = std::filesystem::path(FAIRSURF_DATA_DIR) / c.file;
+    if (!std::filesystem::exists(path)) {
+      std::printf("%s: not found in %s, skipped\n", c.file.c_str(), FAIRSURF_DATA_DIR);
+      continue;
+    }
+    Loaded m;
+    m.name = c.name;
+    m.mesh = read_mesh(path);
+    m.h = bench::mean_edge_length(m.mesh);
+    m.centres = centre_vertices(c, m.mesh, args.quick);
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+// Deterministic per case, independent of which other cases run.
+std::uint64_t noise_seed(int centre, int radius_h) {
+  return 0x9e3779b97f4a7c15ULL ^ (static_cast<std::uint64_t>(centre) * 1000003ULL + static_cast<std::uint64_t>(radius_h));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Rows, CSV and summaries
+
+std::string csv_text =
+    "section,mesh,centre,radius_h,noise_h,size,status,continuity,steps,seconds,mean_h,max_h,"
+    "baseline_mean_h,baseline_max_h,cgal_mean_h,cgal_max_h,ratio,angle_deg,uncut_angle_deg,fold,note\n";
+
+std::string csv_escape(std::string s) {
+  std::replace(s.begin(), s.end(), '"', '\'');
+  return "\"" + s + "\"";
+}
+
+std::string number(double x, const char* format = "%.4g") {
+  if (std::isnan(x)) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, format, x);
+  return text;
+}
+
+struct Row {
+  std::string section, mesh, status, continuity, note, size;
+  int centre = 0, radius_h = 0, steps = 0;
+  double noise = 0, seconds = 0;
+  DistanceStats ours, baseline, cgal;
+  bool has_baseline = false, has_cgal = false, cgal_ok = false, fold = false;
+  bool disks = true;  // fill: the cut removed disks only (a ball across a thin tube removes an annulus)
+  double ratio = NAN, angle = NAN, uncut_angle = NAN;
+};
+
+void add_note(Row& row, const std::string& note) { row.note += (row.note.empty() ? "" : "; ") + note; }
+
+void add_csv(const Row& r) {
+  const auto stat = [](bool has, double x) { return has ? number(x) : std::string(); };
+  csv_text += r.section + "," + r.mesh + "," + std::to_string(r.centre) + "," + std::to_string(r.radius_h) + "," +
+              number(r.noise) + "," + csv_escape(r.size) + "," + csv_escape(r.status) + "," +
+              csv_escape(r.continuity) + "," + std::to_string(r.steps) + "," + number(r.seconds) + "," +
+              stat(r.ours.count > 0, r.ours.mean) + "," + stat(r.ours.count > 0, r.ours.max) + "," +
+              stat(r.has_baseline, r.baseline.mean) + "," + stat(r.has_baseline, r.baseline.max) + "," +
+              stat(r.has_cgal, r.cgal.mean) + "," + stat(r.has_cgal, r.cgal.max) + "," + number(r.ratio) + "," +
+              number(r.angle * kDegrees) + "," + number(r.uncut_angle * kDegrees) + "," + (r.fold ? "1" : "0") +
+              "," + csv_escape(r.note) + "\n";
+}
+
+std::string pair_text(bool has, const DistanceStats& s) {
+  if (!has) return "     -     -";
+  char text[32];
+  std::snprintf(text, sizeof text, "%6.3f %5.2f", s.mean, s.max);
+  return text;
+}
+
+// Counts over the rows of one section and noise level.
+struct Tally {
+  int rows = 0, failed = 0, g2 = 0, folds = 0, compared = 0, below = 0, steady = 0, excluded = 0;
+  double log_ratio = 0, worst = 0;
+  void ratio(double r) {
+    if (std::isnan(r) || r <= 0) return;
+    ++compared;
+    below += r < 1;
+    log_ratio += std::log(r);
+    worst = std::max(worst, r);
+  }
+  int baseline_compared = 0, below_baseline = 0;
+  // fairsurf's mean distance against the ∆³ baseline's on the same input.
+  void baseline(const Row& row) {
+    if (row.ours.count == 0 || !row.has_baseline) return;
+    ++baseline_compared;
+    below_baseline += row.ours.mean < row.baseline.mean;
+  }
+  std::string baseline_text() const {
+    return "below D3 on " + std::to_string(below_baseline) + " of " + std::to_string(baseline_compared);
+  }
+  std::string ratio_text() const {
+    if (compared == 0) return "no CGAL comparison";
+    char text[160];
+    std::snprintf(text, sizeof text, "mean distance below CGAL on %d of %d (%.0f%%), geo-mean ratio %.2f, worst %.2fx",
+                  below, compared, 100.0 * below / compared, std::exp(log_ratio / compared), worst);
+    return text;
+  }
+};
+
+std::string percent(int part, int whole) {
+  return whole > 0 ? number(100.0 * part / whole, "%.0f") + "%" : "-";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fill
+
+// "G2", "fb:G1", "fail" per hole, comma separated.
+std::string continuity_text(const FillReport& report) {
+  std::string text;
+  for (const HoleReport& h : report.holes) {
+    if (!text.empty()) text += ",";
+    if (h.status != HoleStatus::filled) text += "fail";
+    else text += (h.supported != h.requested ? "fb:" : "") + std::string(to_string(h.supported));
+  }
+  return text;
+}
+
+std::vector<std::vector<int>> loops_of(const Mesh& mesh) {
+  return boundary_loops(mesh.F, build_topology(mesh.F, mesh.num_vertices()));
+}
+
+std::string border_sizes(const Mesh& cut) {
+  std::string text;
+  for (const auto& loop : loops_of(cut)) text += (text.empty() ? "" : "+") + std::to_string(loop.size());
+  return text;
+}
+
+// Removing k disks from a surface lowers its Euler characteristic by k; an annulus (a ball across a
+// tube thinner than it) lowers it by 0 and leaves two loops that no hole filling should close.
+bool removed_disks(const Mesh& uncut, const Mesh& cut) {
+  const int loops = static_cast<int>(loops_of(cut).size());
+  return bench::euler_characteristic(uncut) - bench::euler_characteristic(cut) == loops;
+}
+
+std::vector<int> rows_from(int first, int end) {
+  std::vector<int> rows;
+  for (int v = first; v < end; ++v) rows.push_back(v);
+  return rows;
+}
+
+// fill_holes on a copy of `cut`; the new vertices' distances. Throws what fill_holes throws.
+FillReport run_fill(const Mesh& cut, const FillOptions& options, const bench::SurfaceDistance& distance, double h,
+                    DistanceStats& stats) {
+  Mesh mesh = cut;
+  FillReport report = fill_holes(mesh, options);
+  stats = bench::distance_stats(distance, mesh.V, rows_from(cut.num_vertices(), mesh.num_vertices()), h);
+  return report;
+}
+
+void fill_ours(const Mesh& cut, const bench::SurfaceDistance& distance, double h, Row& row) {
+  // FillOptions{} is exactly what `fairsurf fill` runs without options (apps/fairsurf/cmd_fill.cpp
+  // starts from it and sets continuity G2, method flow, f = H: the defaults).
+  try {
+    const FillReport report = run_fill(cut, FillOptions{}, distance, h, row.ours);
+    row.continuity = continuity_text(report);
+    row.seconds = report.seconds;
+    row.status = report.failed > 0 ? "failed" : "ok";
+    for (const HoleReport& r : report.holes) {
+      row.steps += r.steps;
+      // A patch without interior vertex has no measure (border_vertices 0); NaN then, not 0°.
+      if (r.continuity.border_vertices > 0)
+        row.angle = std::isnan(row.angle) ? r.continuity.max_normal_angle
+                                          : std::max(row.angle, r.continuity.max_normal_angle);
+      if (r.status == HoleStatus::failed) add_note(row, r.reason);
+    }
+  } catch (const std::exception& e) {
+    row.status = "failed";
+    row.continuity = "error";
+    add_note(row, e.what());
+  }
+}
+
+void fill_baseline(const Mesh& cut, const bench::SurfaceDistance& distance, double h, Row& row) {
+  FillOptions options;
+  options.fairing.method = FairMethod::harmonic;  // cotangent ∆³ at G2
+  try {
+    const FillReport report = run_fill(cut, options, distance, h, row.baseline);
+    row.has_baseline = report.failed == 0;
+    if (report.failed > 0) add_note(row, "∆³ failed");
+  } catch (const std::exception& e) {
+    add_note(row, "∆³: " + std::string(e.what()));
+  }
+}
+
+void fill_cgal([[maybe_unused]] const Mesh& cut, [[maybe_unused]] const bench::SurfaceDistance& distance,
+               [[maybe_unused]] double h, [[maybe_unused]] Row& row) {
+#ifdef FAIRSURF_BENCH_CGAL
+  const bench::CgalResult result = bench::cgal_fill_holes(cut);
+  row.has_cgal = !result.moved.empty();
+  row.cgal_ok = result.ok && row.has_cgal;
+  if (row.has_cgal) row.cgal = bench::distance_stats(distance, result.V, result.moved, h);
+  if (!result.ok) add_note(row, "CGAL: " + std::string(result.error));
+  else if (!row.has_cgal) add_note(row, "CGAL: no new vertex");
+#endif
+}
+
+void print_fill_header() {
+  std::printf("%-9s %6s %2s %5s %-8s %-12s %5s %6s | %-12s | %-12s | %-12s | %5s | %6s %6s %s\n", "mesh", "centre",
+              "r", "noise", "edges", "continuity", "steps", "sec", "fairsurf h", "D3 h", "CGAL C2 h", "ratio",
+              "angle", "uncut", "fold");
+}
+
+void print_fill_row(const Row& r) {
+  std::printf("%-9s %6d %2d %5.2f %-8s %-12s %5d %6.2f | %s | %s | %s | %5s | %6s %6s %s%s%s\n", r.mesh.c_str(),
+              r.centre, r.radius_h, r.noise, r.size.c_str(), r.continuity.c_str(), r.steps, r.seconds,
+              pair_text(r.ours.count > 0, r.ours).c_str(), pair_text(r.has_baseline, r.baseline).c_str(),
+              pair_text(r.has_cgal, r.cgal).c_str(), number(r.ratio, "%.2f").c_str(),
+              number(r.angle * kDegrees, "%.1f").c_str(), number(r.uncut_angle * kDegrees, "%.1f").c_str(),
+              r.fold ? "FOLD" : "-", r.note.empty() ? "" : "  ", r.note.c_str());
+  std::fflush(stdout);
+}
+
+Row fill_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) {
+  Row row;
+  row.section = "fill";
+  row.mesh = m.name;
+  row.centre = centre;
+  row.radius_h = radius_h;
+  row.noise = noisy ? kNoise : 0.0;
+  const Eigen::Vector3d c = m.mesh.V.row(centre).transpose();
+  bench::CutMesh cut = bench::cut_ball(m.mesh, c, radius_h * m.h);
+  if (noisy) bench::add_normal_noise(cut.mesh, kNoise * m.h, noise_seed(centre, radius_h));
+  row.size = border_sizes(cut.mesh);
+  row.disks = removed_disks(m.mesh, cut.mesh);
+  if (!row.disks) add_note(row, "not disk holes (excluded from the summary)");
+  const bench::SurfaceDistance distance(m.mesh, c);
+  fill_ours(cut.mesh, distance, m.h, row);
+  fill_baseline(cut.mesh, distance, m.h, row);
+  if (cgal) fill_cgal(cut.mesh, distance, m.h, row);
+  if (!cut.dropped.empty())
+    row.uncut_angle = measure_continuity(m.mesh.V, m.mesh.F, cut.dropped).max_normal_angle;
+  if (row.cgal_ok && row.ours.count > 0 && row.status == "ok" && row.cgal.mean > 0)
+    row.ratio = row.ours.mean / row.cgal.mean;
+  if (!std::isnan(row.angle) && !std::isnan(row.uncut_angle))
+    row.fold = row.angle > std::max(1.5 * row.uncut_angle, 5.0 / kDegrees);
+  return row;
+}
+
+std::string fill_summary(const char* label, const Tally& t) {
+  char text[512];
+  std::snprintf(text, sizeof text, "%s holes: %d (+%d not disks), failed %d, G2 %d (%s), folds %d, %s, %s", label,
+                t.rows, t.excluded, t.failed, t.g2, percent(t.g2, t.rows).c_str(), t.folds, t.ratio_text().c_str(),
+                t.baseline_text().c_str());
+  return text;
+}
+
+bool all_g2(const std::string& continuity) {
+  std::size_t start = 0;
+  while (start <= continuity.size()) {
+    const std::size_t end = std::min(continuity.find(',', start), continuity.size());
+    if (continuity.substr(start, end - start) != "G2") return false;
+    start = end + 1;
+  }
+  return true;
+}
+
+std::string fill_section(const std::vector<Loaded>& meshes, bool cgal) {
+  std::printf("== fill: holes cut by a ball of radius r·h around vertex `centre`; distances in h ==\n");
+  print_fill_header();
+  Tally tally[2];
+  for (int noisy = 0; noisy < 2; ++noisy)
+    for (const Loaded& m : meshes)
+      for (int centre : m.centres)
+        for (int radius_h : {4, 8}) {
+          const Row row = fill_case(m, centre, radius_h, noisy, cgal);
+          print_fill_row(row);
+          add_csv(row);
+          Tally& t = tally[noisy];
+          if (!row.disks) {
+            ++t.excluded;
+            continue;
+          }
+          ++t.rows;
+          t.failed += row.status != "ok";
+          t.g2 += row.status == "ok" && all_g2(row.continuity);
+          t.folds += row.fold;
+          t.ratio(row.ratio);
+          if (row.status == "ok") t.baseline(row);
+        }
+  const std::string summary = fill_summary("clean", tally[0]) + " | " + fill_summary("noise 0.1h", tally[1]);
+  std::printf("fill summary: %s\n\n", summary.c_str());
+  return summary;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fair: the ball's vertices freed on the uncut mesh
+
+void fair_ours(const Mesh& mesh, const std::vector<int>& region, const bench::SurfaceDistance& distance, double h,
+               Row& row) {
+  // `fairsurf fair` without options: harmonic_started() with the flags' defaults (G2, f = H, flow,
+  // 200 steps), which are its own (apps/fairsurf/cmd_fair.cpp, region_fairing_args.cpp).
+  Mesh faired = mesh;
+  try {
+    const FairRegionReport report = fair_region(faired, region, FairRegionOptions::harmonic_started());
+    row.status = report.flow.stop_reason == FlowStopReason::steady ? "steady" : "not steady";
+    row.continuity = std::string(to_string(report.supported));
+    row.steps = report.flow.accepted_steps;
+    row.seconds = report.seconds;
+    row.angle = report.continuity.max_normal_angle;
+    row.ours = bench::distance_stats(distance, faired.V, region, h);
+  } catch (const std::exception& e) {
+    row.status = "error";
+    row.continuity = "error";
+    add_note(row, e.what());
+  }
+}
+
+void fair_baseline(const Mesh& mesh, const std::vector<int>& region, const bench::SurfaceDistance& distance, double h,
+                   Row& row) {
+  Mesh faired = mesh;
+  FairRegionOptions options = FairRegionOptions::harmonic_started();
+  options.method = FairMethod::harmonic;
+  try {
+    fair_region(faired, region, options);
+    row.has_baseline = true;
+    row.baseline = bench::distance_stats(distance, faired.V, region, h);
+  } catch (const std::exception& e) {
+    add_note(row, "∆³: " + std::string(e.what()));
+  }
+}
+
+void fair_cgal([[maybe_unused]] const Mesh& mesh, [[maybe_unused]] const std::vector<int>& region,
+               [[maybe_unused]] const bench::SurfaceDistance& distance, [[maybe_unused]] double h,
+               [[maybe_unused]] Row& row) {
+#ifdef FAIRSURF_BENCH_CGAL
+  const bench::CgalResult result = bench::cgal_fair(mesh, region);
+  row.has_cgal = result.V.rows() > 0;
+  row.cgal_ok = result.ok;
+  if (row.has_cgal) row.cgal = bench::distance_stats(distance, result.V, result.moved, h);
+  if (!result.ok) add_note(row, "CGAL: " + std::string(result.error));
+#endif
+}
+
+Row fair_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) {
+  Row row;
+  row.section = "fair";
+  row.mesh = m.name;
+  row.centre = centre;
+  row.radius_h = radius_h;
+  row.noise = noisy ? kNoise : 0.0;
+  const Eigen::Vector3d c = m.mesh.V.row(centre).transpose();
+  Mesh mesh = m.mesh;
+  if (noisy) bench::add_normal_noise(mesh, kNoise * m.h, noise_seed(centre, radius_h));
+  // As `fairsurf fair --region-sphere`: the vertices strictly inside the ball (of the clean mesh).
+  const std::vector<int> region = vertices_in_ball(m.mesh.V, c, radius_h * m.h);
+  row.size = std::to_string(region.size());
+  const bench::SurfaceDistance distance(m.mesh, c);
+  fair_ours(mesh, region, distance, m.h, row);
+  fair_baseline(mesh, region, distance, m.h, row);
+  if (cgal) fair_cgal(mesh, region, distance, m.h, row);
+  row.uncut_angle = measure_continuity(m.mesh.V, m.mesh.F, region).max_normal_angle;
+  if (row.has_cgal && row.cgal_ok && row.ours.count > 0 && row.cgal.mean > 0) row.ratio = row.ours.mean / row.cgal.mean;
+  if (!std::isnan(row.angle)) row.fold = row.angle > std::max(1.5 * row.uncut_angle, 5.0 / kDegrees);
+  return row;
+}
+
+void print_fair_header() {
+  std::printf("%-9s %6s %2s %5s %5s %-10s %-4s %5s %6s | %-12s | %-12s | %-12s | %5s | %6s %6s %s\n", "mesh",
+              "centre", "r", "noise", "free", "exit", "cont", "steps", "sec", "fairsurf h", "D3 h", "CGAL C2 h",
+              "ratio", "angle", "uncut", "fold");
+}
+
+void print_fair_row(const Row& r) {
+  std::printf("%-9s %6d %2d %5.2f %5s %-10s %-4s %5d %6.2f | %s | %s | %s | %5s | %6s %6s %s%s%s\n", r.mesh.c_str(),
+              r.centre, r.radius_h, r.noise, r.size.c_str(), r.status.c_str(), r.continuity.c_str(), r.steps,
+              r.seconds, pair_text(r.ours.count > 0, r.ours).c_str(), pair_text(r.has_baseline, r.baseline).c_str(),
+              pair_text(r.has_cgal, r.cgal).c_str(), number(r.ratio, "%.2f").c_str(),
+              number(r.angle * kDegrees, "%.1f").c_str(), number(r.uncut_angle * kDegrees, "%.1f").c_str(),
+              r.fold ? "FOLD" : "-", r.note.empty() ? "" : "  ", r.note.c_str());
+  std::fflush(stdout);
+}
+
+std::string fair_section(const std::vector<Loaded>& meshes, bool cgal) {
+  std::printf("== fair: the vertices strictly inside the ball freed on the uncut mesh; distances in h ==\n");
+  print_fair_header();
+  Tally tally;
+  int errors = 0;
+  for (int noisy = 0; noisy < 2; ++noisy)
+    for (const Loaded& m : meshes)
+      for (int centre : m.centres)
+        for (int radius_h : {4, 8}) {
+          const Row row = fair_case(m, centre, radius_h, noisy, cgal);
+          print_fair_row(row);
+          add_csv(row);
+          ++tally.rows;
+          errors += row.status == "error";
+          tally.steady += row.status == "steady" && row.continuity == "G2";
+          tally.folds += row.fold;
+          tally.ratio(row.ratio);
+          tally.baseline(row);
+        }
+  char text[512];
+  std::snprintf(text, sizeof text, "fair: %d steady G2 of %d, errors %d, folds %d, %s, %s", tally.steady, tally.rows,
+                errors, tally.folds, tally.ratio_text().c_str(), tally.baseline_text().c_str());
+  std::printf("fair summary: %s\n\n", text);
+  return text;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Blend: a slab of width 4h removed, the two loops joined again
+
+struct Slab {
+  int vertex = 0, axis = 0;
+};
+
+constexpr int kMaxBlendLoop = 200;  // border edges; larger loops make the default run too slow
+
+// Planes through the vertex at the 50%, 35%, 65%, 20%, 80%, 10%, 90%, 95% quantile of x, y, z whose
+// slab (bench::cut_slab) leaves exactly two loops of at most kMaxBlendLoop edges; at most one per
+// axis, the first `wanted` of them.
+std::vector<Slab> blend_slabs(const Loaded& m, std::size_t wanted) {
+  std::vector<Slab> slabs;
+  for (int axis = 0; axis < 3 && slabs.size() < wanted; ++axis) {
+    std::vector<int> order(m.mesh.num_vertices());
+    for (int v = 0; v < m.mesh.num_vertices(); ++v) order[v] = v;
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return m.mesh.V(a, axis) < m.mesh.V(b, axis); });
+    for (double q : {0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0.95}) {
+      const int vertex = order[static_cast<std::size_t>(q * (order.size() - 1))];
+      const bench::CutMesh cut = bench::cut_slab(m.mesh, vertex, Eigen::Vector3d::Unit(axis), 2 * m.h);
+      const auto loops = loops_of(cut.mesh);
+      if (loops.size() == 2 && std::max(loops[0].size(), loops[1].size()) <= kMaxBlendLoop) {
+        slabs.push_back({vertex, axis});
+        break;  // one plane per axis
+      }
+    }
+  }
+  return slabs;
+}
+
+Row blend_case(const Loaded& m, const Slab& slab) {
+  Row row;
+  row.section = "blend";
+  row.mesh = m.name;
+  row.centre = slab.vertex;
+  row.radius_h = slab.axis;  // the CSV's radius_h column holds the axis (0 x, 1 y, 2 z)
+  const Eigen::Vector3d c = m.mesh.V.row(slab.vertex).transpose();
+  const bench::CutMesh cut = bench::cut_slab(m.mesh, slab.vertex, Eigen::Vector3d::Unit(slab.axis), 2 * m.h);
+  row.size = border_sizes(cut.mesh);
+  const bench::SurfaceDistance distance(m.mesh, c);
+  Mesh mesh = cut.mesh;
+  try {
+    // BlendOptions{} is what `fairsurf blend` runs without options (apps/fairsurf/cmd_blend.cpp).
+    const BlendReport report = blend_loops(mesh, BlendOptions{});
+    row.status = report.fair.flow.stop_reason == FlowStopReason::steady ? "steady" : "not steady";
+    row.continuity = std::string(to_string(report.fair.supported));
+    row.steps = report.fair.flow.accepted_steps;
+    row.seconds = report.seconds;
+    row.angle = std::max(report.a.border.max_normal_angle, report.b.border.max_normal_angle);
+    row.uncut_angle = std::max(report.a.reference.max_normal_angle, report.b.reference.max_normal_angle);
+    row.ours = bench::distance_stats(distance, mesh.V, rows_from(cut.mesh.num_vertices(), mesh.num_vertices()), m.h);
+    row.fold = row.angle > std::max(1.5 * row.uncut_angle, 5.0 / kDegrees);
+  } catch (const std::exception& e) {
+    row.status = "error";
+    add_note(row, e.what());
+  }
+  return row;
+}
+
+std::string blend_section(const std::vector<Loaded>& meshes, bool quick) {
+  std::printf("== blend: the band of the slab |(x - centre)·axis| < 2h through `centre` removed, the two loops "
+              "blended; distances in h ==\n");
+  std::printf("%-9s %6s %4s %-8s %-10s %-4s %5s %6s | %-12s | %6s %6s %s\n", "mesh", "centre", "axis", "loops",
+              "exit", "cont", "steps", "sec", "fairsurf h", "angle", "ref", "fold");
+  int rows = 0, steady = 0, folds = 0;
+  for (const Loaded& m : meshes)
+    for (const Slab& slab : blend_slabs(m, quick ? 1 : 2)) {
+      const Row r = blend_case(m, slab);
+      std::printf("%-9s %6d %4c %-8s %-10s %-4s %5d %6.2f | %s | %6s %6s %s%s%s\n", r.mesh.c_str(), r.centre,
+                  "xyz"[slab.axis], r.size.c_str(), r.status.c_str(), r.continuity.c_str(), r.steps, r.seconds,
+                  pair_text(r.ours.count > 0, r.ours).c_str(), number(r.angle * kDegrees, "%.1f").c_str(),
+                  number(r.uncut_angle * kDegrees, "%.1f").c_str(), r.fold ? "FOLD" : "-",
+                  r.note.empty() ? "" : "  ", r.note.c_str());
+      std::fflush(stdout);
+      add_csv(r);
+      ++rows;
+      steady += r.status == "steady" && r.continuity == "G2";
+      folds += r.fold;
+    }
+  const std::string text = "blend: " + std::to_string(steady) + " steady G2 of " + std::to_string(rows) + ", folds " +
+                           std::to_string(folds);
+  std::printf("blend summary: %s\n\n", text.c_str());
+  return text;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Main
+
+Args parse_args(int argc, char** argv) {
+  Args args;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw InvalidArgument("bench_real_holes: " + a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--section") args.section = value();
+    else if (a == "--mesh") args.mesh = value();
+    else if (a == "--csv") args.csv = value();
+    else if (a == "--no-cgal") args.cgal = false;
+    else if (a == "--quick") args.quick = true;
+    else throw InvalidArgument("bench_real_holes: unknown argument " + a +
+                               " (--section fill|fair|blend|all, --mesh NAME, --no-cgal, --quick, --csv FILE)");
+  }
+  if (args.section != "fill" && args.section != "fair" && args.section != "blend" && args.section != "all")
+    throw InvalidArgument("bench_real_holes: --section must be fill, fair, blend or all, got " + args.section);
+  return args;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    Args args = parse_args(argc, argv);
+#ifndef FAIRSURF_BENCH_CGAL
+    if (args.cgal) std::printf("CGAL was not found at configure time: no CGAL columns\n");
+    args.cgal = false;
+#endif
+    const std::vector<Loaded> meshes = load_meshes(args);
+    for (const Loaded& m : meshes) {
+      std::printf("%s: %d vertices, %d faces, h = %.6g; centres", m.name.c_str(), m.mesh.num_vertices(),
+                  m.mesh.num_faces(), m.h);
+      for (int c : m.centres) std::printf(" %d", c);
+      std::printf("\n");
+    }
+    std::vector<std::string> summaries;
+    const auto wanted = [&](const char* section) { return args.section == section || args.section == "all"; };
+    if (wanted("fill")) summaries.push_back(fill_section(meshes, args.cgal));
+    if (wanted("fair")) summaries.push_back(fair_section(meshes, args.cgal));
+    if (wanted("blend")) summaries.push_back(blend_section(meshes, args.quick));
+    std::string overall;
+    for (const auto& s : summaries) overall += (overall.empty() ? "" : " | ") + s;
+    std::printf("overall: %s\n", overall.c_str());
+    if (!args.csv.empty()) write_file_atomically(args.csv, csv_text, "bench_real_holes");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_real_holes: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
