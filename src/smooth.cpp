@@ -37,6 +37,15 @@ SmoothOptions scan_smoothing_options(const Mesh& mesh, FlowKind kind) {
   return o;
 }
 
+void steady_smoothing(FlowOptions& flow, double velocity_tolerance) {
+  flow.end_time = std::numeric_limits<double>::infinity();
+  flow.steady_tolerance = velocity_tolerance;
+  if (flow.kind != FlowKind::sixth_order) return;
+  flow.step_kind = FlowStepKind::energy_descent;
+  flow.steady_energy_tolerance = 1e-7;
+  flow.step_control.max_consecutive_rejections = 30;
+}
+
 FlowReport smooth(Mesh& mesh, const SmoothOptions& options, const FlowObserver& observer) {
   require_valid(mesh, Requirements{}, "smooth");
   const Topology topo = build_topology(mesh.F, mesh.num_vertices());

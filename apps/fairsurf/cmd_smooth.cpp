@@ -52,7 +52,7 @@ SmoothOptions smooth_options(const SmoothArgs& args, const Mesh& mesh) {
   if (args.steps > 0) {
     o.flow.max_steps = args.steps;
   } else if (args.steady) {
-    o.flow.steady_tolerance = args.steady_tolerance;
+    steady_smoothing(o.flow, args.steady_tolerance);
   } else if (args.time > 0) {
     o.flow.end_time = args.time;
     o.flow.tau = args.time / 64;

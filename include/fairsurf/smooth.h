@@ -38,6 +38,13 @@ double default_smoothing_time(const Mesh& mesh, FlowKind kind);
 /// relaxation 0.5 (flow.h; docs/flow.md says what each does on the scans of data/).
 SmoothOptions scan_smoothing_options(const Mesh& mesh, FlowKind kind = FlowKind::sixth_order);
 
+/// Makes `flow` run to a steady state: max|V| ≤ velocity_tolerance or, for the sixth-order flow, the
+/// energy descent (FlowStepKind::energy_descent) until an accepted step lowers E by less than 1e-7
+/// of itself or no step lowers it at all (30 rejections in a row). The energy then never rises
+/// between accepted steps; the time-stepped flow at large τ did not settle (its steps could raise E
+/// and τ grew without bound) — docs/flow.md. No end time.
+void steady_smoothing(FlowOptions& flow, double velocity_tolerance);
+
 /// Smooths `mesh.V` in place. Requires a manifold, consistently oriented mesh without degenerate
 /// faces (InvalidMeshError naming the problem otherwise); throws InvalidArgument if no vertex is
 /// left free, and NumericalError as run_flow does — with mesh.V at the last accepted state.
