@@ -18,7 +18,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <numbers>
@@ -126,7 +125,7 @@ std::uint64_t noise_seed(int centre, int radius_h) {
 
 std::string csv_text =
     "section,mesh,centre,radius_h,noise_h,size,status,continuity,steps,seconds,mean_h,max_h,"
-    "baseline_mean_h,baseline_max_h,cgal_mean_h,cgal_max_h,ratio,angle_deg,uncut_angle_deg,fold,note\n";
+    "baseline_mean_h,baseline_max_h,cgal_mean_h,cgal_max_h,ratio,angle_deg,uncut_angle_deg,fold,disks,note\n";
 
 std::string csv_escape(std::string s) {
   std::replace(s.begin(), s.end(), '"', '\'');
@@ -150,6 +149,13 @@ struct Row {
   double ratio = NAN, angle = NAN, uncut_angle = NAN;
 };
 
+using Clock = std::chrono::steady_clock;
+
+// Wall time of a call that threw (a report carries its own otherwise).
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
 void add_note(Row& row, const std::string& note) { row.note += (row.note.empty() ? "" : "; ") + note; }
 
 void add_csv(const Row& r) {
@@ -161,7 +167,7 @@ void add_csv(const Row& r) {
               stat(r.has_baseline, r.baseline.mean) + "," + stat(r.has_baseline, r.baseline.max) + "," +
               stat(r.has_cgal, r.cgal.mean) + "," + stat(r.has_cgal, r.cgal.max) + "," + number(r.ratio) + "," +
               number(r.angle * kDegrees) + "," + number(r.uncut_angle * kDegrees) + "," + (r.fold ? "1" : "0") +
-              "," + csv_escape(r.note) + "\n";
+              "," + (r.disks ? "1" : "0") + "," + csv_escape(r.note) + "\n";
 }
 
 std::string pair_text(bool has, const DistanceStats& s) {
@@ -254,6 +260,7 @@ FillReport run_fill(const Mesh& cut, const FillOptions& options, const bench::Su
 void fill_ours(const Mesh& cut, const bench::SurfaceDistance& distance, double h, Row& row) {
   // FillOptions{} is exactly what `fairsurf fill` runs without options (apps/fairsurf/cmd_fill.cpp
   // starts from it and sets continuity G2, method flow, f = H: the defaults).
+  const auto start = Clock::now();
   try {
     const FillReport report = run_fill(cut, FillOptions{}, distance, h, row.ours);
     row.continuity = continuity_text(report);
@@ -268,6 +275,7 @@ void fill_ours(const Mesh& cut, const bench::SurfaceDistance& distance, double h
       if (r.status == HoleStatus::failed) add_note(row, r.reason);
     }
   } catch (const std::exception& e) {
+    row.seconds = seconds_since(start);
     row.status = "failed";
     row.continuity = "error";
     add_note(row, e.what());
@@ -394,6 +402,7 @@ void fair_ours(const Mesh& mesh, const std::vector<int>& region, const bench::Su
   // `fairsurf fair` without options: harmonic_started() with the flags' defaults (G2, f = H, flow,
   // 200 steps), which are its own (apps/fairsurf/cmd_fair.cpp, region_fairing_args.cpp).
   Mesh faired = mesh;
+  const auto start = Clock::now();
   try {
     const FairRegionReport report = fair_region(faired, region, FairRegionOptions::harmonic_started());
     row.status = report.flow.stop_reason == FlowStopReason::steady ? "steady" : "not steady";
@@ -403,6 +412,7 @@ void fair_ours(const Mesh& mesh, const std::vector<int>& region, const bench::Su
     row.angle = report.continuity.max_normal_angle;
     row.ours = bench::distance_stats(distance, faired.V, region, h);
   } catch (const std::exception& e) {
+    row.seconds = seconds_since(start);
     row.status = "error";
     row.continuity = "error";
     add_note(row, e.what());
@@ -542,6 +552,7 @@ Row blend_case(const Loaded& m, const Slab& slab) {
   row.size = border_sizes(cut.mesh);
   const bench::SurfaceDistance distance(m.mesh, c);
   Mesh mesh = cut.mesh;
+  const auto start = Clock::now();
   try {
     // BlendOptions{} is what `fairsurf blend` runs without options (apps/fairsurf/cmd_blend.cpp).
     const BlendReport report = blend_loops(mesh, BlendOptions{});
@@ -554,6 +565,7 @@ Row blend_case(const Loaded& m, const Slab& slab) {
     row.ours = bench::distance_stats(distance, mesh.V, rows_from(cut.mesh.num_vertices(), mesh.num_vertices()), m.h);
     row.fold = row.angle > std::max(1.5 * row.uncut_angle, 5.0 / kDegrees);
   } catch (const std::exception& e) {
+    row.seconds = seconds_since(start);
     row.status = "error";
     add_note(row, e.what());
   }
@@ -636,7 +648,7 @@ int main(int argc, char** argv) {
     std::printf("overall: %s\n", overall.c_str());
     if (!args.csv.empty()) write_file_atomically(args.csv, csv_text, "bench_real_holes");
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "bench_real_holes: %s\n", e.what());
+    std::fprintf(stderr, "%s\n", e.what());
     return 1;
   }
   return 0;
