@@ -220,7 +220,7 @@ std::string continuity_text(const FillReport& report) {
   for (const HoleReport& h : report.holes) {
     if (!text.empty()) text += ",";
     if (h.status != HoleStatus::filled) text += "fail";
-    else text += (h.supported != h.requested ? "fb:" : "") + std::string(to_string(h.supported));
+    else text += (h.supported != h.requested ? "fb:" : "") + delivered_label(h.supported, h.linear);
   }
   return text;
 }
@@ -405,8 +405,8 @@ void fair_ours(const Mesh& mesh, const std::vector<int>& region, const bench::Su
   const auto start = Clock::now();
   try {
     const FairRegionReport report = fair_region(faired, region, FairRegionOptions::harmonic_started());
-    row.status = report.flow.stop_reason == FlowStopReason::steady ? "steady" : "not steady";
-    row.continuity = std::string(to_string(report.supported));
+    row.status = report.linear || report.flow.stop_reason == FlowStopReason::steady ? "steady" : "not steady";
+    row.continuity = delivered_label(report.supported, report.linear);
     row.steps = report.flow.accepted_steps;
     row.seconds = report.seconds;
     row.angle = report.continuity.max_normal_angle;
