@@ -14,6 +14,7 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <numeric>
 
 #include "analytic_meshes.h"
 #include "flow_meshes.h"
@@ -235,6 +236,26 @@ TEST(FillBlub, TheFilledHoleStaysCloseToTheOriginal) {
     (method == FairMethod::flow ? flow_worst : harmonic_worst) = worst;
   }
   EXPECT_LT(flow_worst, harmonic_worst);
+}
+
+// The real-hole protocol's cut of blub at (-0.565203, -0.333718, 0.0970017), radius 4 h: a 29-edge
+// hole whose 6-ring fairing neighbourhood touches itself on its outer side (a vertex 6 rings out
+// had two fans of kept faces), so fair_region rejected it as "1 non-manifold vertex" although the
+// mesh and the patch are manifold. The neighbourhood now keeps every face of such a vertex.
+TEST(FillBlub, ABallHoleWhoseFairingRingsTouchThemselvesIsFilled) {
+  const Mesh holed = test::cut_ball(read_mesh(test::data_path("blub.obj")), Vec3(-0.565203, -0.333718, 0.0970017),
+                                    0.153956);
+  const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  ASSERT_EQ(loops.size(), 1u);
+  EXPECT_EQ(loops.front().size(), 29u);
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, options_for(Continuity::G2, FairMethod::harmonic));
+  ASSERT_EQ(r.filled, 1) << r.holes.front().reason;
+  EXPECT_EQ(r.holes.front().supported, Continuity::G2);
+  expect_watertight(holed, filled);
+  std::vector<int> new_faces(filled.num_faces() - holed.num_faces());
+  std::iota(new_faces.begin(), new_faces.end(), holed.num_faces());
+  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
 }
 
 // ---------------------------------------------------------------------------------------------
