@@ -6,12 +6,15 @@
 #include <fairsurf/topology.h>
 #include <fairsurf/validate.h>
 
+#include "border_pinches.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <numeric>
+#include <unordered_map>
 
 namespace fairsurf {
 namespace {
@@ -46,18 +49,31 @@ void require_fillable(const Mesh& mesh) {
   require_valid(report, Requirements{}, "fill_holes");
 }
 
-// Why the loop cannot bound a manifold patch, or "" if it can.
-std::string non_manifold_border(std::span<const int> loop, const std::vector<int>& border_edges) {
-  if (loop.size() < 3) return "the loop has fewer than three edges";
-  std::vector<int> sorted(loop.begin(), loop.end());
-  std::sort(sorted.begin(), sorted.end());
-  const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
-  if (repeated != sorted.end())
-    return "non-manifold border: the loop passes through vertex " + std::to_string(*repeated) + " twice";
-  for (int v : loop)
-    if (border_edges[v] > 2)
-      return "non-manifold border: vertex " + std::to_string(v) + " has " + std::to_string(border_edges[v]) +
-             " border edges";
+// The holes through each pinch of the border (a vertex with more than two border edges).
+std::unordered_map<int, std::vector<int>> holes_at_pinches(const std::vector<std::vector<int>>& loops,
+                                                           const std::vector<int>& border_edges) {
+  std::unordered_map<int, std::vector<int>> at;
+  for (int h = 0; h < static_cast<int>(loops.size()); ++h)
+    for (int v : loops[h])
+      if (border_edges[v] > 2 && (at[v].empty() || at[v].back() != h)) at[v].push_back(h);
+  return at;
+}
+
+// Why the loop cannot be filled, or "" if it can: at a pinch every loop through the vertex must be
+// filled with it, since only their patches together can join the vertex's fans into one
+// (border_pinches.h).
+std::string unfillable_border(int hole, const std::vector<std::vector<int>>& loops,
+                              const std::unordered_map<int, std::vector<int>>& pinches,
+                              const std::vector<char>& chosen) {
+  if (loops[hole].size() < 3) return "the loop has fewer than three edges";
+  for (int v : loops[hole]) {
+    const auto it = pinches.find(v);
+    if (it == pinches.end()) continue;
+    for (int other : it->second)
+      if (!chosen[other])
+        return "non-manifold border: vertex " + std::to_string(v) + " is also on hole " + std::to_string(other) +
+               ", which is not filled";
+  }
   return "";
 }
 
@@ -167,12 +183,15 @@ std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int 
 
 // Fills the holes `group` jointly on `mesh`; on success replaces mesh and fills the reports, on
 // failure throws (mesh untouched) or returns the reason the patch was rejected.
+// `patch_loops` are the group's loops as they are triangulated (relinked at pinches).
 std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, const std::vector<int>& group,
-                       const FillOptions& options, const FairRegionOptions& fairing_options,
-                       const FillObserver& observer, std::vector<HoleReport>& reports) {
-  std::vector<std::vector<int>> group_loops;
-  for (int h : group) group_loops.push_back(loops[h]);
-  InitialPatch patch = hole_patch(mesh, group_loops, options.patch);
+                       const std::vector<std::vector<int>>& patch_loops, const FillOptions& options,
+                       const FairRegionOptions& fairing_options, const FillObserver& observer,
+                       std::vector<HoleReport>& reports) {
+  InitialPatch patch = hole_patch(mesh, patch_loops, options.patch);
+  const Topology topo = build_topology(patch.mesh.F, patch.mesh.num_vertices());
+  const std::string non_manifold = detail::patch_non_manifold(patch.mesh.F, topo, patch.first_patch_face);
+  if (!non_manifold.empty()) return non_manifold;
 
   // Fair on the patch's neighbourhood only (fair_region would cut out the same rings): the cost of
   // checking the mesh stays in proportion to the hole, and a defect far away (a pinched border
@@ -182,7 +201,6 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
   fairing.requested = fairing.supported = fairing_options.continuity;
   fairing.method = fairing_options.method;
   if (!patch.free_vertices.empty()) {
-    const Topology topo = build_topology(patch.mesh.F, patch.mesh.num_vertices());
     sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, topo, patch.free_vertices,
                                 options.fairing.submesh_rings);
     const FlowObserver step_observer = [&](const StepRecord& r) {
@@ -273,9 +291,13 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
   }
 
   const std::vector<int> border_edges = border_edge_counts(topo);
+  const std::vector<int> chosen = select_holes(loops, options, report.holes);
+  std::vector<char> is_chosen(loops.size(), 0);
+  for (int h : chosen) is_chosen[h] = 1;
+  const auto pinches = holes_at_pinches(loops, border_edges);
   std::vector<int> fillable;
-  for (int h : select_holes(loops, options, report.holes)) {
-    const std::string bad = non_manifold_border(loops[h], border_edges);
+  for (int h : chosen) {
+    const std::string bad = unfillable_border(h, loops, pinches, is_chosen);
     if (bad.empty())
       fillable.push_back(h);
     else
@@ -287,12 +309,20 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
       for (int other : group)
         if (other != h) report.holes[h].filled_with.push_back(other);
     const auto group_start = Clock::now();
+    std::vector<std::vector<int>> patch_loops;
+    for (int h : group) patch_loops.push_back(loops[h]);
+    try {
+      patch_loops = detail::relink_pinched_loops(mesh.V, mesh.F, topo, patch_loops);
+    } catch (const Error& e) {
+      mark(report.holes, group, HoleStatus::failed, e.what());
+      continue;
+    }
     // Try the requested continuity, then (with fallback_on_failure) each lower one.
     FairRegionOptions fairing = options.fairing;
     std::string reason, first_failure;
     for (;;) {
       try {
-        reason = fill_group(mesh, loops, group, options, fairing, observer, report.holes);
+        reason = fill_group(mesh, loops, group, patch_loops, options, fairing, observer, report.holes);
       } catch (const Error& e) {
         reason = e.what();
       }

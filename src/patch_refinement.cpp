@@ -40,9 +40,10 @@ double angle_between(const Vec& u, const Vec& v) { return std::atan2(OpenMesh::c
 // The local patch: OpenMesh connectivity, its vertices' global indices and their scales σ.
 class Refiner {
  public:
-  Refiner(const Vertices& V, const Faces& patch, const PatchRefinementOptions& options)
+  Refiner(const Vertices& V, const Faces& F, const Faces& patch, const PatchRefinementOptions& options)
       : options_(options), num_input_vertices_(static_cast<int>(V.rows())) {
     build(V, patch);
+    mesh_edges_between_patch_vertices(F);
     initial_scales();
   }
 
@@ -114,6 +115,23 @@ class Refiner {
     }
   }
 
+  static long long undirected_key(int a, int b) {
+    return (static_cast<long long>(std::min(a, b)) << 32) | static_cast<unsigned>(std::max(a, b));
+  }
+
+  // The edges of the mesh outside the patch between two patch vertices. A flip must not create
+  // one: OpenMesh only sees the patch, and the edge would have four faces (a border vertex of a
+  // hole can be joined to another by a mesh edge across the hole's neighbourhood).
+  void mesh_edges_between_patch_vertices(const Faces& F) {
+    std::vector<int> local(num_input_vertices_, -1);
+    for (int i = 0; i < static_cast<int>(global_.size()); ++i) local[global_[i]] = i;
+    for (int f = 0; f < F.rows(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int a = local[F(f, k)], b = local[F(f, (k + 1) % 3)];
+        if (a >= 0 && b >= 0) outside_edges_.insert(undirected_key(a, b));
+      }
+  }
+
   // σ of border vertices from their border edges; of interior vertices from all their edges.
   void initial_scales() {
     const int n = static_cast<int>(global_.size());
@@ -168,6 +186,9 @@ class Refiner {
     if (OpenMesh::dot(OpenMesh::cross(a - c, d - c), old_normal) <= 0.0 ||
         OpenMesh::dot(OpenMesh::cross(b - d, c - d), old_normal) <= 0.0)
       return false;
+    const int ci = mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h0)).idx();
+    const int di = mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h1)).idx();
+    if (outside_edges_.contains(undirected_key(ci, di))) return false;
     if (!mesh_.is_flip_ok(eh)) return false;  // c-d is already an edge; checked last, it walks a fan
     mesh_.flip(eh);
     ++flips_;
@@ -221,6 +242,7 @@ class Refiner {
   PatchMesh mesh_;
   std::vector<int> global_;     // global index of each input patch vertex (local order)
   std::vector<double> scale_;   // σ per local vertex
+  std::unordered_set<long long> outside_edges_;  // mesh edges between input patch vertices (local)
   int flips_ = 0;
 };
 
@@ -237,7 +259,7 @@ RefinedPatch refine_patch(const Vertices& V, const Faces& F, const Faces& patch,
       if (F(f, k) < 0 || F(f, k) >= V.rows())
         throw InvalidArgument("refine_patch: mesh face " + std::to_string(f) + " has vertex index " +
                               std::to_string(F(f, k)) + " outside [0, " + std::to_string(V.rows()) + ")");
-  Refiner refiner(V, patch, options);
+  Refiner refiner(V, F, patch, options);
   RefinedPatch out;
   refiner.refine(out);
   refiner.write(V, F, out);
