@@ -437,6 +437,47 @@ TEST(FillPinches, OneHoleOfAPinchAloneFailsAndTheOtherHoleIsFilled) {
   EXPECT_EQ(v.non_manifold_edges.count, 0);
 }
 
+// A square annulus cut round an island of a grid, the island still joined to the rest by one
+// triangle that touches it at a single vertex (4, 4): the hole's border passes through that vertex
+// twice. It must stay one loop there (each pass joining the island's fan to the triangle's):
+// splitting it would close the island's own fan into a cone, two disks touching at the vertex.
+TEST(FillPinches, AHoleRoundAnIslandJoinedAtOneVertexIsFilledManifold) {
+  const Mesh grid = test::regular_grid(12, 12, 1.0);
+  Mesh holed;
+  holed.V = grid.V;
+  std::vector<int> kept;
+  for (int f = 0; f < grid.num_faces(); ++f) {
+    const Vec3 c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0;
+    const bool annulus = c.x() > 3 && c.x() < 9 && c.y() > 3 && c.y() < 9 && !(c.x() > 4 && c.x() < 8 && c.y() > 4 && c.y() < 8);
+    const bool bridge = c.x() < 4 && c.y() < 3.5;  // the triangle (3,3), (4,3), (4,4)
+    if (!annulus || bridge) kept.push_back(f);
+  }
+  holed.F.resize(static_cast<int>(kept.size()), 3);
+  for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
+  const int pinch = 4 * 13 + 4;
+  ASSERT_FALSE(validate(holed).manifold());  // the pinch
+
+  FillOptions o = options_for(Continuity::G2);
+  o.skip_largest = true;
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, o);
+  for (const auto& h : r.holes)
+    if (h.status != HoleStatus::skipped) {
+      EXPECT_EQ(h.status, HoleStatus::filled) << h.reason;
+    }
+  EXPECT_GE(r.filled, 1);
+  EXPECT_TRUE(filled.F.topRows(holed.num_faces()) == holed.F);
+  EXPECT_TRUE(validate(filled).manifold());
+  const Topology topo = build_topology(filled.F, filled.num_vertices());
+  EXPECT_EQ(boundary_loops(filled.F, topo).size(), 1u);  // the grid's outer border
+  EXPECT_FALSE(boundary_vertex_flags(topo)[pinch]);
+  EXPECT_EQ(connected_components(filled.F, topo).count, 1);
+  EXPECT_LT(filled.V.bottomRows(filled.num_vertices() - holed.num_vertices()).col(2).cwiseAbs().maxCoeff(), 1e-9);
+  std::vector<int> new_faces(filled.num_faces() - holed.num_faces());
+  std::iota(new_faces.begin(), new_faces.end(), holed.num_faces());
+  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+}
+
 // The real-hole protocol's cut of blub at (-0.565203, -0.333718, 0.0970017), radius 8 h: two loops
 // (37 and 26 edges) through one pinch vertex with four border edges, both reported "non-manifold
 // border" before. Filled together, watertight, manifold and without crossings.
