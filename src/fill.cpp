@@ -305,10 +305,6 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
   }
   const int rings = rings_needed(options.fairing.continuity);
   for (const auto& group : overlapping_groups(topo, loops, fillable, rings)) {
-    for (int h : group)
-      for (int other : group)
-        if (other != h) report.holes[h].filled_with.push_back(other);
-    const auto group_start = Clock::now();
     std::vector<std::vector<int>> patch_loops;
     for (int h : group) patch_loops.push_back(loops[h]);
     try {
@@ -317,6 +313,10 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
       mark(report.holes, group, HoleStatus::failed, e.what());
       continue;
     }
+    for (int h : group)
+      for (int other : group)
+        if (other != h) report.holes[h].filled_with.push_back(other);
+    const auto group_start = Clock::now();
     // Try the requested continuity, then (with fallback_on_failure) each lower one.
     FairRegionOptions fairing = options.fairing;
     std::string reason, first_failure;
