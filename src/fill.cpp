@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <numeric>
@@ -137,9 +138,9 @@ std::vector<std::vector<int>> overlapping_groups(const Topology& topo, const std
   return groups;
 }
 
-// The hole each new vertex and face of `patch` belongs to: patches of different loops share no
-// vertex (manifold loops are vertex-disjoint), so the new faces fall into one vertex-connected piece
-// per loop.
+// The hole each new vertex and face of `patch` belongs to. Patches of different loops share no
+// edge (at a pinch they share the vertex only), so the new faces fall into one edge-connected piece
+// per patch, found from the face across each loop edge.
 struct PatchOwnership {
   std::vector<int> vertex_hole;  ///< per new vertex (index − first new vertex)
   std::vector<int> face_hole;    ///< per new face
@@ -148,18 +149,32 @@ struct PatchOwnership {
 PatchOwnership patch_ownership(const InitialPatch& patch, int input_vertices,
                                const std::vector<std::vector<int>>& loops, std::span<const int> holes) {
   const Faces& F = patch.mesh.F;
-  std::vector<int> parent(patch.mesh.num_vertices());
+  const int first = patch.first_patch_face, count = static_cast<int>(F.rows()) - first;
+  const auto key = [](int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  };
+  std::unordered_map<std::uint64_t, int> face_of;  // directed patch edge -> patch face (− first)
+  for (int f = 0; f < count; ++f)
+    for (int k = 0; k < 3; ++k) face_of[key(F(first + f, k), F(first + f, (k + 1) % 3))] = f;
+  std::vector<int> parent(count);
   std::iota(parent.begin(), parent.end(), 0);
-  for (int f = patch.first_patch_face; f < F.rows(); ++f)
-    for (int k = 1; k < 3; ++k) parent[find_root(parent, F(f, k))] = find_root(parent, F(f, 0));
-  std::vector<int> hole_of_root(parent.size(), -1);
+  for (const auto& [edge, f] : face_of) {
+    const auto twin = face_of.find((edge << 32) | (edge >> 32));
+    if (twin != face_of.end()) parent[find_root(parent, f)] = find_root(parent, twin->second);
+  }
+  std::vector<int> hole_of_root(count, -1);
   for (int h : holes)
-    for (int v : loops[h]) hole_of_root[find_root(parent, v)] = h;
+    for (std::size_t t = 0; t < loops[h].size(); ++t) {
+      const auto across = face_of.find(key(loops[h][(t + 1) % loops[h].size()], loops[h][t]));
+      if (across != face_of.end()) hole_of_root[find_root(parent, across->second)] = h;
+    }
   PatchOwnership own;
-  for (int v = input_vertices; v < patch.mesh.num_vertices(); ++v)
-    own.vertex_hole.push_back(hole_of_root[find_root(parent, v)]);
-  for (int f = patch.first_patch_face; f < F.rows(); ++f)
-    own.face_hole.push_back(hole_of_root[find_root(parent, F(f, 0))]);
+  own.vertex_hole.assign(patch.mesh.num_vertices() - input_vertices, -1);
+  for (int f = 0; f < count; ++f) {
+    own.face_hole.push_back(hole_of_root[find_root(parent, f)]);
+    for (int k = 0; k < 3; ++k)
+      if (F(first + f, k) >= input_vertices) own.vertex_hole[F(first + f, k) - input_vertices] = own.face_hole.back();
+  }
   return own;
 }
 

@@ -406,6 +406,15 @@ TEST(FillPinches, TwoHolesTouchingAtAVertexAreFilledManifold) {
   const Topology topo = build_topology(filled.F, filled.num_vertices());
   EXPECT_EQ(boundary_loops(filled.F, topo).size(), 1u);  // the grid's outer border
   EXPECT_FALSE(boundary_vertex_flags(topo)[pinch]);
+  // Each hole's own patch is counted for it, though the two touch at the pinch.
+  int vertices = 0, faces = 0;
+  for (const auto& h : r.holes)
+    if (h.status == HoleStatus::filled) {
+      EXPECT_GT(h.faces_added, 0) << "hole " << h.index;
+      vertices += h.vertices_added, faces += h.faces_added;
+    }
+  EXPECT_EQ(vertices, filled.num_vertices() - holed.num_vertices());
+  EXPECT_EQ(faces, filled.num_faces() - holed.num_faces());
   // The grid stays flat: every new vertex on z = 0.
   EXPECT_LT(filled.V.bottomRows(filled.num_vertices() - holed.num_vertices()).col(2).cwiseAbs().maxCoeff(), 1e-9);
 }
@@ -480,7 +489,9 @@ TEST(FillPinches, AHoleRoundAnIslandJoinedAtOneVertexIsFilledManifold) {
 
 // The real-hole protocol's cut of blub at (-0.565203, -0.333718, 0.0970017), radius 8 h: two loops
 // (37 and 26 edges) through one pinch vertex with four border edges, both reported "non-manifold
-// border" before. Filled together, watertight, manifold and without crossings.
+// border" before. Each loop joined a fan of the pinch to itself, so relinking makes them one loop
+// through the pinch twice (one patch, counted for one of the holes). Filled, watertight, manifold
+// and without crossings.
 TEST(FillPinches, BlubBallHoleThroughAPinchIsFilled) {
   const Mesh holed = test::cut_ball(read_mesh(test::data_path("blub.obj")), Vec3(-0.565203, -0.333718, 0.0970017),
                                     0.307912);
@@ -493,7 +504,12 @@ TEST(FillPinches, BlubBallHoleThroughAPinchIsFilled) {
   Mesh filled = holed;
   const FillReport r = fill_holes(filled, options_for(Continuity::G2, FairMethod::harmonic));
   EXPECT_EQ(r.filled, static_cast<int>(r.holes.size()));
-  for (const auto& h : r.holes) EXPECT_EQ(h.status, HoleStatus::filled) << h.reason;
+  int vertices = 0;
+  for (const auto& h : r.holes) {
+    EXPECT_EQ(h.status, HoleStatus::filled) << h.reason;
+    vertices += h.vertices_added;
+  }
+  EXPECT_EQ(vertices, filled.num_vertices() - holed.num_vertices());
   expect_watertight(holed, filled);
   std::vector<int> new_faces(filled.num_faces() - holed.num_faces());
   std::iota(new_faces.begin(), new_faces.end(), holed.num_faces());
