@@ -35,8 +35,8 @@ std::vector<int> border_edge_counts(const Topology& topo) {
 }
 
 // The mesh requirements of filling: everything validate checks, except that a vertex may be
-// non-manifold where it pinches the border (more than two border edges): such a vertex only makes
-// the holes through it unfillable, and those are reported per hole.
+// non-manifold where it pinches the border (more than two border edges): filling the holes through
+// it together makes it manifold (border_pinches.h), and a hole that cannot be is reported per hole.
 void require_fillable(const Mesh& mesh) {
   ValidationReport report = validate(mesh);
   const bool well_formed = !report.no_faces && report.out_of_range_indices.count == 0 &&
