@@ -8,12 +8,16 @@
 #include <fairsurf/topology.h>
 #include <fairsurf/validate.h>
 
+#include "border_pinches.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <numeric>
+#include <unordered_map>
 
 namespace fairsurf {
 namespace {
@@ -33,8 +37,8 @@ std::vector<int> border_edge_counts(const Topology& topo) {
 }
 
 // The mesh requirements of filling: everything validate checks, except that a vertex may be
-// non-manifold where it pinches the border (more than two border edges): such a vertex only makes
-// the holes through it unfillable, and those are reported per hole.
+// non-manifold where it pinches the border (more than two border edges): filling the holes through
+// it together makes it manifold (border_pinches.h), and a hole that cannot be is reported per hole.
 void require_fillable(const Mesh& mesh) {
   ValidationReport report = validate(mesh);
   const bool well_formed = !report.no_faces && report.out_of_range_indices.count == 0 &&
@@ -48,18 +52,31 @@ void require_fillable(const Mesh& mesh) {
   require_valid(report, Requirements{}, "fill_holes");
 }
 
-// Why the loop cannot bound a manifold patch, or "" if it can.
-std::string non_manifold_border(std::span<const int> loop, const std::vector<int>& border_edges) {
-  if (loop.size() < 3) return "the loop has fewer than three edges";
-  std::vector<int> sorted(loop.begin(), loop.end());
-  std::sort(sorted.begin(), sorted.end());
-  const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
-  if (repeated != sorted.end())
-    return "non-manifold border: the loop passes through vertex " + std::to_string(*repeated) + " twice";
-  for (int v : loop)
-    if (border_edges[v] > 2)
-      return "non-manifold border: vertex " + std::to_string(v) + " has " + std::to_string(border_edges[v]) +
-             " border edges";
+// The holes through each pinch of the border (a vertex with more than two border edges).
+std::unordered_map<int, std::vector<int>> holes_at_pinches(const std::vector<std::vector<int>>& loops,
+                                                           const std::vector<int>& border_edges) {
+  std::unordered_map<int, std::vector<int>> at;
+  for (int h = 0; h < static_cast<int>(loops.size()); ++h)
+    for (int v : loops[h])
+      if (border_edges[v] > 2 && (at[v].empty() || at[v].back() != h)) at[v].push_back(h);
+  return at;
+}
+
+// Why the loop cannot be filled, or "" if it can: at a pinch every loop through the vertex must be
+// filled with it, since only their patches together can join the vertex's fans into one
+// (border_pinches.h).
+std::string unfillable_border(int hole, const std::vector<std::vector<int>>& loops,
+                              const std::unordered_map<int, std::vector<int>>& pinches,
+                              const std::vector<char>& chosen) {
+  if (loops[hole].size() < 3) return "the loop has fewer than three edges";
+  for (int v : loops[hole]) {
+    const auto it = pinches.find(v);
+    if (it == pinches.end()) continue;
+    for (int other : it->second)
+      if (!chosen[other])
+        return "non-manifold border: vertex " + std::to_string(v) + " is also on hole " + std::to_string(other) +
+               ", which is not filled";
+  }
   return "";
 }
 
@@ -123,9 +140,9 @@ std::vector<std::vector<int>> overlapping_groups(const Topology& topo, const std
   return groups;
 }
 
-// The hole each new vertex and face of `patch` belongs to: patches of different loops share no
-// vertex (manifold loops are vertex-disjoint), so the new faces fall into one vertex-connected piece
-// per loop.
+// The hole each new vertex and face of `patch` belongs to. Patches of different loops share no
+// edge (at a pinch they share the vertex only), so the new faces fall into one edge-connected piece
+// per patch, found from the face across each loop edge.
 struct PatchOwnership {
   std::vector<int> vertex_hole;  ///< per new vertex (index − first new vertex)
   std::vector<int> face_hole;    ///< per new face
@@ -134,18 +151,32 @@ struct PatchOwnership {
 PatchOwnership patch_ownership(const InitialPatch& patch, int input_vertices,
                                const std::vector<std::vector<int>>& loops, std::span<const int> holes) {
   const Faces& F = patch.mesh.F;
-  std::vector<int> parent(patch.mesh.num_vertices());
+  const int first = patch.first_patch_face, count = static_cast<int>(F.rows()) - first;
+  const auto key = [](int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  };
+  std::unordered_map<std::uint64_t, int> face_of;  // directed patch edge -> patch face (− first)
+  for (int f = 0; f < count; ++f)
+    for (int k = 0; k < 3; ++k) face_of[key(F(first + f, k), F(first + f, (k + 1) % 3))] = f;
+  std::vector<int> parent(count);
   std::iota(parent.begin(), parent.end(), 0);
-  for (int f = patch.first_patch_face; f < F.rows(); ++f)
-    for (int k = 1; k < 3; ++k) parent[find_root(parent, F(f, k))] = find_root(parent, F(f, 0));
-  std::vector<int> hole_of_root(parent.size(), -1);
+  for (const auto& [edge, f] : face_of) {
+    const auto twin = face_of.find((edge << 32) | (edge >> 32));
+    if (twin != face_of.end()) parent[find_root(parent, f)] = find_root(parent, twin->second);
+  }
+  std::vector<int> hole_of_root(count, -1);
   for (int h : holes)
-    for (int v : loops[h]) hole_of_root[find_root(parent, v)] = h;
+    for (std::size_t t = 0; t < loops[h].size(); ++t) {
+      const auto across = face_of.find(key(loops[h][(t + 1) % loops[h].size()], loops[h][t]));
+      if (across != face_of.end()) hole_of_root[find_root(parent, across->second)] = h;
+    }
   PatchOwnership own;
-  for (int v = input_vertices; v < patch.mesh.num_vertices(); ++v)
-    own.vertex_hole.push_back(hole_of_root[find_root(parent, v)]);
-  for (int f = patch.first_patch_face; f < F.rows(); ++f)
-    own.face_hole.push_back(hole_of_root[find_root(parent, F(f, 0))]);
+  own.vertex_hole.assign(patch.mesh.num_vertices() - input_vertices, -1);
+  for (int f = 0; f < count; ++f) {
+    own.face_hole.push_back(hole_of_root[find_root(parent, f)]);
+    for (int k = 0; k < 3; ++k)
+      if (F(first + f, k) >= input_vertices) own.vertex_hole[F(first + f, k) - input_vertices] = own.face_hole.back();
+  }
   return own;
 }
 
@@ -194,12 +225,15 @@ FairRegionOptions choose_fairing(const Submesh& sub, const FillOptions& options,
 
 // Fills the holes `group` jointly on `mesh`; on success replaces mesh and fills the reports, on
 // failure throws (mesh untouched) or returns the reason the patch was rejected.
+// `patch_loops` are the group's loops as they are triangulated (relinked at pinches).
 std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, const std::vector<int>& group,
-                       const FillOptions& options, const FairRegionOptions& fairing_options,
-                       const FillObserver& observer, std::vector<HoleReport>& reports) {
-  std::vector<std::vector<int>> group_loops;
-  for (int h : group) group_loops.push_back(loops[h]);
-  InitialPatch patch = hole_patch(mesh, group_loops, options.patch);
+                       const std::vector<std::vector<int>>& patch_loops, const FillOptions& options,
+                       const FairRegionOptions& fairing_options, const FillObserver& observer,
+                       std::vector<HoleReport>& reports) {
+  InitialPatch patch = hole_patch(mesh, patch_loops, options.patch);
+  const Topology topo = build_topology(patch.mesh.F, patch.mesh.num_vertices());
+  const std::string non_manifold = detail::patch_non_manifold(patch.mesh.F, topo, patch.first_patch_face);
+  if (!non_manifold.empty()) return non_manifold;
 
   // Fair on the patch's neighbourhood only (fair_region would cut out the same rings): the cost of
   // checking the mesh stays in proportion to the hole, and a defect far away (a pinched border
@@ -210,7 +244,6 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
   fairing.requested = fairing.supported = fairing_options.continuity;
   fairing.method = fairing_options.method;
   if (!patch.free_vertices.empty()) {
-    const Topology topo = build_topology(patch.mesh.F, patch.mesh.num_vertices());
     sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, topo, patch.free_vertices,
                                 options.fairing.submesh_rings);
     const FlowObserver step_observer = [&](const StepRecord& r) {
@@ -307,9 +340,13 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
   }
 
   const std::vector<int> border_edges = border_edge_counts(topo);
+  const std::vector<int> chosen = select_holes(loops, options, report.holes);
+  std::vector<char> is_chosen(loops.size(), 0);
+  for (int h : chosen) is_chosen[h] = 1;
+  const auto pinches = holes_at_pinches(loops, border_edges);
   std::vector<int> fillable;
-  for (int h : select_holes(loops, options, report.holes)) {
-    const std::string bad = non_manifold_border(loops[h], border_edges);
+  for (int h : chosen) {
+    const std::string bad = unfillable_border(h, loops, pinches, is_chosen);
     if (bad.empty())
       fillable.push_back(h);
     else
@@ -317,6 +354,14 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
   }
   const int rings = rings_needed(options.fairing.continuity);
   for (const auto& group : overlapping_groups(topo, loops, fillable, rings)) {
+    std::vector<std::vector<int>> patch_loops;
+    for (int h : group) patch_loops.push_back(loops[h]);
+    try {
+      patch_loops = detail::relink_pinched_loops(mesh.V, mesh.F, topo, patch_loops);
+    } catch (const Error& e) {
+      mark(report.holes, group, HoleStatus::failed, e.what());
+      continue;
+    }
     for (int h : group)
       for (int other : group)
         if (other != h) report.holes[h].filled_with.push_back(other);
@@ -327,7 +372,7 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
     std::string reason, first_failure;
     for (;;) {
       try {
-        reason = fill_group(mesh, loops, group, options, fairing, observer, report.holes);
+        reason = fill_group(mesh, loops, group, patch_loops, options, fairing, observer, report.holes);
       } catch (const Error& e) {
         reason = e.what();
       }

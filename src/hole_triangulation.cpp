@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace fairsurf {
@@ -95,9 +96,10 @@ class Triangulator {
 
   // Appends the triangles of `poly` to `out` (each as (v_k, v_j, v_i), reversing the loop order).
   void triangulate(const Polygon& poly, std::vector<Eigen::Vector3i>& out) {
-    if (poly.size() <= threshold_) return solve(poly, out);
-    divided_ = true;
-    const auto [a, b] = best_cut(poly);
+    const auto repeat = repeated_positions(poly);
+    if (repeat.first < 0 && poly.size() <= threshold_) return solve(poly, out);
+    divided_ = divided_ || repeat.first < 0;
+    const auto [a, b] = repeat.first < 0 ? best_cut(poly) : bridge_cut(poly, repeat.first, repeat.second);
     Polygon first, second;
     for (int t = a; t <= b; ++t) first.vertices.push_back(poly.vertices[t]);
     first.side_normals.assign(poly.side_normals.begin() + a, poly.side_normals.begin() + b);
@@ -118,7 +120,50 @@ class Triangulator {
   bool divided() const { return divided_; }
 
  private:
-  bool admissible_diagonal(int u, int v) const { return u != v && !is_mesh_edge(topo_, u, v); }
+  // A diagonal may not join a vertex to itself (a loop through a vertex twice), be a mesh edge, or
+  // repeat a diagonal of an earlier piece (two pieces can share a vertex of such a loop): each would
+  // give an edge more than two faces.
+  bool admissible_diagonal(int u, int v) const {
+    return u != v && !is_mesh_edge(topo_, u, v) && !made_.contains(undirected_key(u, v));
+  }
+
+  static std::uint64_t undirected_key(int u, int v) { return edge_key(std::min(u, v), std::max(u, v)); }
+
+  // Positions s < t of the first vertex the polygon passes twice; (-1, -1) if none.
+  static std::pair<int, int> repeated_positions(const Polygon& poly) {
+    std::unordered_map<int, int> seen;
+    for (int t = 0; t < poly.size(); ++t) {
+      const auto [it, fresh] = seen.emplace(poly.vertices[t], t);
+      if (!fresh) return {it->second, t};
+    }
+    return {-1, -1};
+  }
+
+  // A loop through a vertex twice (a pinch of the border, both occurrences on this hole) is cut by
+  // a diagonal from between the occurrences s < t to outside them, so that each piece passes
+  // through the vertex once and the dynamic programme never sees it twice. The shortest such
+  // diagonal relative to the shorter arc it cuts off is taken, as in best_cut.
+  std::pair<int, int> bridge_cut(const Polygon& poly, int s, int t) const {
+    const int m = poly.size();
+    std::vector<double> arc(m + 1, 0.0);
+    for (int q = 0; q < m; ++q)
+      arc[q + 1] = arc[q] + (point(V_, poly.vertices[(q + 1) % m]) - point(V_, poly.vertices[q])).norm();
+    double best = kInfinity;
+    std::pair<int, int> cut{-1, -1};
+    for (int a = s + 1; a < t; ++a)
+      for (int b = 0; b < m; ++b) {
+        if (b >= s && b <= t) continue;
+        const int lo = std::min(a, b), hi = std::max(a, b);
+        const int u = poly.vertices[lo], v = poly.vertices[hi];
+        const double shorter_arc = std::min(arc[hi] - arc[lo], arc[m] - (arc[hi] - arc[lo]));
+        const double ratio = (point(V_, u) - point(V_, v)).norm() / shorter_arc;
+        if (ratio < best && admissible_diagonal(u, v)) best = ratio, cut = {lo, hi};
+      }
+    if (cut.first < 0)
+      throw InvalidMeshError("triangulate_hole: no admissible diagonal separates the two passes of the loop "
+                             "through vertex " + std::to_string(poly.vertices[s]));
+    return cut;
+  }
 
   // Positions (a, b), a < b, of the admissible diagonal with the smallest ratio of its length to
   // the shorter of the two loop arcs it cuts off, among those leaving at least a quarter of the
@@ -155,7 +200,7 @@ class Triangulator {
   }
 
   // Liepa's dynamic programme on one polygon.
-  void solve(const Polygon& poly, std::vector<Eigen::Vector3i>& out) const {
+  void solve(const Polygon& poly, std::vector<Eigen::Vector3i>& out) {
     const int m = poly.size();
     std::vector<Weight> weight(static_cast<std::size_t>(m) * m);
     std::vector<int> apex(static_cast<std::size_t>(m) * m, -1);
@@ -201,6 +246,7 @@ class Triangulator {
       if (k - i < 2) continue;
       const int j = apex[at(i, k)];
       out.emplace_back(vertex(k), vertex(j), vertex(i));
+      made_.insert(undirected_key(vertex(i), vertex(k)));
       stack.emplace_back(i, j);
       stack.emplace_back(j, k);
     }
@@ -210,6 +256,7 @@ class Triangulator {
   const Topology& topo_;
   int threshold_;
   bool divided_ = false;
+  std::unordered_set<std::uint64_t> made_;  // diagonals of the pieces solved so far
 };
 
 }  // namespace

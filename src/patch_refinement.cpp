@@ -8,7 +8,9 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
+#include <utility>
 
 namespace fairsurf {
 namespace {
@@ -40,9 +42,10 @@ double angle_between(const Vec& u, const Vec& v) { return std::atan2(OpenMesh::c
 // The local patch: OpenMesh connectivity, its vertices' global indices and their scales σ.
 class Refiner {
  public:
-  Refiner(const Vertices& V, const Faces& patch, const PatchRefinementOptions& options)
+  Refiner(const Vertices& V, const Faces& F, const Faces& patch, const PatchRefinementOptions& options)
       : options_(options), num_input_vertices_(static_cast<int>(V.rows())) {
     build(V, patch);
+    mesh_edges_between_patch_vertices(V, F);
     initial_scales();
   }
 
@@ -114,6 +117,45 @@ class Refiner {
     }
   }
 
+  static long long undirected_key(int a, int b) {
+    return (static_cast<long long>(std::min(a, b)) << 32) | static_cast<unsigned>(std::max(a, b));
+  }
+
+  // The edges of the mesh outside the patch between two patch vertices. A flip must not create
+  // one: OpenMesh only sees the patch, and the edge would have four faces (a border vertex of a
+  // hole can be joined to another by a mesh edge across the hole's neighbourhood).
+  // Also keeps the unit normal of the mesh face on each directed such edge, for the dihedral angle
+  // across the patch's border.
+  void mesh_edges_between_patch_vertices(const Vertices& V, const Faces& F) {
+    std::vector<int> local(num_input_vertices_, -1);
+    for (int i = 0; i < static_cast<int>(global_.size()); ++i) local[global_[i]] = i;
+    for (int f = 0; f < F.rows(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int a = local[F(f, k)], b = local[F(f, (k + 1) % 3)];
+        if (a < 0 || b < 0) continue;
+        outside_edges_.insert(undirected_key(a, b));
+        const Vec p0(V(F(f, 0), 0), V(F(f, 0), 1), V(F(f, 0), 2)), p1(V(F(f, 1), 0), V(F(f, 1), 1), V(F(f, 1), 2)),
+            p2(V(F(f, 2), 0), V(F(f, 2), 1), V(F(f, 2), 2));
+        outside_normals_[directed_key(a, b)] = OpenMesh::cross(p1 - p0, p2 - p0);
+      }
+  }
+
+  static long long directed_key(int a, int b) { return (static_cast<long long>(a) << 32) | static_cast<unsigned>(b); }
+
+  // Largest dihedral angle between the triangle (u, v, w) and the mesh faces across its edges (0 if
+  // none of its edges is on the patch's border).
+  double border_dihedral(int u, int v, int w) const {
+    const Vec pu = mesh_.point(PatchMesh::VertexHandle(u)), pv = mesh_.point(PatchMesh::VertexHandle(v)),
+              pw = mesh_.point(PatchMesh::VertexHandle(w));
+    const Vec normal = OpenMesh::cross(pv - pu, pw - pu);
+    double angle = 0.0;
+    for (const auto& [a, b] : {std::pair{u, v}, std::pair{v, w}, std::pair{w, u}}) {
+      const auto it = outside_normals_.find(directed_key(b, a));
+      if (it != outside_normals_.end()) angle = std::max(angle, angle_between(normal, it->second));
+    }
+    return angle;
+  }
+
   // σ of border vertices from their border edges; of interior vertices from all their edges.
   void initial_scales() {
     const int n = static_cast<int>(global_.size());
@@ -168,6 +210,16 @@ class Refiner {
     if (OpenMesh::dot(OpenMesh::cross(a - c, d - c), old_normal) <= 0.0 ||
         OpenMesh::dot(OpenMesh::cross(b - d, c - d), old_normal) <= 0.0)
       return false;
+    const int ai = mesh_.from_vertex_handle(h0).idx(), bi = mesh_.to_vertex_handle(h0).idx();
+    const int ci = mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h0)).idx();
+    const int di = mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h1)).idx();
+    if (outside_edges_.contains(undirected_key(ci, di))) return false;
+    // Nor may it fold a triangle against the mesh across the border: beyond a right angle and
+    // beyond what the two triangles had (a Delaunay flip on a curved patch can turn a border
+    // triangle over; the flow then starts from a crease at the border).
+    const double folded = std::max(border_dihedral(ai, di, ci), border_dihedral(di, bi, ci));
+    if (folded > std::numbers::pi / 2 && folded > std::max(border_dihedral(ai, bi, ci), border_dihedral(bi, ai, di)))
+      return false;
     if (!mesh_.is_flip_ok(eh)) return false;  // c-d is already an edge; checked last, it walks a fan
     mesh_.flip(eh);
     ++flips_;
@@ -221,6 +273,8 @@ class Refiner {
   PatchMesh mesh_;
   std::vector<int> global_;     // global index of each input patch vertex (local order)
   std::vector<double> scale_;   // σ per local vertex
+  std::unordered_set<long long> outside_edges_;  // mesh edges between input patch vertices (local)
+  std::unordered_map<long long, Vec> outside_normals_;  // per directed such edge: its mesh face's normal
   int flips_ = 0;
 };
 
@@ -237,7 +291,7 @@ RefinedPatch refine_patch(const Vertices& V, const Faces& F, const Faces& patch,
       if (F(f, k) < 0 || F(f, k) >= V.rows())
         throw InvalidArgument("refine_patch: mesh face " + std::to_string(f) + " has vertex index " +
                               std::to_string(F(f, k)) + " outside [0, " + std::to_string(V.rows()) + ")");
-  Refiner refiner(V, patch, options);
+  Refiner refiner(V, F, patch, options);
   RefinedPatch out;
   refiner.refine(out);
   refiner.write(V, F, out);

@@ -1,6 +1,50 @@
 #include <fairsurf/submesh.h>
 
+#include <algorithm>
+
 namespace fairsurf {
+namespace {
+
+// Fans of the kept faces around v: the faces at v form paths and cycles in v's link, so the count
+// of path components is (#link vertices − #faces) when no cycle is closed.
+int kept_fans(const Faces& F, const Topology& topo, const std::vector<char>& keep_face, int v) {
+  std::vector<int> link;
+  int faces = 0;
+  for (int f : topo.vertex_faces.row(v)) {
+    if (!keep_face[f]) continue;
+    ++faces;
+    for (int k = 0; k < 3; ++k)
+      if (F(f, k) != v) link.push_back(F(f, k));
+  }
+  std::sort(link.begin(), link.end());
+  const int distinct = static_cast<int>(std::unique(link.begin(), link.end()) - link.begin());
+  return distinct - faces;
+}
+
+// Keeps every face of each vertex where the kept faces would meet in two or more fans: the rings
+// around a free region can touch themselves on their outer side (a saddle, a thin part), and the
+// neighbourhood would then have a non-manifold vertex the whole mesh does not have. Growing it
+// there only adds fixed data.
+void close_pinches(const Faces& F, const Topology& topo, std::vector<char>& keep_face) {
+  std::vector<int> work;
+  for (int f = 0; f < F.rows(); ++f)
+    if (keep_face[f])
+      for (int k = 0; k < 3; ++k) work.push_back(F(f, k));
+  while (!work.empty()) {
+    const int v = work.back();
+    work.pop_back();
+    const auto faces = topo.vertex_faces.row(v);
+    const bool all_kept = std::all_of(faces.begin(), faces.end(), [&](int f) { return keep_face[f] != 0; });
+    if (all_kept || kept_fans(F, topo, keep_face, v) < 2) continue;
+    for (int f : faces)
+      if (!keep_face[f]) {
+        keep_face[f] = 1;
+        for (int k = 0; k < 3; ++k) work.push_back(F(f, k));
+      }
+  }
+}
+
+}  // namespace
 
 Submesh extract_neighbourhood(const Vertices& V, const Faces& F, const Topology& topo,
                               std::span<const int> free_vertices, int rings) {
@@ -9,6 +53,7 @@ Submesh extract_neighbourhood(const Vertices& V, const Faces& F, const Topology&
   for (int v = 0; v < topo.num_vertices; ++v)
     if (dist[v] >= 0)
       for (int f : topo.vertex_faces.row(v)) keep_face[f] = 1;
+  close_pinches(F, topo, keep_face);
   int num_faces = 0;
   for (int f = 0; f < F.rows(); ++f)
     if (keep_face[f]) {

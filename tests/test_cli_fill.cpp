@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -89,7 +90,8 @@ TEST_F(CliFill, ExitCodes) {
 }
 
 TEST_F(CliFill, SomeHolesFailingExitsFourAndKeepsTheFilledOnes) {
-  // A grid with two square holes pinched at one vertex (unfillable) and one clean hole.
+  // A grid with two square holes pinched at one vertex and one clean hole; one pinched hole is
+  // selected without the other (unfillable alone) and the clean one.
   const Mesh grid = test::regular_grid(24, 12, 1.0);
   Mesh holed;
   holed.V = grid.V;
@@ -105,10 +107,24 @@ TEST_F(CliFill, SomeHolesFailingExitsFourAndKeepsTheFilledOnes) {
   for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
   write_mesh(path("pinched.obj"), holed);
 
+  const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  const int pinch = 6 * 25 + 6;
+  int pinched = -1, clean = -1;
+  for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
+    if (loops[i].size() > 20) continue;  // the outer border
+    if (std::count(loops[i].begin(), loops[i].end(), pinch) == 0)
+      clean = i;
+    else if (pinched < 0)
+      pinched = i;
+  }
+  ASSERT_GE(pinched, 0);
+  ASSERT_GE(clean, 0);
   const auto run = test::run_cli("fill " + quoted(path("pinched.obj")) + " -o " + quoted(path("out.obj")) +
-                                 " --skip-largest");
+                                 " --holes " + std::to_string(pinched) + "," + std::to_string(clean));
   EXPECT_EQ(run.exit_code, 4) << run.out;
-  EXPECT_NE(run.out.find("failed: non-manifold border: "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("failed: non-manifold border: vertex " + std::to_string(pinch) + " is also on hole "),
+            std::string::npos)
+      << run.out;
   EXPECT_NE(run.out.find("still holds the 1 holes that were filled"), std::string::npos) << run.out;
   const Mesh out = read_mesh(path("out.obj"));
   EXPECT_GT(out.num_faces(), holed.num_faces());

@@ -14,12 +14,14 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <map>
 #include <numbers>
 #include <random>
 #include <set>
 
 #include "analytic_meshes.h"
+#include "hole_meshes.h"
 #include "test_support.h"
 
 using namespace fairsurf;
@@ -458,6 +460,36 @@ Mesh concatenate(const Mesh& a, const Mesh& b) {
 }
 
 }  // namespace
+
+// The real-hole protocol's cut of blub at (0.00697216, -0.181279, -1.03702), radius 8 h: two loops
+// (82 and 68 edges) on a strongly curved part. Their minimum-weight triangulations keep every border
+// face within 46° and 84° of the mesh face across; Delaunay flips during refinement used to turn
+// border triangles over (93.8° and 95.2°), the crease the flow then starts from. The refinement now
+// refuses such flips; the membrane can still fold the border, and border_dihedral_angle says so.
+TEST(PatchFolds, RefinementNeverFoldsABorderTriangleOfARealHole) {
+  const Mesh holed = test::cut_ball(read_mesh(test::data_path("blub.obj")), Vec3(0.00697216, -0.181279, -1.03702),
+                                    0.307912);
+  const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  ASSERT_EQ(loops.size(), 2u);
+  PatchOptions unrelaxed;
+  unrelaxed.relax = false;
+  PatchOptions triangulated = unrelaxed;
+  triangulated.refinement.max_rounds = 0;
+  triangulated.refinement.relaxation_sweeps = 0;
+  for (const auto& loop : loops) {
+    const InitialPatch coarse = hole_patch(holed, {loop}, triangulated);
+    const InitialPatch refined = hole_patch(holed, {loop}, unrelaxed);
+    const InitialPatch relaxed = hole_patch(holed, {loop});
+    EXPECT_LT(coarse.border_dihedral_angle, std::numbers::pi / 2) << loop.size() << " edges";
+    EXPECT_LE(coarse.border_dihedral_angle, coarse.holes.front().max_dihedral_angle + 1e-12);
+    EXPECT_GT(refined.refinement.splits, 20);
+    EXPECT_LT(refined.border_dihedral_angle, std::numbers::pi / 2) << loop.size() << " edges";
+    EXPECT_GT(relaxed.border_dihedral_angle, 0.0);
+    std::cout << loop.size() << "-edge loop: border dihedral " << coarse.border_dihedral_angle * 180 / std::numbers::pi
+              << "° triangulated, " << refined.border_dihedral_angle * 180 / std::numbers::pi << "° refined, "
+              << relaxed.border_dihedral_angle * 180 / std::numbers::pi << "° after the membrane\n";
+  }
+}
 
 TEST(Tube, JoinsCoaxialCylindersOfDifferentCountsIntoOneManifold) {
   // z in [-2, 1] and [2, 5]: the facing ends are 1 apart, each cylinder's own ends 3 apart.

@@ -22,10 +22,14 @@
 // that continuity, which is then (by default) retried one continuity lower: G2 → G1 → G0, the
 // report's note saying why. So `supported` G2 means a settled G2 flow, never a partial one.
 //
-// Failures are per hole and leave the mesh as it was before that hole: a non-manifold border (the
-// loop passes through a vertex twice, or a border vertex has more than two border edges), a
-// triangulation, refinement or flow that throws, or a faired patch whose faces cross the mesh
-// (face_intersection.h). The other holes are still filled.
+// A pinch of the border (a vertex with more than two border edges, several fans of faces) is
+// filled: every loop through it is filled in one group, its border edges relinked at the pinch so
+// that the patches join the fans into one disk, and the result is manifold there.
+//
+// Failures are per hole and leave the mesh as it was before that hole: a pinch shared with a loop
+// that is not filled ("non-manifold border"), a triangulation, refinement or flow that throws, a
+// patch that would make an edge or vertex non-manifold, or a faired patch whose faces cross the
+// mesh (face_intersection.h). The other holes are still filled.
 #pragma once
 
 #include <fairsurf/fair_region.h>

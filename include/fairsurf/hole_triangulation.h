@@ -28,8 +28,9 @@
 //
 // A triangle is admissible only if its three vertices are distinct and none of its diagonals is
 // already an edge of the mesh (that would make the edge non-manifold). A loop that passes twice
-// through a vertex gets no triangle or diagonal joining the vertex to itself; two diagonals from
-// its two occurrences to one vertex are not excluded.
+// through a vertex (a pinch of the border) is first cut by a diagonal from between the two passes
+// to outside them, so each piece passes once; a later piece may not repeat an earlier piece's
+// diagonal (the two passes could otherwise both be joined to one vertex).
 #pragma once
 
 #include <fairsurf/mesh.h>

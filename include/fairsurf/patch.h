@@ -37,6 +37,11 @@ struct InitialPatch {
   Tube tube;                       ///< tube_patch: the unrefined tube (faces and ring vertices)
   RefinedPatch refinement;         ///< split/flip figures (its V and F are moved into mesh)
   MembraneReport membrane;         ///< empty when not relaxed or when the patch has no interior vertex
+  /// hole_patch: the largest angle (radians) between the normals of a patch face and the mesh face
+  /// across a border edge, on the final patch. Above π/2 the patch is folded against the mesh
+  /// there: a refinement flip never folds a border triangle so (patch_refinement.h), but the
+  /// membrane may (measured in docs/patch.md).
+  double border_dihedral_angle = 0.0;
 };
 
 /// Fills the holes bounded by `loops` (each as boundary_loops orders it) of `mesh`.

@@ -11,8 +11,9 @@
 //   1. split: a triangle with centroid c and σ_c = mean σ of its corners is split 1→3 at c when
 //      α·|c − v| > σ_c and α·|c − v| > σ_v for each corner v; c gets σ_c;
 //   2. flip: interior edges are flipped to the Delaunay configuration (sum of the two opposite
-//      angles > π), unless the flip would fold the two triangles over each other or duplicate an
-//      edge, until no edge flips.
+//      angles > π), unless the flip would fold the two triangles over each other, duplicate an
+//      edge of the patch or of the mesh around it, or turn a border triangle more than π/2 (and
+//      more than before) against the mesh face across the border, until no edge flips.
 // Finally interior vertices are relaxed tangentially: moved towards the centroid of their
 // neighbours within the plane of their vertex normal, a few times, each followed by a flip pass.
 // α = √2 gives edges whose mean is within a few percent of σ (measured in tests/test_patch.cpp).

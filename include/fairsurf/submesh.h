@@ -22,7 +22,9 @@ struct Submesh {
   std::vector<int> free_local;  ///< local indices of the free vertices, ascending
 };
 
-/// The faces touching any vertex within `rings` rings of `free_vertices`, with their vertices.
+/// The faces touching any vertex within `rings` rings of `free_vertices`, with their vertices, and
+/// every face around a vertex where those faces would meet in two or more fans (so the
+/// neighbourhood is non-manifold only where the mesh is: its outer rings can touch themselves).
 /// Local vertex order follows the global order. Throws InvalidArgument for an out-of-range index.
 Submesh extract_neighbourhood(const Vertices& V, const Faces& F, const Topology& topo,
                               std::span<const int> free_vertices, int rings = 6);

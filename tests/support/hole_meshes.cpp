@@ -8,13 +8,14 @@ namespace fairsurf::test {
 
 using Vec3 = Eigen::Vector3d;
 
-Mesh cut_hole(const Mesh& mesh, const std::function<bool(const Vec3&)>& inside) {
+namespace {
+
+// `mesh` with only the faces `keep` accepts and the vertices they use, in their order.
+Mesh keep_faces(const Mesh& mesh, const std::function<bool(int)>& keep) {
   std::vector<int> kept_faces;
   std::vector<int> new_index(mesh.num_vertices(), -1);
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    bool drop = false;
-    for (int k = 0; k < 3; ++k) drop = drop || inside(mesh.V.row(mesh.F(f, k)).transpose());
-    if (drop) continue;
+    if (!keep(f)) continue;
     kept_faces.push_back(f);
     for (int k = 0; k < 3; ++k) new_index[mesh.F(f, k)] = 0;
   }
@@ -29,6 +30,24 @@ Mesh cut_hole(const Mesh& mesh, const std::function<bool(const Vec3&)>& inside) 
   for (int i = 0; i < static_cast<int>(kept_faces.size()); ++i)
     for (int k = 0; k < 3; ++k) out.F(i, k) = new_index[mesh.F(kept_faces[i], k)];
   return out;
+}
+
+}  // namespace
+
+Mesh cut_hole(const Mesh& mesh, const std::function<bool(const Vec3&)>& inside) {
+  return keep_faces(mesh, [&](int f) {
+    for (int k = 0; k < 3; ++k)
+      if (inside(mesh.V.row(mesh.F(f, k)).transpose())) return false;
+    return true;
+  });
+}
+
+Mesh cut_ball(const Mesh& mesh, const Vec3& centre, double radius) {
+  return keep_faces(mesh, [&](int f) {
+    for (int k = 0; k < 3; ++k)
+      if ((mesh.V.row(mesh.F(f, k)).transpose() - centre).norm() > radius) return true;
+    return false;
+  });
 }
 
 // Ericson, Real-Time Collision Detection, 5.1.5: the closest point by Voronoi regions.

@@ -13,6 +13,11 @@ namespace fairsurf::test {
 /// uses any more are removed too (the others keep their relative order).
 Mesh cut_hole(const Mesh& mesh, const std::function<bool(const Eigen::Vector3d&)>& inside);
 
+/// `mesh` without every face whose three vertices lie in the closed ball (centre, radius), the
+/// vertices no face uses any more removed (the others keep their order): the cut of the real-hole
+/// measurement protocol.
+Mesh cut_ball(const Mesh& mesh, const Eigen::Vector3d& centre, double radius);
+
 /// Distance from p to the triangle (a, b, c).
 double point_triangle_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                const Eigen::Vector3d& c);
