@@ -2,6 +2,7 @@
 #include <fairsurf/fill.h>
 #include <fairsurf/io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -55,7 +56,7 @@ std::string hole_line(const HoleReport& r) {
     return line;
   }
   std::snprintf(buffer, sizeof buffer, ", +%d vertices, +%d faces, %s", r.vertices_added, r.faces_added,
-                std::string(to_string(r.supported)).c_str());
+                delivered_label(r.supported, r.linear).c_str());
   line += buffer;
   if (!r.note.empty()) line += " (" + std::string(to_string(r.requested)) + " requested; " + r.note + ")";
   if (!std::isnan(r.final_max_velocity)) {
@@ -73,6 +74,21 @@ std::string hole_line(const HoleReport& r) {
   return line;
 }
 
+// "3 G2, 1 C2 (linear)": the filled holes counted by what they got, in the order first seen.
+std::string delivered_counts(const FillReport& report) {
+  std::vector<std::pair<std::string, int>> counts;
+  for (const HoleReport& r : report.holes) {
+    if (r.status != HoleStatus::filled) continue;
+    const std::string label = delivered_label(r.supported, r.linear);
+    auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == label; });
+    if (it == counts.end()) counts.emplace_back(label, 1);
+    else ++it->second;
+  }
+  std::string text;
+  for (const auto& [label, count] : counts) text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + label;
+  return text.empty() ? "none filled" : text;
+}
+
 nlohmann::json hole_json(const HoleReport& r) {
   nlohmann::json j{{"index", r.index},
                    {"border_edges", r.border_edges},
@@ -83,6 +99,10 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"faces_added", r.faces_added},
                    {"requested_continuity", std::string(to_string(r.requested))},
                    {"supported_continuity", std::string(to_string(r.supported))},
+                   {"delivered", delivered_label(r.supported, r.linear)},
+                   {"linear", r.linear},
+                   {"held_out_flow_error", r.held_out_flow_error},
+                   {"held_out_linear_error", r.held_out_linear_error},
                    {"note", r.note},
                    {"steps", r.steps},
                    {"harmonic_solves", r.harmonic_solves},
@@ -138,10 +158,11 @@ void run_fill(const FillArgs& args) {
   if (!args.quiet)
     for (const auto& r : report.holes) std::printf("%s\n", hole_line(r).c_str());
   const int selected = report.filled + report.failed;
-  std::printf("filled %d of %d selected holes of %s (%d failed, %d skipped): %d -> %d vertices, %d -> %d "
+  std::printf("filled %d of %d selected holes of %s (%s; %d failed, %d skipped): %d -> %d vertices, %d -> %d "
               "faces, %.2f s; wrote %s\n",
-              report.filled, selected, args.input.c_str(), report.failed, report.skipped, report.input_vertices,
-              mesh.num_vertices(), report.input_faces, mesh.num_faces(), report.seconds, args.output.c_str());
+              report.filled, selected, args.input.c_str(), delivered_counts(report).c_str(), report.failed,
+              report.skipped, report.input_vertices, mesh.num_vertices(), report.input_faces, mesh.num_faces(),
+              report.seconds, args.output.c_str());
   std::fflush(stdout);
   if (report.failed > 0)
     throw CliError(kNumerical, "fill: " + std::to_string(report.failed) + " of " + std::to_string(selected) +

@@ -44,6 +44,8 @@ nlohmann::json to_json(const FairRegionReport& r) {
                    {"method", to_string(r.method)},
                    {"continuity_requested", std::string(to_string(r.requested))},
                    {"continuity_supported", std::string(to_string(r.supported))},
+                   {"delivered", delivered_label(r.supported, r.linear)},
+                   {"note", r.note},
                    {"continuity_measured", to_json(r.continuity)},
                    {"seconds", r.seconds}};
   if (r.method == FairMethod::flow) {
@@ -58,9 +60,9 @@ nlohmann::json to_json(const FairRegionReport& r) {
 
 std::string summary(const FairRegionReport& r) {
   char text[256];
-  if (r.method == FairMethod::harmonic) {
-    std::snprintf(text, sizeof text, "%s (harmonic k = %d)", std::string(to_string(r.supported)).c_str(),
-                  r.harmonic.order);
+  if (r.linear) {
+    std::snprintf(text, sizeof text, "%s (cotangent ∆^%d, %d solves)", delivered_label(r.supported, true).c_str(),
+                  r.harmonic.order, r.harmonic.iterations);
   } else {
     std::string start;
     if (r.harmonic.iterations > 0)
@@ -70,7 +72,8 @@ std::string summary(const FairRegionReport& r) {
                   r.flow.accepted_steps, to_string(r.flow.stop_reason), r.flow.final_max_velocity);
   }
   std::string out = text;
-  if (r.method == FairMethod::flow && r.flow.stop_reason != FlowStopReason::steady)
+  if (!r.note.empty()) out += "; " + r.note;
+  if (!r.linear && r.flow.stop_reason != FlowStopReason::steady)
     out += "; NOT steady: the result is the flow's state after its last step (raise --max-steps, or see "
            "docs/blend.md for regions with no steady state)";
   if (r.supported != r.requested)
