@@ -68,17 +68,21 @@ TEST_F(CliFair, SphereCapSceneIsFairedBackToTheSphere) {
   EXPECT_LT(j["continuity_measured"]["max_mean_curvature_jump"].get<double>(), 0.05);
 }
 
-TEST_F(CliFair, AFlowStoppedAtItsStepLimitIsReportedAsNotSteady) {
+// A flow stopped at its step limit is not G2: the region keeps the ∆³ solution it started from,
+// labelled "C2 (linear)" with the reason (FairRegionOptions::linear_floor).
+TEST_F(CliFair, AFlowStoppedAtItsStepLimitKeepsTheLinearFloorAndSaysSo) {
   const std::string scene = path("cap.ply"), out = path("cap_out.ply");
   ASSERT_EQ(run_cli("scene sphere-cap -o '" + scene + "'").exit_code, 0);
   const CliRun cut = run_cli("fair '" + scene + "' -o '" + out + "' --region-property free --max-steps 2 --quiet");
   ASSERT_EQ(cut.exit_code, 0) << cut.out;
-  EXPECT_NE(cut.out.find("2 steps, max steps, max|V| "), std::string::npos) << cut.out;
-  EXPECT_NE(cut.out.find("; NOT steady: the result is the flow's state after its last step"), std::string::npos)
+  EXPECT_NE(cut.out.find("C2 (linear) (cotangent ∆^3, "), std::string::npos) << cut.out;
+  EXPECT_NE(cut.out.find("the sixth-order flow did not settle (2 steps without a steady state"), std::string::npos)
       << cut.out;
+  EXPECT_NE(cut.out.find("kept the linear ∆3 solution it started from"), std::string::npos) << cut.out;
   const CliRun full = run_cli("fair '" + scene + "' -o '" + out + "' --region-property free --quiet --force");
   ASSERT_EQ(full.exit_code, 0) << full.out;
   EXPECT_EQ(full.out.find("NOT steady"), std::string::npos) << full.out;
+  EXPECT_EQ(full.out.find("(linear)"), std::string::npos) << full.out;
 }
 
 TEST_F(CliFair, RegionErrorsHaveClearMessagesAndExitCodes) {
