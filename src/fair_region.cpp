@@ -1,3 +1,5 @@
+#include "held_out.h"
+
 #include <fairsurf/errors.h>
 #include <fairsurf/fair_region.h>
 #include <fairsurf/submesh.h>
@@ -47,6 +49,7 @@ FairRegionOptions FairRegionOptions::harmonic_started() {
   o.flow.steady_energy_tolerance = 1e-5;
   o.flow.step_control.max_consecutive_rejections = 30;
   o.linear_floor = true;
+  o.held_out_rings = 2;
   return o;
 }
 
@@ -89,6 +92,26 @@ void run_flow_with_floor(Submesh& sub, const Region& region, const FairRegionOpt
                 " solution it started from";
 }
 
+// FairRegionOptions::held_out_rings: true (with the reason in report.note) where the linear ∆^k
+// solution re-predicts the held-out rings better than the flow.
+bool linear_predicts_better(const Submesh& sub, const FairRegionOptions& options, FairRegionReport& report) {
+  if (options.method != FairMethod::flow || !options.linear_floor || options.held_out_rings <= 0 ||
+      options.harmonic_start_iterations <= 0)
+    return false;
+  const fair_detail::HeldOutErrors errors = fair_detail::held_out_errors(sub, options.held_out_rings, options);
+  report.held_out_flow_error = errors.flow;
+  report.held_out_linear_error = errors.linear;
+  if (!(errors.linear < errors.flow)) return false;
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "the linear ∆%d solution re-predicts the %d rings around the region better than the %s "
+                "flow (%.3g against %.3g mean edges off the input)",
+                static_cast<int>(report.supported) + 1, options.held_out_rings,
+                to_string(flow_for(report.supported)), errors.linear, errors.flow);
+  report.note = text;
+  return true;
+}
+
 }  // namespace
 
 FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
@@ -111,7 +134,7 @@ FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
   harmonic.solver = options.harmonic_solver;
   harmonic.iterations = std::max(1, options.harmonic_start_iterations);
   harmonic.tolerance = options.harmonic_start_tolerance;
-  if (options.method == FairMethod::harmonic) {
+  if (options.method == FairMethod::harmonic || linear_predicts_better(sub, options, report)) {
     report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, region, harmonic);
     report.linear = true;
   } else {

@@ -1,5 +1,3 @@
-#include "fill_held_out.h"
-
 #include <fairsurf/continuity.h>
 #include <fairsurf/errors.h>
 #include <fairsurf/face_intersection.h>
@@ -198,31 +196,6 @@ std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int 
          (crossings.size() == 1 ? "" : "s") + ")";
 }
 
-struct HeldOutChoice {
-  fill_detail::HeldOutErrors errors{std::numeric_limits<double>::quiet_NaN(),
-                                    std::numeric_limits<double>::quiet_NaN()};
-  std::string note;  ///< why the linear solution was chosen, if it was
-};
-
-// The flow, or its linear floor where the floor re-predicts the held-out rings around the hole
-// better (FillOptions::held_out_rings).
-FairRegionOptions choose_fairing(const Submesh& sub, const FillOptions& options, const FairRegionOptions& fairing,
-                                 HeldOutChoice& choice) {
-  if (options.held_out_rings <= 0 || fairing.method != FairMethod::flow || !fairing.linear_floor) return fairing;
-  choice.errors = fill_detail::held_out_errors(sub, options.held_out_rings, fairing);
-  if (!(choice.errors.linear < choice.errors.flow)) return fairing;
-  char text[200];
-  std::snprintf(text, sizeof text,
-                "the linear ∆%d solution re-predicts the %d rings around the hole better than the %s "
-                "flow (%.3g against %.3g mean edges off the input)",
-                static_cast<int>(fairing.continuity) + 1, options.held_out_rings,
-                to_string(flow_for(fairing.continuity)), choice.errors.linear, choice.errors.flow);
-  choice.note = text;
-  FairRegionOptions linear = fairing;
-  linear.method = FairMethod::harmonic;
-  return linear;
-}
-
 // Fills the holes `group` jointly on `mesh`; on success replaces mesh and fills the reports, on
 // failure throws (mesh untouched) or returns the reason the patch was rejected.
 // `patch_loops` are the group's loops as they are triangulated (relinked at pinches).
@@ -240,7 +213,6 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
   // elsewhere) does not concern this hole.
   Submesh sub;
   FairRegionReport fairing;
-  HeldOutChoice held_out;
   fairing.requested = fairing.supported = fairing_options.continuity;
   fairing.method = fairing_options.method;
   if (!patch.free_vertices.empty()) {
@@ -249,8 +221,7 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
     const FlowObserver step_observer = [&](const StepRecord& r) {
       if (observer) observer(group, r);
     };
-    const FairRegionOptions chosen = choose_fairing(sub, options, fairing_options, held_out);
-    fairing = fair_region(sub.mesh, sub.free_local, chosen, step_observer);
+    fairing = fair_region(sub.mesh, sub.free_local, fairing_options, step_observer);
     const FlowReport& flow = fairing.flow;
     if (!fairing.linear && flow.stop_reason != FlowStopReason::steady) {
       const bool diverged = !(flow.final_max_velocity <= flow.initial_max_velocity);
@@ -285,9 +256,8 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
       r.note = "the mesh around the hole has fewer than " + std::to_string(rings_needed(fairing.requested)) +
                " complete rings: faired with " + std::string(to_string(fairing.supported));
     if (!fairing.note.empty()) r.note += (r.note.empty() ? "" : "; ") + fairing.note;
-    if (!held_out.note.empty()) r.note += (r.note.empty() ? "" : "; ") + held_out.note;
-    r.held_out_flow_error = held_out.errors.flow;
-    r.held_out_linear_error = held_out.errors.linear;
+    r.held_out_flow_error = fairing.held_out_flow_error;
+    r.held_out_linear_error = fairing.held_out_linear_error;
     r.steps = flowed ? fairing.flow.accepted_steps : 0;
     r.harmonic_solves = fairing.harmonic.iterations;
     r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();

@@ -528,7 +528,7 @@ TEST(FillFailures, AFlowWithoutSteadyStateKeepsTheLinearFloorAndSaysSo) {
   FillOptions o = options_for(Continuity::G2);
   o.fairing.flow.max_steps = 1;
   o.fallback_on_failure = false;
-  o.held_out_rings = 0;  // the flow itself, not the held-out choice, meets the floor
+  o.fairing.held_out_rings = 0;  // the flow itself, not the held-out choice, meets the floor
   Mesh filled = holed, floor = holed;
   const FillReport r = fill_holes(filled, o);
   ASSERT_EQ(r.filled, 1) << r.holes.front().reason;

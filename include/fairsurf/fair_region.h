@@ -16,6 +16,7 @@
 #include <fairsurf/mesh.h>
 #include <fairsurf/region.h>
 
+#include <limits>
 #include <span>
 #include <string>
 
@@ -51,14 +52,22 @@ struct FairRegionOptions {
   /// instead of throwing or returning an unsettled state. The result is then never worse than the
   /// classical baseline, and the energy descent (FlowStepKind::energy_descent) only lowers E from it.
   bool linear_floor = false;
+  /// With the linear floor: hold out this many rings of fixed vertices around the free region, fair
+  /// the enlarged region with the flow and with the linear ∆^k solution alone, and deliver the linear
+  /// solution where it lies closer to the held-out input (mean distance along the input's vertex
+  /// normals). A flow then never replaces the classical baseline where it extrapolates the
+  /// surrounding surface worse (on real meshes the fitted energy can prefer shapes the surface does
+  /// not have; docs/fill.md). Costs two more fairings of a slightly larger region. 0: off.
+  int held_out_rings = 0;
 
   static FlowOptions default_fair_flow_options();
   /// The options that settle a disk-like region (a hole's patch, a marked region) in a few steps:
   /// the flow starts from the re-evaluated cotangent ∆^k solution (harmonic_start_iterations = 8)
   /// with a Newton-like first step (flow.tau = 1e-2; a rejected step still quarters it); the
   /// sixth-order flow descends the energy (FlowStepKind::energy_descent, steady once a step lowers E
-  /// by less than 1e-5 of itself, 30 rejections in a row allowed) and keeps the ∆³ solution as its
-  /// floor (linear_floor); and both
+  /// by less than 1e-5 of itself, 30 rejections in a row allowed), keeps the ∆³ solution as its
+  /// floor (linear_floor) and delivers it where it re-predicts 2 held-out rings better
+  /// (held_out_rings); and both
   /// linear solvers use the minimum-degree ordering (patch-sized systems analyze ~30x faster than
   /// with nested dissection). From a flattened cap the plain defaults need 160–300 trial steps and
   /// do not settle beyond ~1k free vertices (bench_fair: max|r − 1| 0.20 and 0.54 at 2.6k and 10k
@@ -80,6 +89,10 @@ struct FairRegionReport {
   /// harmonic, or the flow's floor (FairRegionOptions::linear_floor); `note` says why for the floor.
   bool linear = false;
   std::string note;
+  /// held_out_rings: mean normal distance of the held-out vertices from the input after the flow and
+  /// after the linear solution, in mean edge lengths (∞: that fairing failed; NaN: not measured).
+  double held_out_flow_error = std::numeric_limits<double>::quiet_NaN();
+  double held_out_linear_error = std::numeric_limits<double>::quiet_NaN();
   ContinuityMeasure continuity;                ///< measured after fairing
   double seconds = 0;                          ///< wall time of the whole call
 };

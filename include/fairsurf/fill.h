@@ -56,13 +56,6 @@ struct FillOptions {
   bool skip_largest = false;  ///< leave the longest loop (an open surface's outer border) open
   /// Reject a patch whose faces cross the surrounding mesh (face_intersection.h).
   bool check_intersections = true;
-  /// Hold out this many rings of the input around each hole's patch, fair the enlarged region with
-  /// the flow and with the linear ∆^k solution alone, and fill the hole with the linear solution
-  /// where it lies closer to the held-out input (mean normal distance): the result is then never a
-  /// flow that extrapolates the surrounding surface worse than the classical baseline (on real
-  /// meshes the fitted energy can prefer shapes the surface does not have). Only for the flow with
-  /// its linear floor (FairRegionOptions::linear_floor); 0: off. Costs two more fairings per hole.
-  int held_out_rings = 2;
   /// When the fill of a hole fails (the flow throws or reaches no steady state without a linear
   /// floor, or the patch crosses the mesh), retry with the linear ∆^k solution at the requested
   /// continuity, then at each lower one down to the membrane (C0); the report's `note` says so. A
@@ -97,7 +90,7 @@ struct HoleReport {
   /// method, or the floor kept when the flow did not settle or its patch crossed the mesh.
   /// delivered_label(supported, linear) names it ("G2", "C2 (linear)").
   bool linear = false;
-  /// FillOptions::held_out_rings: mean normal distance of the held-out rings from the input after
+  /// FairRegionOptions::held_out_rings: mean normal distance of the held-out rings from the input after
   /// the flow and after the linear solution, in mean edge lengths (∞: that fairing failed; NaN: not
   /// measured).
   double held_out_flow_error = std::numeric_limits<double>::quiet_NaN();

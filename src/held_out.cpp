@@ -1,4 +1,4 @@
-#include "fill_held_out.h"
+#include "held_out.h"
 
 #include <fairsurf/errors.h>
 #include <fairsurf/topology.h>
@@ -9,7 +9,7 @@
 #include <limits>
 #include <vector>
 
-namespace fairsurf::fill_detail {
+namespace fairsurf::fair_detail {
 namespace {
 
 // #V area-weighted vertex normals (unit; zero where undefined).
@@ -61,11 +61,13 @@ HeldOutErrors held_out_errors(const Submesh& sub, int rings, const FairRegionOpt
   if (held_out.empty()) return errors;
   const Vertices normal = vertex_normals(sub.mesh.V, sub.mesh.F);
   const double edge = mean_edge_length(sub.mesh.V, topo, held_out);
-  FairRegionOptions linear = fairing;
+  FairRegionOptions flow = fairing;
+  flow.held_out_rings = 0;
+  FairRegionOptions linear = flow;
   linear.method = FairMethod::harmonic;
-  errors.flow = held_out_error(sub.mesh, free, held_out, normal, edge, fairing);
+  errors.flow = held_out_error(sub.mesh, free, held_out, normal, edge, flow);
   errors.linear = held_out_error(sub.mesh, free, held_out, normal, edge, linear);
   return errors;
 }
 
-}  // namespace fairsurf::fill_detail
+}  // namespace fairsurf::fair_detail
