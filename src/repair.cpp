@@ -2,6 +2,8 @@
 
 #include "repair_internal.h"
 
+#include <limits>
+
 namespace fairsurf {
 namespace {
 
@@ -49,6 +51,22 @@ void store(const Work& work, bool remove_unreferenced, Mesh& mesh, RepairReport&
   mesh = std::move(out);
 }
 
+// Splits, small components, stitching of what the splits left coincident, orientation.
+void repair_connectivity(Work& work, const RepairOptions& options, RepairReport& report) {
+  using namespace repair_detail;
+  const int before_split = work.num_vertices();
+  split_non_manifold(work, options, report);
+  if (options.remove_small_components) remove_small_components(work, options.min_component_faces, report);
+  // A split can leave copies that stitching now joins into a manifold vertex (a fin cut loose at
+  // both ends whose other edges meet a border, once the debris around it is gone): joining them
+  // here keeps a second repair idle.
+  if (options.stitch_borders && work.num_vertices() > before_split) {
+    stitch_borders(work, options, report);
+    remove_collapsed_faces(work, report);
+  }
+  if (options.orient) orient_faces(work, report);
+}
+
 }  // namespace
 
 bool RepairReport::changed() const {
@@ -71,21 +89,20 @@ RepairReport repair(Mesh& mesh, const RepairOptions& options) {
   if (options.stitch_borders) stitch_borders(work, options, report);
   remove_collapsed_faces(work, report);
   if (options.remove_duplicate_faces) remove_duplicate_faces(work, report);
-  if (options.fix_degenerate_faces) {
-    fix_degenerate_faces(work, options, report);
-    if (options.remove_duplicate_faces) remove_duplicate_faces(work, report);
+  // A degenerate face whose edge was non-manifold, or whose neighbour was inconsistently oriented,
+  // can be fixed once the splits and the orientation have run: repeat while that helps.
+  int degenerate_before = std::numeric_limits<int>::max();
+  for (int round = 0; round < 4; ++round) {
+    if (options.fix_degenerate_faces) {
+      fix_degenerate_faces(work, options, report);
+      if (options.remove_duplicate_faces) remove_duplicate_faces(work, report);
+    }
+    repair_connectivity(work, options, report);
+    if (!options.fix_degenerate_faces || report.degenerate_faces_left == 0 ||
+        report.degenerate_faces_left >= degenerate_before)
+      break;
+    degenerate_before = report.degenerate_faces_left;
   }
-  const int before_split = work.num_vertices();
-  split_non_manifold(work, options, report);
-  if (options.remove_small_components) remove_small_components(work, options.min_component_faces, report);
-  // A split can leave copies that stitching now joins into a manifold vertex (a fin cut loose at
-  // both ends whose other edges meet a border, once the debris around it is gone): joining them
-  // here keeps a second repair idle.
-  if (options.stitch_borders && work.num_vertices() > before_split) {
-    stitch_borders(work, options, report);
-    remove_collapsed_faces(work, report);
-  }
-  if (options.orient) orient_faces(work, report);
 
   store(work, options.remove_unreferenced_vertices, mesh, report);
   report.output_vertices = mesh.num_vertices();

@@ -35,13 +35,6 @@ int third_vertex(const Tri& f, int a, int b) {
   return -1;
 }
 
-// Whether face f runs from a to b.
-bool runs(const Tri& f, int a, int b) {
-  for (int k = 0; k < 3; ++k)
-    if (f[k] == a && f[(k + 1) % 3] == b) return true;
-  return false;
-}
-
 // One pass over the degenerate faces, each fixed at most once: faces an edit touched are left for
 // the next pass, since the local maps no longer describe them. Returns whether anything changed.
 class DegeneratePass {
@@ -113,7 +106,8 @@ class DegeneratePass {
     for (int g : others)
       if (touched_[g]) return false;
     if (others.empty()) return remove_cap(f);
-    if (others.size() != 1 || !runs(work_.faces[others[0]], b, a)) return false;
+    // The neighbour may run the edge either way: the orientation step settles it afterwards.
+    if (others.size() != 1) return false;
     const int g = others[0], d = third_vertex(work_.faces[g], a, b);
     const Tri left{a, d, c}, right{d, b, c};
     const bool flat = is_degenerate(work_, left, options_.degenerate_tolerance) ||

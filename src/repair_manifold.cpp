@@ -105,13 +105,13 @@ void split_non_manifold(Work& work, const RepairOptions& options, RepairReport& 
   for (int round = 0; round < kMaxRounds; ++round) {
     const Adjacency adj = build_adjacency(work.faces, work.num_vertices());
     const Cut cut = cut_non_manifold_edges(work, adj, resolve);
-    if (round == 0 && resolve) report.non_manifold_edges = cut.edges;
+    if (round == 0 && resolve) report.non_manifold_edges += cut.edges;
     if (round > 0 && resolve && cut.edges > 0) {
       detach_extra_faces(work, cut, report);
       continue;  // the adjacency no longer describes the faces
     }
     const int split = split_fans(work, adj, cut, options.split_non_manifold_vertices, report);
-    if (round == 0) report.vertices_split = split;
+    if (round == 0) report.vertices_split += split;
     if (split == 0 && (cut.edges == 0 || !resolve)) break;
   }
 }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <numeric>
 
 namespace fairsurf::repair_detail {
@@ -26,17 +27,19 @@ std::array<int, 3> edge_order(const Adjacency& adj, int f) {
 }  // namespace
 
 // Propagates "flip / keep" from each component's lowest face across two-face edges, as validate
-// does, then flips; a face met with both wishes marks its component non-orientable.
+// does, then flips the minority; a face met with both wishes marks its component non-orientable.
 void orient_faces(Work& work, RepairReport& report) {
   const Adjacency adj = build_adjacency(work.faces, work.num_vertices());
   const int num_faces = static_cast<int>(work.faces.size());
   std::vector<signed char> flip(num_faces, -1);
   std::vector<int> stack;
+  report.non_orientable_components = 0;  // a finding of the current faces, not a count of changes
   for (int seed = 0; seed < num_faces; ++seed) {
     if (flip[seed] >= 0) continue;
     flip[seed] = 0;
     stack.assign(1, seed);
     bool conflict = false;
+    std::vector<int> component{seed};
     while (!stack.empty()) {
       const int f = stack.back();
       stack.pop_back();
@@ -49,12 +52,18 @@ void orient_faces(Work& work, RepairReport& report) {
         if (flip[g] < 0) {
           flip[g] = wanted;
           stack.push_back(g);
+          component.push_back(g);
         } else if (flip[g] != wanted) {
           conflict = true;
         }
       }
     }
     report.non_orientable_components += conflict;
+    // The majority's orientation wins (a scan with one stray face keeps its normals); ties keep the
+    // seed's. A second repair finds nothing to flip, so this stays idempotent.
+    const auto flipped = std::count_if(component.begin(), component.end(), [&](int f) { return flip[f] == 1; });
+    if (2 * flipped > static_cast<std::ptrdiff_t>(component.size()))
+      for (int f : component) flip[f] ^= 1;
   }
   for (int f = 0; f < num_faces; ++f)
     if (flip[f] == 1) std::swap(work.faces[f][1], work.faces[f][2]), ++report.faces_flipped;

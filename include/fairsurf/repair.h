@@ -41,8 +41,8 @@ struct RepairOptions {
   /// At an edge with more than two faces keep two of them joined and detach the others (their
   /// fans get their own copies of the edge's vertices).
   bool resolve_non_manifold_edges = true;
-  /// Flip faces so that each component is consistently oriented (the orientation of its
-  /// lowest-index face wins). A non-orientable component is oriented as far as it goes and reported.
+  /// Flip faces so that each component is consistently oriented (the orientation most of its faces
+  /// have wins; ties keep the lowest-index face's). A non-orientable component is oriented as far as it goes and reported.
   bool orient = true;
   /// Remove connected components (faces sharing vertices) with fewer faces than this: by default
   /// lone triangles, the debris a split or a removed cap can leave.
