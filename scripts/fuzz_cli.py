@@ -78,7 +78,8 @@ def make_seeds(cli, work):
         seeds.append(src)
     for ext, extra in [(".ply", ["--ascii"]), (".ply", []), (".stl", ["--ascii"]), (".stl", []), (".off", [])]:
         dst = os.path.join(work, "seed_%d%s" % (len(seeds), ext))
-        subprocess.run([cli, "convert", seeds[0], "-o", dst] + extra, check=True, stdout=subprocess.DEVNULL)
+        subprocess.run([cli, "convert", seeds[0], "-o", dst] + extra, check=True,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         seeds.append(dst)
     return [(os.path.splitext(s)[1], open(s, "rb").read()) for s in seeds]
 

@@ -2,8 +2,6 @@
 
 #include "repair_internal.h"
 
-#include <limits>
-
 namespace fairsurf {
 namespace {
 
@@ -51,30 +49,44 @@ void store(const Work& work, bool remove_unreferenced, Mesh& mesh, RepairReport&
   mesh = std::move(out);
 }
 
-// Splits, small components, stitching of what the splits left coincident, orientation.
-void repair_connectivity(Work& work, const RepairOptions& options, RepairReport& report) {
+int change_count(const RepairReport& r) {
+  return r.invalid_faces_removed + r.vertices_merged + r.border_vertices_stitched + r.faces_collapsed +
+         r.duplicate_faces_removed + r.needles_collapsed + r.caps_flipped + r.caps_removed +
+         r.non_manifold_edges + r.vertices_split + r.vertices_added + r.faces_flipped +
+         r.small_components_removed + r.unreferenced_vertices_removed;
+}
+
+// Merging, then removing what merging collapsed or doubled.
+void merge_round(Work& work, const RepairOptions& options, RepairReport& report) {
   using namespace repair_detail;
-  const int before_split = work.num_vertices();
+  if (options.merge_duplicate_vertices) merge_vertices(work, options, report);
+  // Exact merging has already joined every coincident border vertex it could.
+  if (options.stitch_borders && (options.stitch_tolerance > 0 || !options.merge_duplicate_vertices))
+    stitch_borders(work, options, report);
+  remove_collapsed_faces(work, report);
+  if (options.remove_duplicate_faces) remove_duplicate_faces(work, report);
+}
+
+// One round of everything after the first merge. Each operation can enable another (a cap on a
+// non-manifold edge flips once the edge is resolved; a merge refused beside a needle is accepted
+// once the needle is gone), so rounds repeat until one changes nothing: the result is then a fixed
+// point of every operation, and a second repair is idle.
+void repair_round(Work& work, const RepairOptions& options, RepairReport& report) {
+  using namespace repair_detail;
+  if (options.fix_degenerate_faces) {
+    fix_degenerate_faces(work, options, report);
+    if (options.remove_duplicate_faces) remove_duplicate_faces(work, report);
+  }
   split_non_manifold(work, options, report);
   if (options.remove_small_components) remove_small_components(work, options.min_component_faces, report);
-  // A split can leave copies that stitching now joins into a manifold vertex (a fin cut loose at
-  // both ends whose other edges meet a border, once the debris around it is gone): joining them
-  // here keeps a second repair idle.
-  if (options.stitch_borders && work.num_vertices() > before_split) {
-    stitch_borders(work, options, report);
-    remove_collapsed_faces(work, report);
-  }
+  merge_round(work, options, report);
   if (options.orient) orient_faces(work, report);
 }
 
 }  // namespace
 
 bool RepairReport::changed() const {
-  return invalid_faces_removed + vertices_merged + border_vertices_stitched + faces_collapsed +
-             duplicate_faces_removed + needles_collapsed + caps_flipped + caps_removed +
-             non_manifold_edges + vertices_split + vertices_added + faces_flipped +
-             small_components_removed + unreferenced_vertices_removed >
-         0;
+  return change_count(*this) > 0;
 }
 
 RepairReport repair(Mesh& mesh, const RepairOptions& options) {
@@ -85,23 +97,14 @@ RepairReport repair(Mesh& mesh, const RepairOptions& options) {
   Work work = load(mesh);
 
   remove_invalid_faces(work, report);
-  if (options.merge_duplicate_vertices) merge_vertices(work, options, report);
-  if (options.stitch_borders) stitch_borders(work, options, report);
-  remove_collapsed_faces(work, report);
+  // Repeated faces first, so that they cannot veto a merge (an edge they double looks non-manifold).
   if (options.remove_duplicate_faces) remove_duplicate_faces(work, report);
-  // A degenerate face whose edge was non-manifold, or whose neighbour was inconsistently oriented,
-  // can be fixed once the splits and the orientation have run: repeat while that helps.
-  int degenerate_before = std::numeric_limits<int>::max();
-  for (int round = 0; round < 4; ++round) {
-    if (options.fix_degenerate_faces) {
-      fix_degenerate_faces(work, options, report);
-      if (options.remove_duplicate_faces) remove_duplicate_faces(work, report);
-    }
-    repair_connectivity(work, options, report);
-    if (!options.fix_degenerate_faces || report.degenerate_faces_left == 0 ||
-        report.degenerate_faces_left >= degenerate_before)
-      break;
-    degenerate_before = report.degenerate_faces_left;
+  merge_round(work, options, report);
+  constexpr int kMaxRounds = 8;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    const int before = change_count(report);
+    repair_round(work, options, report);
+    if (change_count(report) == before) break;
   }
 
   store(work, options.remove_unreferenced_vertices, mesh, report);

@@ -108,7 +108,7 @@ int apply_groups(Work& work, Groups& groups, RepairReport& report) {
   if (!any) return 0;
   // Refusing a group can turn a neighbouring accepted group into a pinch (a zipper needs both ends
   // of an edge merged), so refuse until the accepted groups are stable, or give up merging at all.
-  constexpr int kMaxRounds = 8;
+  constexpr int kMaxRounds = 16;
   int round = 0;
   while (const int refused = refuse_pinches(work, groups)) {
     report.merges_refused += refused;
@@ -127,13 +127,18 @@ int apply_groups(Work& work, Groups& groups, RepairReport& report) {
 }  // namespace
 
 void merge_vertices(Work& work, const RepairOptions& options, RepairReport& report) {
-  std::vector<int> finite;
+  // Only vertices in use: one merged away earlier stays behind unreferenced, and must not be
+  // merged (and counted) again. Faces hold finite vertices only (remove_invalid_faces).
+  std::vector<char> used(work.num_vertices(), 0);
+  for (const Tri& f : work.faces)
+    for (int v : f) used[v] = 1;
+  std::vector<int> in_use;
   for (int v = 0; v < work.num_vertices(); ++v)
-    if (work.V.row(work.origin[v]).allFinite()) finite.push_back(v);
+    if (used[v]) in_use.push_back(v);
   Groups groups(work.num_vertices());
-  join_exact(work, finite, groups);
-  const double tolerance = options.merge_tolerance * mean_edge_length(work);
-  if (tolerance > 0 && std::isfinite(tolerance)) join_close(work, finite, tolerance, groups);
+  join_exact(work, in_use, groups);
+  const double tolerance = options.merge_tolerance > 0 ? options.merge_tolerance * mean_edge_length(work) : 0.0;
+  if (tolerance > 0 && std::isfinite(tolerance)) join_close(work, in_use, tolerance, groups);
   report.vertices_merged += apply_groups(work, groups, report);
 }
 
@@ -150,7 +155,7 @@ void stitch_borders(Work& work, const RepairOptions& options, RepairReport& repo
     if (border[v]) candidates.push_back(v);
   if (candidates.empty()) return;
   Groups groups(work.num_vertices());
-  const double tolerance = options.stitch_tolerance * mean_edge_length(work);
+  const double tolerance = options.stitch_tolerance > 0 ? options.stitch_tolerance * mean_edge_length(work) : 0.0;
   if (tolerance > 0 && std::isfinite(tolerance))
     join_close(work, candidates, tolerance, groups);
   else

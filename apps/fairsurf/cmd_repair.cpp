@@ -87,7 +87,8 @@ void setup_repair(CLI::App& app) {
                   "Also merge vertices closer than this times the mean edge length (default 0: exact only)");
   cmd->add_flag("--no-stitch", args->no_stitch, "Do not stitch coincident borders");
   cmd->add_option("--stitch-tolerance", args->options.stitch_tolerance,
-                  "Stitch border vertices closer than this times the mean edge length (default 1e-6)");
+                  "Stitch border vertices closer than this times the mean edge length (default 0: "
+                  "coincident ones only)");
   cmd->add_flag("--no-duplicate-faces", args->no_duplicate_faces, "Keep duplicate faces");
   cmd->add_flag("--no-degenerate", args->no_degenerate, "Keep zero-area and near-degenerate faces");
   cmd->add_option("--needle-tolerance", args->options.needle_tolerance,

@@ -22,10 +22,12 @@ struct RepairOptions {
   bool merge_duplicate_vertices = true;
   /// With a positive value, also merge vertices closer than this times the mean edge length.
   double merge_tolerance = 0.0;
-  /// Merge border vertices closer than stitch_tolerance times the mean edge length when the merged
-  /// vertex stays manifold: coincident borders are zipped together.
+  /// Merge border vertices that coincide — exactly, or with a positive stitch_tolerance closer than
+  /// it times the mean edge length — when the merged vertex stays manifold: coincident borders are
+  /// zipped together. (A relative tolerance follows the mean edge, which one far-off vertex can
+  /// inflate; exact coincidence is the safe default.)
   bool stitch_borders = true;
-  double stitch_tolerance = 1e-6;
+  double stitch_tolerance = 0.0;
   /// Remove every face with the same vertex set as a lower-index face (either orientation).
   bool remove_duplicate_faces = true;
   /// Remove zero-area and near-degenerate faces (validate's definition): a needle whose shortest
