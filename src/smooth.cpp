@@ -10,6 +10,9 @@
 namespace fairsurf {
 
 double default_smoothing_time(const Mesh& mesh, FlowKind kind) {
+  // Only what this function reads: faces, well-formed and with finite corners (an empty mesh has
+  // no bounding box to take).
+  require_valid(mesh, Requirements{false, false, false, false}, "default_smoothing_time");
   const Topology topo = build_topology(mesh.F, mesh.num_vertices());
   double total = 0;
   for (int e = 0; e < topo.edges.rows(); ++e)

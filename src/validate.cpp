@@ -306,12 +306,18 @@ void require_valid(const ValidationReport& report, const Requirements& requireme
 
   std::vector<std::string> violations;
   if (report.no_faces) violations.emplace_back("no faces");
+  // repair() cannot give a mesh faces or orient a Möbius band; every other violation it removes.
+  bool repairable = !report.no_faces;
   for (const Finding* f : required)
-    if (f->count > 0) violations.push_back(describe(named(*f)));
+    if (f->count > 0) {
+      violations.push_back(describe(named(*f)));
+      repairable &= f != &report.non_orientable_components;
+    }
   if (violations.empty()) return;
   std::string message = std::string(caller) + ": mesh has ";
   for (std::size_t i = 0; i < violations.size(); ++i)
     message += (i > 0 ? ", " : "") + violations[i];
+  if (repairable) throw RepairableMeshError(message);
   throw InvalidMeshError(message);
 }
 

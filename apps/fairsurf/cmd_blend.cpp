@@ -9,6 +9,7 @@
 
 #include "command.h"
 #include "flow_log.h"
+#include "repair_report.h"
 #include "region_fairing_args.h"
 
 namespace fairsurf::cli {
@@ -60,9 +61,13 @@ void run_blend(const BlendArgs& args) {
   const BlendOptions options = blend_options(args);
   Mesh mesh = read_input(args.inputs[0]);
   if (args.inputs.size() == 2) mesh = concatenate_meshes(mesh, read_input(args.inputs[1]));
+  const auto repaired = repair_input(mesh, f.repair, args.inputs.size() == 2 ? "the two inputs" : args.inputs[0]);
 
   FlowCommandRun run("blend", f.log, f.quiet,
-                     {{"command", "blend"}, {"inputs", args.inputs}, {"functions", f.functions}});
+                     {{"command", "blend"},
+                      {"inputs", args.inputs},
+                      {"functions", f.functions},
+                      {"repair", repair_json(repaired)}});
   const BlendReport report =
       run.run([&] { return blend_loops(mesh, options, run.observer()); }, mesh, args.output);
   write_output([&] { write_mesh(args.output, mesh); });

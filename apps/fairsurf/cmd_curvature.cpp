@@ -2,6 +2,7 @@
 // and principal curvatures from the local quadratic fits (METHOD §1–§3), written as PLY vertex
 // properties H, K, k1, k2 (and fit_status), with their statistics printed as text or JSON.
 #include "command.h"
+#include "repair_report.h"
 
 #include <fairsurf/errors.h>
 #include <fairsurf/io.h>
@@ -29,6 +30,7 @@ struct CurvatureArgs {
   bool json = false;
   bool flip_sign = false;
   bool force = false;
+  bool repair = false;
 };
 
 constexpr const char* kQuantities[] = {"H", "K", "k1", "k2"};
@@ -105,13 +107,15 @@ void print_text(const CurvatureArgs& args, const Mesh& mesh, const QuadraticFits
   std::cout << "wrote " << args.output << " (vertex properties H, K, k1, k2, fit_status)\n";
 }
 
-void print_json(const CurvatureArgs& args, const Mesh& mesh, const QuadraticFits& fits) {
+void print_json(const CurvatureArgs& args, const Mesh& mesh, const QuadraticFits& fits,
+                const std::optional<RepairReport>& repaired) {
   const std::vector<int> counts = fits.status_counts();
   const int ok = counts[static_cast<int>(FitStatus::kOk)];
   nlohmann::ordered_json j;
   j["input"] = args.input;
   j["output"] = args.output;
   j["vertices"] = mesh.num_vertices();
+  j["repair"] = repair_json(repaired);
   j["flip_sign"] = args.flip_sign;
   j["sign_convention"] = args.flip_sign ? "H > 0 on a sphere with outward normals (flipped)"
                                         : "H < 0 on a sphere with outward normals (H = -1/R)";
@@ -139,6 +143,7 @@ void run_curvature(const CurvatureArgs& args) {
     throw CliError(kUsage, "curvature: the output must be a .ply file, the only format that carries "
                            "per-vertex H, K, k1, k2 (got '" + args.output + "')");
   Mesh mesh = read_mesh(args.input);
+  const auto repaired = repair_input(mesh, args.repair, args.input, args.json);
   if (mesh.num_faces() == 0) throw InvalidMeshError("curvature: '" + args.input + "' has no triangles");
   Topology topo;
   try {
@@ -163,7 +168,7 @@ void run_curvature(const CurvatureArgs& args) {
   }
 
   if (args.json)
-    print_json(args, mesh, fits);
+    print_json(args, mesh, fits, repaired);
   else
     print_text(args, mesh, fits);
 }
@@ -178,6 +183,7 @@ void setup_curvature(CLI::App& app) {
   cmd->add_flag("--flip-sign", args->flip_sign,
                 "Flip the sign of H, k1, k2 so that H > 0 on spheres (default: H = -1/R)");
   cmd->add_flag("--force", args->force, "Allow the output to overwrite the input");
+  add_repair_flag(cmd, args->repair);
   cmd->callback([args] { run_curvature(*args); });
 }
 

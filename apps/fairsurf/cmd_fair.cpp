@@ -10,6 +10,7 @@
 
 #include "command.h"
 #include "flow_log.h"
+#include "repair_report.h"
 #include "region_fairing_args.h"
 
 namespace fairsurf::cli {
@@ -52,10 +53,14 @@ void run_fair(const FairArgs& args) {
   const FairRegionOptions options = region_fairing_options(
       f, args.start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{});
   Mesh mesh = read_input(args.input);
+  const auto repaired = repair_input(mesh, f.repair, args.input);
   const std::vector<int> region = selected_region(args, mesh);
 
   FlowCommandRun run("fair", f.log, f.quiet,
-                     {{"command", "fair"}, {"input", args.input}, {"functions", f.functions}});
+                     {{"command", "fair"},
+                      {"input", args.input},
+                      {"functions", f.functions},
+                      {"repair", repair_json(repaired)}});
   const FairRegionReport report =
       run.run([&] { return fair_region(mesh, region, options, run.observer()); }, mesh, args.output);
   write_output([&] { write_mesh(args.output, mesh); });

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -13,6 +14,7 @@
 
 #include "command.h"
 #include "flow_log.h"
+#include "repair_report.h"
 
 namespace fairsurf::cli {
 namespace {
@@ -23,7 +25,7 @@ struct FillArgs {
   std::vector<std::string> functions{"H"};
   std::vector<int> holes;
   int max_hole_edges = 0, max_steps = 0;
-  bool skip_largest = false, force = false, quiet = false;
+  bool skip_largest = false, force = false, quiet = false, repair = false;
 };
 
 FillOptions fill_options(const FillArgs& args) {
@@ -117,11 +119,23 @@ nlohmann::json hole_json(const HoleReport& r) {
   return j;
 }
 
+// When every hole failed and one loop is at least three times longer than any other, that loop is
+// most likely the outer border of an open surface (a scan, a terrain), which is not a hole.
+std::string open_surface_hint(const FillReport& report, const FillArgs& args) {
+  if (report.filled > 0 || args.skip_largest || report.holes.size() < 2) return "";
+  std::vector<int> lengths;
+  for (const auto& hole : report.holes) lengths.push_back(hole.border_edges);
+  std::sort(lengths.begin(), lengths.end(), std::greater<>());
+  if (lengths[0] < 3 * lengths[1]) return "";
+  return "; the largest loop looks like the outer border of an open surface: use --skip-largest";
+}
+
 void run_fill(const FillArgs& args) {
   check_output_path(args.output, {args.input}, args.force);
   if (!args.log.empty()) check_output_path(args.log, {args.input}, args.force);
   const FillOptions options = fill_options(args);
   Mesh mesh = read_input(args.input);
+  const auto repaired = repair_input(mesh, args.repair, args.input);
   const bool progress = !args.quiet && ::isatty(STDERR_FILENO);
   std::map<int, nlohmann::json> steps;  // by the first hole of each jointly faired group
   const FillObserver observer = [&](std::span<const int> holes, const StepRecord& r) {
@@ -145,6 +159,7 @@ void run_fill(const FillArgs& args) {
                        {"skipped", report.skipped},
                        {"failed", report.failed},
                        {"seconds", report.seconds},
+                       {"repair", repair_json(repaired)},
                        {"holes", nlohmann::json::array()}};
     for (const auto& r : report.holes) {
       nlohmann::json j = hole_json(r);
@@ -167,7 +182,8 @@ void run_fill(const FillArgs& args) {
   if (report.failed > 0)
     throw CliError(kNumerical, "fill: " + std::to_string(report.failed) + " of " + std::to_string(selected) +
                                    " selected holes failed; " + args.output + " still holds the " +
-                                   std::to_string(report.filled) + " holes that were filled");
+                                   std::to_string(report.filled) + " holes that were filled" +
+                                   open_surface_hint(report, args));
 }
 
 void setup_fill(CLI::App& app) {
@@ -188,6 +204,7 @@ void setup_fill(CLI::App& app) {
   cmd->add_option("--method", args->method, "flow (default) or harmonic (cotangent Laplacian baseline)");
   cmd->add_option("--max-steps", args->max_steps, "Stop each hole's flow after this many accepted steps");
   cmd->add_option("--log", args->log, "Write a per-hole JSON report with every flow step here");
+  add_repair_flag(cmd, args->repair);
   cmd->add_flag("--quiet", args->quiet, "Only the summary line; no progress");
   cmd->add_flag("--force", args->force, "Allow outputs to overwrite the input");
   cmd->callback([args] { run_fill(*args); });

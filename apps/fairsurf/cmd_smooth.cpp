@@ -11,6 +11,7 @@
 
 #include "command.h"
 #include "flow_log.h"
+#include "repair_report.h"
 
 namespace fairsurf::cli {
 namespace {
@@ -22,7 +23,7 @@ struct SmoothArgs {
   std::string solver = "mumps";
   double tau = 0, time = 0, steady_tolerance = 1.0;
   int steps = 0, max_steps = 1000, fixed_rings = 3;
-  bool steady = false, force = false, quiet = false;
+  bool steady = false, force = false, quiet = false, repair = false;
 };
 
 FlowKind flow_kind(const std::string& name) {
@@ -65,12 +66,14 @@ void run_smooth(const SmoothArgs& args) {
   check_output_path(args.output, {args.input}, args.force);
   if (!args.log.empty()) check_output_path(args.log, {args.input}, args.force);
   Mesh mesh = read_input(args.input);
+  const auto repaired = repair_input(mesh, args.repair, args.input);
   const SmoothOptions options = smooth_options(args, mesh);
   FlowCommandRun run("smooth", args.log, args.quiet,
                      {{"command", "smooth"},
                       {"input", args.input},
                       {"flow", to_string(options.flow.kind)},
-                      {"functions", options.flow.functions}});
+                      {"functions", options.flow.functions},
+                      {"repair", repair_json(repaired)}});
   const FlowReport report = run.run([&] { return smooth(mesh, options, run.observer()); }, mesh, args.output);
   if (report.well_posedness.violating_vertices > 0)
     std::cerr << "fairsurf: warning: the chosen f is not parabolic at "
@@ -114,6 +117,7 @@ void setup_smooth(CLI::App& app) {
                   "Rings held fixed along the mesh border (default 3; 0 frees the border)");
   cmd->add_option("--solver", args->solver, "Linear solver: mumps (default, also 'lu'), umfpack or gmres");
   cmd->add_option("--log", args->log, "Write a per-step JSON log here");
+  add_repair_flag(cmd, args->repair);
   cmd->add_flag("--quiet", args->quiet, "No progress line");
   cmd->add_flag("--force", args->force, "Allow outputs to overwrite the input");
   cmd->callback([args] { run_smooth(*args); });

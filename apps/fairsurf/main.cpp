@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <string>
 
 namespace {
 
@@ -35,6 +36,9 @@ int main(int argc, char** argv) {
     return report(kUsage, e.what());
   } catch (const fairsurf::IoError& e) {
     return report(kInputError, e.what());
+  } catch (const fairsurf::RepairableMeshError& e) {
+    const std::string message = std::string(e.what()) + " (run with --repair, or `fairsurf repair`)";
+    return report(kInvalidMesh, message.c_str());
   } catch (const fairsurf::InvalidMeshError& e) {
     return report(kInvalidMesh, e.what());
   } catch (const fairsurf::NumericalError& e) {

@@ -1,4 +1,5 @@
 #include "region_fairing_args.h"
+#include "repair_report.h"
 
 #include <cstdio>
 
@@ -20,6 +21,7 @@ void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args) {
   cmd->add_option("--max-steps", args.max_steps, "Stop the flow after this many accepted steps (default 200)");
   cmd->add_option("--log", args.log, "Write a JSON report with every flow step here");
   cmd->add_flag("--quiet", args.quiet, "No progress line");
+  add_repair_flag(cmd, args.repair);
   cmd->add_flag("--force", args.force, "Allow outputs to overwrite an input");
 }
 

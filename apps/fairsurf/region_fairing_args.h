@@ -19,10 +19,10 @@ struct RegionFairingArgs {
   std::string method = "flow";
   int max_steps = FairRegionOptions::default_fair_flow_options().max_steps;
   std::string log;
-  bool force = false, quiet = false;
+  bool force = false, quiet = false, repair = false;
 };
 
-/// Adds --continuity, --f, --method, --max-steps, --log, --force, --quiet to `cmd`.
+/// Adds --continuity, --f, --method, --max-steps, --log, --force, --quiet, --repair to `cmd`.
 void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args);
 
 /// `base` with what the flags ask for (throws InvalidArgument for a bad name). `fair` starts from

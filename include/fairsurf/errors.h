@@ -41,6 +41,14 @@ class InvalidMeshError : public Error {
   using Error::Error;
 };
 
+/// The mesh violates a requirement, and every violation is one `repair` (repair.h) removes:
+/// non-manifold edges or vertices, inconsistent orientation, degenerate, duplicate or invalid faces
+/// (thrown by require_valid, validate.h).
+class RepairableMeshError : public InvalidMeshError {
+ public:
+  using InvalidMeshError::InvalidMeshError;
+};
+
 /// A numerical computation failed: an ill-posed fit, a diverging flow, a failed linear solve.
 class NumericalError : public Error {
  public:

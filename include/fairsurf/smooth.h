@@ -29,7 +29,8 @@ struct SmoothOptions {
   std::vector<int> fixed_vertices;
 };
 
-/// (2h̄)^order in unit-diagonal units, h̄ = mean edge length / bounding-box diagonal.
+/// (2h̄)^order in unit-diagonal units, h̄ = mean edge length / bounding-box diagonal. Throws
+/// InvalidMeshError for a mesh without faces, with malformed faces, NaN coordinates or no extent.
 double default_smoothing_time(const Mesh& mesh, FlowKind kind);
 
 /// What `fairsurf smooth` runs with by default on `mesh`, for raw scans as well as clean meshes:

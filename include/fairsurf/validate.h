@@ -107,7 +107,9 @@ struct Requirements {
   bool no_duplicate_faces = true;
 };
 
-/// Throws InvalidMeshError if `report` violates `requirements`, with one line naming `caller` and
+/// Throws InvalidMeshError if `report` violates `requirements` (RepairableMeshError, a subclass, when
+/// repair() removes every violation: all but "no faces" and non-orientable components), with one
+/// line naming `caller` and
 /// each violated requirement's count and first example:
 /// "fill: mesh has 150 non-manifold edges (first: 12-57)".
 void require_valid(const ValidationReport& report, const Requirements& requirements,

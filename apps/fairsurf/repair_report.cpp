@@ -1,0 +1,88 @@
+#include "repair_report.h"
+
+#include <cstdio>
+#include <vector>
+
+namespace fairsurf::cli {
+namespace {
+
+struct Count {
+  int value;
+  const char* singular;
+  const char* plural;
+};
+
+std::vector<Count> changes(const RepairReport& r) {
+  return {{r.invalid_faces_removed, "invalid face removed", "invalid faces removed"},
+          {r.vertices_merged, "duplicate vertex merged", "duplicate vertices merged"},
+          {r.border_vertices_stitched, "border vertex stitched", "border vertices stitched"},
+          {r.faces_collapsed, "face collapsed by a merge", "faces collapsed by merges"},
+          {r.duplicate_faces_removed, "duplicate face removed", "duplicate faces removed"},
+          {r.needles_collapsed, "needle collapsed", "needles collapsed"},
+          {r.caps_flipped, "cap flipped", "caps flipped"},
+          {r.caps_removed, "cap removed", "caps removed"},
+          {r.non_manifold_edges, "non-manifold edge resolved", "non-manifold edges resolved"},
+          {r.vertices_split, "vertex split", "vertices split"},
+          {r.vertices_added, "vertex copy added", "vertex copies added"},
+          {r.faces_flipped, "face flipped", "faces flipped"},
+          {r.small_components_removed, "small component removed", "small components removed"},
+          {r.unreferenced_vertices_removed, "unreferenced vertex removed", "unreferenced vertices removed"},
+          {r.degenerate_faces_left, "degenerate face left", "degenerate faces left"},
+          {r.non_orientable_components, "non-orientable component (reported, not fixed)",
+           "non-orientable components (reported, not fixed)"}};
+}
+
+}  // namespace
+
+std::string describe(const RepairReport& report) {
+  std::string out;
+  for (const Count& c : changes(report)) {
+    if (c.value == 0) continue;
+    out += (out.empty() ? "" : ", ") + std::to_string(c.value) + " " + (c.value == 1 ? c.singular : c.plural);
+  }
+  return out.empty() ? "nothing to repair" : out;
+}
+
+nlohmann::json to_json(const RepairReport& r) {
+  return {{"input_vertices", r.input_vertices},
+          {"input_faces", r.input_faces},
+          {"output_vertices", r.output_vertices},
+          {"output_faces", r.output_faces},
+          {"invalid_faces_removed", r.invalid_faces_removed},
+          {"vertices_merged", r.vertices_merged},
+          {"merges_refused", r.merges_refused},
+          {"border_vertices_stitched", r.border_vertices_stitched},
+          {"faces_collapsed", r.faces_collapsed},
+          {"duplicate_faces_removed", r.duplicate_faces_removed},
+          {"needles_collapsed", r.needles_collapsed},
+          {"caps_flipped", r.caps_flipped},
+          {"caps_removed", r.caps_removed},
+          {"degenerate_faces_left", r.degenerate_faces_left},
+          {"non_manifold_edges", r.non_manifold_edges},
+          {"vertices_split", r.vertices_split},
+          {"vertices_added", r.vertices_added},
+          {"faces_flipped", r.faces_flipped},
+          {"non_orientable_components", r.non_orientable_components},
+          {"small_components_removed", r.small_components_removed},
+          {"small_component_faces_removed", r.small_component_faces_removed},
+          {"unreferenced_vertices_removed", r.unreferenced_vertices_removed},
+          {"changed", r.changed()}};
+}
+
+void add_repair_flag(CLI::App* command, bool& repair_flag) {
+  command->add_flag("--repair", repair_flag,
+                    "Repair the input first (fairsurf repair's defaults; docs/repair.md) and report it");
+}
+
+std::optional<RepairReport> repair_input(Mesh& mesh, bool enabled, const std::string& path, bool quiet) {
+  if (!enabled) return std::nullopt;
+  const RepairReport report = repair(mesh);
+  if (!quiet) std::printf("repaired %s: %s\n", path.c_str(), describe(report).c_str());
+  return report;
+}
+
+nlohmann::json repair_json(const std::optional<RepairReport>& report) {
+  return report ? to_json(*report) : nlohmann::json(nullptr);
+}
+
+}  // namespace fairsurf::cli

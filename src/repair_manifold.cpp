@@ -1,0 +1,119 @@
+// Non-manifold vertices and edges. At an edge with more than two faces two of them stay joined
+// and the others are cut loose there; then every vertex whose faces form several fans (joined
+// through the remaining edges) gives each fan beyond the first its own copy.
+#include "repair_internal.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+
+namespace fairsurf::repair_detail {
+namespace {
+
+int from(const std::vector<Tri>& faces, int c) { return faces[c / 3][c % 3]; }
+int to(const std::vector<Tri>& faces, int c) { return faces[c / 3][(c % 3 + 1) % 3]; }
+
+Eigen::Vector3d unit_normal(const Work& work, int f) {
+  const Tri& t = work.faces[f];
+  const Eigen::Vector3d a = work.position(t[0]);
+  return (work.position(t[1]) - a).cross(work.position(t[2]) - a).normalized();
+}
+
+// The two corners of an edge with more than two faces that stay joined: the pair that continues
+// the surface most smoothly, i.e. whose normals agree best once the pair is consistently oriented;
+// pairs running the edge the same way (they would need a flip) come after every other pair.
+std::pair<int, int> kept_pair(const Work& work, std::span<const int> corners) {
+  const auto& faces = work.faces;
+  std::pair<int, int> best{corners[0], corners[1]};
+  double best_score = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    for (std::size_t j = i + 1; j < corners.size(); ++j) {
+      const bool opposite = from(faces, corners[j]) == to(faces, corners[i]);
+      const double agreement = unit_normal(work, corners[i] / 3).dot(unit_normal(work, corners[j] / 3));
+      const double score = opposite ? agreement : -agreement - 4;  // NaN normals (degenerate) lose
+      if (score > best_score) best_score = score, best = {corners[i], corners[j]};
+    }
+  return best;
+}
+
+struct Cut {
+  std::vector<char> joined;    ///< per corner
+  std::vector<char> on_cut;    ///< per vertex: end of an edge with more than two faces
+  std::vector<int> extra;      ///< corners of faces cut loose, for the fallback
+  int edges = 0;
+};
+
+Cut cut_non_manifold_edges(const Work& work, const Adjacency& adj, bool resolve) {
+  const auto& faces = work.faces;
+  const int num_vertices = work.num_vertices();
+  Cut cut{std::vector<char>(3 * faces.size(), 1), std::vector<char>(num_vertices, 0), {}, 0};
+  for (int e = 0; e < adj.num_edges(); ++e) {
+    const auto corners = adj.corners(e);
+    if (corners.size() <= 2) continue;
+    ++cut.edges;
+    if (!resolve) continue;
+    const auto [first, second] = kept_pair(work, corners);
+    cut.on_cut[from(faces, corners[0])] = cut.on_cut[to(faces, corners[0])] = 1;
+    for (int c : corners)
+      if (c != first && c != second) cut.joined[c] = 0, cut.extra.push_back(c);
+  }
+  return cut;
+}
+
+// Gives every fan beyond the first of an eligible vertex its own copy; returns the vertices split.
+int split_fans(Work& work, const Adjacency& adj, const Cut& cut, bool split_all, RepairReport& report) {
+  const std::vector<int> fan = fan_numbers(work.faces, adj, cut.joined);
+  const int n = work.num_vertices();
+  std::vector<int> fans(n, 1);
+  for (int c = 0; c < static_cast<int>(fan.size()); ++c)
+    fans[from(work.faces, c)] = std::max(fans[from(work.faces, c)], fan[c] + 1);
+  std::vector<int> first_copy(n, -1);
+  int split = 0;
+  for (int v = 0; v < n; ++v) {
+    if (fans[v] < 2 || !(split_all || cut.on_cut[v])) continue;
+    ++split;
+    first_copy[v] = work.add_copy(v);
+    for (int i = 2; i < fans[v]; ++i) work.add_copy(v);
+    report.vertices_added += fans[v] - 1;
+  }
+  for (int c = 0; c < static_cast<int>(fan.size()); ++c) {
+    int& v = work.faces[c / 3][c % 3];
+    if (fan[c] > 0 && first_copy[v] >= 0) v = first_copy[v] + fan[c] - 1;
+  }
+  return split;
+}
+
+// Last resort for an edge the fans could not separate (its extra faces reach the kept pair around
+// both ends): the extra faces get private copies of the edge's ends.
+void detach_extra_faces(Work& work, const Cut& cut, RepairReport& report) {
+  for (int c : cut.extra)
+    for (int k : {c % 3, (c % 3 + 1) % 3}) {
+      int& v = work.faces[c / 3][k];
+      v = work.add_copy(v);
+      ++report.vertices_added;
+    }
+}
+
+}  // namespace
+
+void split_non_manifold(Work& work, const RepairOptions& options, RepairReport& report) {
+  const bool resolve = options.resolve_non_manifold_edges;
+  if (!resolve && !options.split_non_manifold_vertices) return;
+  constexpr int kMaxRounds = 5;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    const Adjacency adj = build_adjacency(work.faces, work.num_vertices());
+    const Cut cut = cut_non_manifold_edges(work, adj, resolve);
+    if (round == 0 && resolve) report.non_manifold_edges += cut.edges;
+    if (round > 0 && resolve && cut.edges > 0) {
+      detach_extra_faces(work, cut, report);
+      continue;  // the adjacency no longer describes the faces
+    }
+    const int split = split_fans(work, adj, cut, options.split_non_manifold_vertices, report);
+    if (round == 0) report.vertices_split += split;
+    if (split == 0 && (cut.edges == 0 || !resolve)) break;
+  }
+}
+
+}  // namespace fairsurf::repair_detail

@@ -1,0 +1,98 @@
+// Orientation and small components, both on the manifold mesh the splits leave.
+#include "repair_internal.h"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <numeric>
+
+namespace fairsurf::repair_detail {
+namespace {
+
+// Whether the face of corner c runs along its edge from the lower to the higher vertex.
+bool upward(const std::vector<Tri>& faces, int c) {
+  return faces[c / 3][c % 3] < faces[c / 3][(c % 3 + 1) % 3];
+}
+
+// Face f's corners in the order of their edges' indices. Edges are numbered by their vertex pairs,
+// which flipping does not change, so a second repair walks the faces exactly as the first did and
+// finds nothing left to flip, even on a non-orientable component.
+std::array<int, 3> edge_order(const Adjacency& adj, int f) {
+  std::array<int, 3> order{0, 1, 2};
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return adj.corner_edge[3 * f + a] < adj.corner_edge[3 * f + b]; });
+  return order;
+}
+
+}  // namespace
+
+// Propagates "flip / keep" from each component's lowest face across two-face edges, as validate
+// does, then flips the minority; a face met with both wishes marks its component non-orientable.
+void orient_faces(Work& work, RepairReport& report) {
+  const Adjacency adj = build_adjacency(work.faces, work.num_vertices());
+  const int num_faces = static_cast<int>(work.faces.size());
+  std::vector<signed char> flip(num_faces, -1);
+  std::vector<int> stack;
+  report.non_orientable_components = 0;  // a finding of the current faces, not a count of changes
+  for (int seed = 0; seed < num_faces; ++seed) {
+    if (flip[seed] >= 0) continue;
+    flip[seed] = 0;
+    stack.assign(1, seed);
+    bool conflict = false;
+    std::vector<int> component{seed};
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      for (int k : edge_order(adj, f)) {
+        const auto corners = adj.corners(adj.corner_edge[3 * f + k]);
+        if (corners.size() != 2) continue;
+        const int other = corners[0] == 3 * f + k ? corners[1] : corners[0];
+        const int g = other / 3;
+        const signed char wanted = flip[f] ^ (upward(work.faces, 3 * f + k) == upward(work.faces, other));
+        if (flip[g] < 0) {
+          flip[g] = wanted;
+          stack.push_back(g);
+          component.push_back(g);
+        } else if (flip[g] != wanted) {
+          conflict = true;
+        }
+      }
+    }
+    report.non_orientable_components += conflict;
+    // The majority's orientation wins (a scan with one stray face keeps its normals); ties keep the
+    // seed's. A second repair finds nothing to flip, so this stays idempotent.
+    const auto flipped = std::count_if(component.begin(), component.end(), [&](int f) { return flip[f] == 1; });
+    if (2 * flipped > static_cast<std::ptrdiff_t>(component.size()))
+      for (int f : component) flip[f] ^= 1;
+  }
+  for (int f = 0; f < num_faces; ++f)
+    if (flip[f] == 1) std::swap(work.faces[f][1], work.faces[f][2]), ++report.faces_flipped;
+}
+
+// Components are faces connected through shared vertices (validate's and topology.h's notion).
+void remove_small_components(Work& work, int min_faces, RepairReport& report) {
+  const int n = work.num_vertices();
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const Tri& f : work.faces)
+    for (int k = 1; k < 3; ++k) {
+      const int a = find(f[0]), b = find(f[k]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::vector<int> size(n, 0);
+  for (const Tri& f : work.faces) ++size[find(f[0])];
+  for (int v = 0; v < n; ++v)
+    if (find(v) == v && size[v] > 0 && size[v] < min_faces)
+      ++report.small_components_removed, report.small_component_faces_removed += size[v];
+  std::vector<Tri> kept;
+  kept.reserve(work.faces.size());
+  for (const Tri& f : work.faces)
+    if (size[find(f[0])] >= min_faces) kept.push_back(f);
+  work.faces = std::move(kept);
+}
+
+}  // namespace fairsurf::repair_detail
