@@ -138,9 +138,18 @@ FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
     report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, region, harmonic);
     report.linear = true;
   } else {
-    if (options.harmonic_start_iterations > 0)
-      report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, region, harmonic);
-    run_flow_with_floor(sub, region, options, observer, report, mesh.V);
+    FairRegionOptions flow_options = options;
+    if (options.harmonic_start_iterations > 0) {
+      try {
+        report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, region, harmonic);
+      } catch (const NumericalError& e) {
+        // No linear solution to start from or to fall back to: flow from the given positions.
+        report.note = std::string("the ∆") + std::to_string(harmonic.order) + " start failed (" + e.what() +
+                      "): flowed from the given positions";
+        flow_options.harmonic_start_iterations = 0;
+      }
+    }
+    run_flow_with_floor(sub, region, flow_options, observer, report, mesh.V);
   }
   write_back_free(sub, mesh.V);
   report.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, sub.free_local);

@@ -151,11 +151,13 @@ HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Region& region,
         x.col(c) = solver->solve(rhs.col(c));
         report.backward_error = std::max(report.backward_error, solver->report().backward_error);
       }
-      report.max_move = 0;
-      for (int r = 0; r < n; ++r) {
-        report.max_move = std::max(report.max_move, (x.row(r) - V.row(region.free_vertices[r])).norm());
-        V.row(region.free_vertices[r]) = x.row(r);
-      }
+      double move = 0;
+      for (int r = 0; r < n; ++r) move = std::max(move, (x.row(r) - V.row(region.free_vertices[r])).norm());
+      // A re-evaluation that moves the vertices farther than the one before it is not contracting
+      // (it can fold a large region): keep the previous solution.
+      if (it > 0 && move > report.max_move) break;
+      for (int r = 0; r < n; ++r) V.row(region.free_vertices[r]) = x.row(r);
+      report.max_move = move;
       report.iterations = it + 1;
       if (report.max_move <= tolerance) break;
     }

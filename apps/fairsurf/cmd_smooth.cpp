@@ -106,7 +106,7 @@ void setup_smooth(CLI::App& app) {
   auto* time = cmd->add_option("--time", args->time,
                                "Run to this time, unit-diagonal units (default: (2h)^order, h the mean "
                                "edge length)");
-  auto* steady = cmd->add_flag("--steady", args->steady, "Run to a steady state (max|V| under the tolerance)");
+  auto* steady = cmd->add_flag("--steady", args->steady, "Run to a steady state: max|V| under the tolerance or, for the sixth-order flow, until the energy descent stops lowering E (docs/flow.md)");
   steps->excludes(time)->excludes(steady);
   time->excludes(steady);
   cmd->add_option("--steady-tolerance", args->steady_tolerance,

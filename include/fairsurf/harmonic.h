@@ -31,7 +31,9 @@ struct HarmonicOptions {
   /// operator frozen at a flat patch causes (its kink along the border; see fair_region.h).
   int iterations = 1;
   /// Stop iterating once a solve moves no free vertex by more than this times the mean length of
-  /// the edges at free vertices (measured on the input).
+  /// the edges at free vertices (measured on the input). The iteration also stops, keeping the
+  /// previous solution, at a solve that would move the vertices farther than the solve before it
+  /// did: there it is not contracting (on a 1256-vertex region of blub it went 8 edges astray).
   double tolerance = 0.0;
   /// The system's free block of L(M⁻¹L)^(k−1) is symmetric: harmonic_fair always sets `symmetric`.
   LinearSolverOptions solver;
