@@ -21,6 +21,8 @@ packages=(
   libomp-dev               # OpenMP runtime headers
   libgtest-dev libgmock-dev
   libbenchmark-dev
+  clang-14                 # compiles the libFuzzer harnesses in fuzz/ (scripts/fuzz.sh)
+  libclang-rt-14-dev       # libFuzzer and the ASan/UBSan runtimes clang-14 links them with
 )
 
 missing=()

@@ -59,10 +59,12 @@ int change_count(const RepairReport& r) {
 // Merging, then removing what merging collapsed or doubled.
 void merge_round(Work& work, const RepairOptions& options, RepairReport& report) {
   using namespace repair_detail;
+  const int before = report.vertices_merged + report.border_vertices_stitched;
   if (options.merge_duplicate_vertices) merge_vertices(work, options, report);
   // Exact merging has already joined every coincident border vertex it could.
   if (options.stitch_borders && (options.stitch_tolerance > 0 || !options.merge_duplicate_vertices))
     stitch_borders(work, options, report);
+  if (report.vertices_merged + report.border_vertices_stitched == before) return;  // faces unchanged
   remove_collapsed_faces(work, report);
   if (options.remove_duplicate_faces) remove_duplicate_faces(work, report);
 }
@@ -73,14 +75,17 @@ void merge_round(Work& work, const RepairOptions& options, RepairReport& report)
 // point of every operation, and a second repair is idle.
 void repair_round(Work& work, const RepairOptions& options, RepairReport& report) {
   using namespace repair_detail;
+  const int before = change_count(report);
   if (options.fix_degenerate_faces) {
     fix_degenerate_faces(work, options, report);
-    if (options.remove_duplicate_faces) remove_duplicate_faces(work, report);
+    if (options.remove_duplicate_faces && change_count(report) > before) remove_duplicate_faces(work, report);
   }
-  split_non_manifold(work, options, report);
+  Adjacency unsplit;  // the adjacency split_non_manifold built, when it changed nothing
+  split_non_manifold(work, options, report, &unsplit);
   if (options.remove_small_components) remove_small_components(work, options.min_component_faces, report);
-  merge_round(work, options, report);
-  if (options.orient) orient_faces(work, report);
+  const bool changed = change_count(report) > before;
+  if (changed) merge_round(work, options, report);  // else merged already
+  if (options.orient) orient_faces(work, report, changed || unsplit.vertex_offsets.empty() ? nullptr : &unsplit);
 }
 
 }  // namespace

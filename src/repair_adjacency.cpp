@@ -36,7 +36,10 @@ Adjacency build_adjacency(const std::vector<Tri>& faces, int num_vertices) {
   adj.edge_offsets.reserve(corners / 2 + 2);
   for (int v = 0; v < num_vertices; ++v) {
     auto first = sorted.begin() + offsets[v], last = sorted.begin() + offsets[v + 1];
-    std::stable_sort(first, last, [&](int a, int b) { return high(a) < high(b); });
+    // Buckets hold a vertex's few edges: an insertion sort (stable, so corners stay ascending)
+    // beats std::stable_sort, which allocates a buffer per call.
+    for (auto it = first; it != last; ++it)
+      for (auto j = it; j != first && high(*(j - 1)) > high(*j); --j) std::iter_swap(j - 1, j);
     for (auto it = first; it != last; ++it) {
       if (it != first && high(*it) != high(*(it - 1))) adj.edge_offsets.push_back(static_cast<int>(adj.edge_corners.size()));
       adj.corner_edge[*it] = static_cast<int>(adj.edge_offsets.size()) - 1;

@@ -67,8 +67,11 @@ void stitch_borders(Work& work, const RepairOptions& options, RepairReport& repo
 void remove_collapsed_faces(Work& work, RepairReport& report);
 void remove_duplicate_faces(Work& work, RepairReport& report);
 void fix_degenerate_faces(Work& work, const RepairOptions& options, RepairReport& report);
-void split_non_manifold(Work& work, const RepairOptions& options, RepairReport& report);
-void orient_faces(Work& work, RepairReport& report);
+/// `unchanged`, if given, receives the adjacency of the faces when the split changed nothing.
+void split_non_manifold(Work& work, const RepairOptions& options, RepairReport& report,
+                        Adjacency* unchanged = nullptr);
+/// `adjacency`, if given, must describe work.faces (saves rebuilding it).
+void orient_faces(Work& work, RepairReport& report, const Adjacency* adjacency = nullptr);
 void remove_small_components(Work& work, int min_faces, RepairReport& report);
 
 /// Whether face f of `work` is degenerate in validate's sense (zero or near-zero area).

@@ -98,12 +98,12 @@ void detach_extra_faces(Work& work, const Cut& cut, RepairReport& report) {
 
 }  // namespace
 
-void split_non_manifold(Work& work, const RepairOptions& options, RepairReport& report) {
+void split_non_manifold(Work& work, const RepairOptions& options, RepairReport& report, Adjacency* unchanged) {
   const bool resolve = options.resolve_non_manifold_edges;
   if (!resolve && !options.split_non_manifold_vertices) return;
   constexpr int kMaxRounds = 5;
   for (int round = 0; round < kMaxRounds; ++round) {
-    const Adjacency adj = build_adjacency(work.faces, work.num_vertices());
+    Adjacency adj = build_adjacency(work.faces, work.num_vertices());
     const Cut cut = cut_non_manifold_edges(work, adj, resolve);
     if (round == 0 && resolve) report.non_manifold_edges += cut.edges;
     if (round > 0 && resolve && cut.edges > 0) {
@@ -112,7 +112,10 @@ void split_non_manifold(Work& work, const RepairOptions& options, RepairReport& 
     }
     const int split = split_fans(work, adj, cut, options.split_non_manifold_vertices, report);
     if (round == 0) report.vertices_split += split;
-    if (split == 0 && (cut.edges == 0 || !resolve)) break;
+    if (split == 0 && (cut.edges == 0 || !resolve)) {
+      if (round == 0 && unchanged) *unchanged = std::move(adj);
+      break;
+    }
   }
 }
 

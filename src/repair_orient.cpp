@@ -28,8 +28,10 @@ std::array<int, 3> edge_order(const Adjacency& adj, int f) {
 
 // Propagates "flip / keep" from each component's lowest face across two-face edges, as validate
 // does, then flips the minority; a face met with both wishes marks its component non-orientable.
-void orient_faces(Work& work, RepairReport& report) {
-  const Adjacency adj = build_adjacency(work.faces, work.num_vertices());
+void orient_faces(Work& work, RepairReport& report, const Adjacency* adjacency) {
+  Adjacency built;
+  if (!adjacency) built = build_adjacency(work.faces, work.num_vertices());
+  const Adjacency& adj = adjacency ? *adjacency : built;
   const int num_faces = static_cast<int>(work.faces.size());
   std::vector<signed char> flip(num_faces, -1);
   std::vector<int> stack;
