@@ -201,7 +201,7 @@ void setup_fill(CLI::App& app) {
   cmd->add_option("--max-hole-edges", args->max_hole_edges, "Skip loops with more border edges than this");
   cmd->add_flag("--skip-largest", args->skip_largest,
                 "Leave the longest loop open (the outer border of an open surface)");
-  cmd->add_option("--method", args->method, "flow (default) or harmonic (cotangent Laplacian baseline)");
+  cmd->add_option("--method", args->method, "flow (default: the flow, or its linear ∆^k floor where that re-predicts the held-out rings better) or harmonic (the re-evaluated cotangent ∆^k alone, labelled C2 (linear))");
   cmd->add_option("--max-steps", args->max_steps, "Stop each hole's flow after this many accepted steps");
   cmd->add_option("--log", args->log, "Write a per-hole JSON report with every flow step here");
   add_repair_flag(cmd, args->repair);
