@@ -55,15 +55,6 @@ FairRegionOptions FairRegionOptions::harmonic_started() {
 
 namespace {
 
-// "did not settle (200 steps, max|V| 1.2e9 -> 3.3e7)" or "diverged (...)".
-std::string unsettled_reason(const FlowReport& flow) {
-  char figures[160];
-  std::snprintf(figures, sizeof figures, "%d steps without a steady state, max|V| %.3g -> %.3g",
-                flow.accepted_steps, flow.initial_max_velocity, flow.final_max_velocity);
-  const bool diverged = !(flow.final_max_velocity <= flow.initial_max_velocity);
-  return std::string(diverged ? "diverged" : "did not settle") + " (" + figures + ")";
-}
-
 // Runs the flow on the submesh. With the linear floor (and a ∆^k start), a flow that throws or does
 // not settle leaves the ∆^k solution in place, reported linear; without it, a throw leaves the last
 // accepted state in the caller's mesh and propagates.
@@ -82,7 +73,7 @@ void run_flow_with_floor(Submesh& sub, const Region& region, const FairRegionOpt
       write_back_free(sub, caller);  // the last accepted state: nothing is lost
       throw;
     }
-    failure = e.what();
+    failure = std::string("failed (") + e.what() + ")";
   }
   if (!floor || failure.empty()) return;
   sub.mesh.V = start;

@@ -12,7 +12,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <numeric>
 #include <unordered_map>
@@ -223,14 +222,8 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
     };
     fairing = fair_region(sub.mesh, sub.free_local, fairing_options, step_observer);
     const FlowReport& flow = fairing.flow;
-    if (!fairing.linear && flow.stop_reason != FlowStopReason::steady) {
-      const bool diverged = !(flow.final_max_velocity <= flow.initial_max_velocity);
-      char figures[160];
-      std::snprintf(figures, sizeof figures, "%d steps without a steady state, max|V| %.3g -> %.3g",
-                    flow.accepted_steps, flow.initial_max_velocity, flow.final_max_velocity);
-      return std::string("the ") + to_string(fairing.flow_kind) + " flow " +
-             (diverged ? "diverged" : "did not settle") + " (" + figures + ")";
-    }
+    if (!fairing.linear && flow.stop_reason != FlowStopReason::steady)
+      return std::string("the ") + to_string(fairing.flow_kind) + " flow " + unsettled_reason(flow);
     write_back_free(sub, patch.mesh.V);
   }
 

@@ -521,6 +521,13 @@ const char* to_string(FlowStopReason reason) {
   return "?";
 }
 
+std::string unsettled_reason(const FlowReport& report) {
+  const bool diverged = !(report.final_max_velocity <= report.initial_max_velocity);
+  return std::string(diverged ? "diverged" : "did not settle") + " (" +
+         std::to_string(report.accepted_steps) + " steps without a steady state, max|V| " +
+         format("%.3g -> %.3g", report.initial_max_velocity, report.final_max_velocity) + ")";
+}
+
 FlowReport run_flow(Vertices& V, const Faces& F, const Region& region, const FlowOptions& options,
                     const FlowObserver& observer) {
   check_options(options);

@@ -225,6 +225,10 @@ struct FlowReport {
   Continuity supported = Continuity::G2;  ///< continuity the region's fixed rings support
 };
 
+/// Why a run that stopped without a steady state is not one: "did not settle (200 steps without a
+/// steady state, max|V| 1.2e9 -> 3.3e7)", or "diverged (...)" when max|V| ended above its start.
+std::string unsettled_reason(const FlowReport& report);
+
 using FlowObserver = std::function<void(const StepRecord&)>;
 
 /// Flows the free vertices of `region` (built on F's topology) under `options`, calling `observer`
