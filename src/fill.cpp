@@ -255,6 +255,12 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
     r.harmonic_solves = fairing.harmonic.iterations;
     r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();
     if (!free.empty()) r.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, to_local(sub, free));
+    if (free.empty()) {  // nothing was faired: the patch is the triangulation of the loop
+      r.supported = Continuity::G0;
+      r.linear = true;
+      r.steps = 0;
+      r.note = "the patch has no interior vertex: the loop's triangulation alone, continuous in position only";
+    }
   }
   mesh.V = std::move(patch.mesh.V);
   mesh.F = std::move(patch.mesh.F);

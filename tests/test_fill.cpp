@@ -650,3 +650,19 @@ TEST(FaceIntersection, FindsExactlyTheCrossingPairsOfTwoSheets) {
   }
   EXPECT_EQ(find_face_intersections(m.V, m.F, query, 2).size(), 2u);
 }
+
+// A loop small enough that its patch has no interior vertex is closed by its triangulation alone:
+// nothing is faired, so it is labelled C0 (linear), not the continuity that was asked for.
+TEST(FillLabels, APatchWithoutInteriorVertexIsLabelledC0Linear) {
+  const Mesh sphere = test::icosphere(2);
+  Mesh holed = sphere;
+  holed.F = sphere.F.bottomRows(sphere.num_faces() - 1);  // one triangle removed: a 3-edge hole
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, FillOptions{});
+  ASSERT_EQ(r.filled, 1) << r.holes.front().reason;
+  const HoleReport& hole = r.holes.front();
+  EXPECT_EQ(hole.vertices_added, 0);
+  EXPECT_EQ(hole.faces_added, 1);
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "C0 (linear)");
+  EXPECT_NE(hole.note.find("the patch has no interior vertex"), std::string::npos) << hole.note;
+}

@@ -88,7 +88,8 @@ struct HoleReport {
   Continuity supported = Continuity::G2;  ///< the continuity the fairing used
   /// The patch is the linear ∆^k solution (k = supported + 1): C(k−1), not G(k−1) — the harmonic
   /// method, or the floor kept when the flow did not settle or its patch crossed the mesh.
-  /// delivered_label(supported, linear) names it ("G2", "C2 (linear)").
+  /// delivered_label(supported, linear) names it ("G2", "C2 (linear)"). A patch without interior
+  /// vertex (a small loop's triangulation alone) is reported C0 (linear), with a note.
   bool linear = false;
   /// FairRegionOptions::held_out_rings: mean normal distance of the held-out rings from the input after
   /// the flow and after the linear solution, in mean edge lengths (∞: that fairing failed; NaN: not
