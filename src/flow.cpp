@@ -50,7 +50,6 @@ void check_options(const FlowOptions& o) {
   else if (o.border_fixed_rings < 0) problem = "border_fixed_rings must be non-negative";
   else if (o.refactor_interval < 1) problem = "refactor_interval must be at least 1";
   else if (!(o.steady_energy_tolerance >= 0)) problem = "steady_energy_tolerance must be non-negative";
-
   else if (!(c.max_displacement_ratio > 0)) problem = "step_control.max_displacement_ratio must be positive";
   else if (std::isnan(c.jacobian_dominance)) problem = "step_control.jacobian_dominance must not be NaN";
   else if (!(c.max_energy_growth >= 1)) problem = "step_control.max_energy_growth must be at least 1";
@@ -90,11 +89,15 @@ Eigen::VectorXd local_edge_lengths(const Vertices& X, const Topology& topo) {
   return sum;
 }
 
+// The energy descent applies to the sixth-order flow only; the other flows step in time.
+bool descends(const FlowOptions& options) {
+  return options.step_kind == FlowStepKind::energy_descent && options.kind == FlowKind::sixth_order;
+}
+
 // The energy descent's matrix N + diag(A)/(2τ) is symmetric: MUMPS factors it as LDLᵀ.
 LinearSolverOptions step_solver_options(const FlowOptions& options) {
   LinearSolverOptions solver = options.solver;
-  if (options.step_kind == FlowStepKind::energy_descent && options.kind == FlowKind::sixth_order)
-    solver.symmetric = true;
+  if (descends(options)) solver.symmetric = true;
   return solver;
 }
 
@@ -116,9 +119,7 @@ class FlowRun {
   bool try_step(double tau, StepRecord& record);
   bool solve_step(double tau, StepRecord& record, Eigen::VectorXd& d);
   void form_matrix(double tau);
-  bool descending() const {
-    return options_.step_kind == FlowStepKind::energy_descent && options_.kind == FlowKind::sixth_order;
-  }
+  bool descending() const { return descends(options_); }
   void limit_displacement(Eigen::VectorXd& d) const;
   bool displacement_ok(const Eigen::VectorXd& d, StepRecord& record) const;
   bool faces_ok(StepRecord& record);
@@ -506,10 +507,6 @@ const char* to_string(StepRejection reason) {
     case StepRejection::solver: return "solver";
   }
   return "?";
-}
-
-const char* to_string(FlowStepKind kind) {
-  return kind == FlowStepKind::energy_descent ? "energy-descent" : "implicit-flow";
 }
 
 const char* to_string(FlowStopReason reason) {

@@ -88,8 +88,6 @@ enum class FlowKind { sixth_order, willmore, surface_diffusion, mean_curvature }
 ///                   (METHOD §3: composed operators are inconsistent on irregular meshes), so its
 ///                   Newton steps can raise E and its small steps stall above zero.
 enum class FlowStepKind { implicit_flow, energy_descent };
-/// "implicit-flow" or "energy-descent".
-const char* to_string(FlowStepKind kind);
 
 /// "sixth-order", "willmore", "surface-diffusion", "mean-curvature".
 const char* to_string(FlowKind kind);
