@@ -15,23 +15,6 @@ namespace {
 using Vec3 = Eigen::Vector3d;
 constexpr double kRelativeTolerance = 1e-12;
 
-// Whether segment (p, q) passes strictly through the interior of triangle (a, b, c).
-bool segment_crosses_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 n = (b - a).cross(c - a);
-  const double n2 = n.squaredNorm();
-  if (!(n2 > 0)) return false;
-  const double scale = std::max({(b - a).norm(), (c - a).norm(), (q - p).norm()});
-  const double tolerance = kRelativeTolerance * scale * std::sqrt(n2);
-  const double dp = n.dot(p - a), dq = n.dot(q - a);
-  if (!((dp > tolerance && dq < -tolerance) || (dp < -tolerance && dq > tolerance))) return false;
-  const Vec3 x = p + (dp / (dp - dq)) * (q - p);
-  // Barycentric coordinates of x: each must be strictly positive.
-  const double la = n.dot((c - b).cross(x - b)) / n2;
-  const double lb = n.dot((a - c).cross(x - c)) / n2;
-  const double lc = 1.0 - la - lb;
-  return la > kRelativeTolerance && lb > kRelativeTolerance && lc > kRelativeTolerance;
-}
-
 Vec3 corner(const Vertices& V, const Faces& F, int f, int k) { return V.row(F(f, k)).transpose(); }
 
 bool faces_share_vertex(const Faces& F, int f, int g) {
@@ -93,6 +76,22 @@ class FaceGrid {
 };
 
 }  // namespace
+
+bool segment_crosses_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = (b - a).cross(c - a);
+  const double n2 = n.squaredNorm();
+  if (!(n2 > 0)) return false;
+  const double scale = std::max({(b - a).norm(), (c - a).norm(), (q - p).norm()});
+  const double tolerance = kRelativeTolerance * scale * std::sqrt(n2);
+  const double dp = n.dot(p - a), dq = n.dot(q - a);
+  if (!((dp > tolerance && dq < -tolerance) || (dp < -tolerance && dq > tolerance))) return false;
+  const Vec3 x = p + (dp / (dp - dq)) * (q - p);
+  // Barycentric coordinates of x: each must be strictly positive.
+  const double la = n.dot((c - b).cross(x - b)) / n2;
+  const double lb = n.dot((a - c).cross(x - c)) / n2;
+  const double lc = 1.0 - la - lb;
+  return la > kRelativeTolerance && lb > kRelativeTolerance && lc > kRelativeTolerance;
+}
 
 bool triangles_cross(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0, const Vec3& b1,
                      const Vec3& b2) {

@@ -1,4 +1,5 @@
 #include <fairsurf/errors.h>
+#include <fairsurf/face_intersection.h>
 #include <fairsurf/hole_triangulation.h>
 
 #include "loop_faces.h"
@@ -56,6 +57,14 @@ std::uint64_t edge_key(int from, int to) {
          static_cast<std::uint32_t>(to);
 }
 
+// The vertex set of a triangle, independent of its orientation and corner order.
+std::uint64_t triangle_key(int a, int b, int c) {
+  int v[3] = {a, b, c};
+  std::sort(v, v + 3);
+  return (static_cast<std::uint64_t>(v[0]) << 42) ^ (static_cast<std::uint64_t>(v[1]) << 21) ^
+         static_cast<std::uint64_t>(v[2]);
+}
+
 // Weight of `faces` against the outside faces whose normals are given per directed edge a→b
 // (the outside face contains a→b, so the new face across it contains b→a).
 TriangulationWeight weigh(const Vertices& V, const Faces& faces,
@@ -81,6 +90,31 @@ TriangulationWeight weigh(const Vertices& V, const Faces& faces,
 
 using detail::is_mesh_edge;
 
+std::uint64_t undirected_key(int u, int v) { return edge_key(std::min(u, v), std::max(u, v)); }
+
+// Diagonals and triangles of earlier rounds that crossed the mesh (triangulate_hole).
+struct Forbidden {
+  std::unordered_set<std::uint64_t> diagonals;  // undirected_key
+  std::unordered_set<std::uint64_t> triangles;  // triangle_key
+};
+
+// Forbids what makes new face `q` of `all` cross face `o`: each edge of q through o's interior
+// (every triangle on that diagonal would cross o too), else q itself (an edge of o pierces it).
+void forbid_crossing(const Vertices& V, const Topology& topo, const Faces& all, int q, int o,
+                     Forbidden& forbidden) {
+  const auto p = [&](int f, int k) -> Vec3 { return V.row(all(f, k)).transpose(); };
+  bool edge_through = false;
+  for (int k = 0; k < 3; ++k) {
+    const int u = all(q, k), v = all(q, (k + 1) % 3);
+    if (!is_mesh_edge(topo, u, v) &&
+        segment_crosses_triangle(p(q, k), p(q, (k + 1) % 3), p(o, 0), p(o, 1), p(o, 2))) {
+      forbidden.diagonals.insert(undirected_key(u, v));
+      edge_through = true;
+    }
+  }
+  if (!edge_through) forbidden.triangles.insert(triangle_key(all(q, 0), all(q, 1), all(q, 2)));
+}
+
 // One polygon to triangulate: vertex indices in loop order and, for each side (t, t+1 mod m), the
 // normal of the face outside it (zero if there is none, e.g. along a cut not yet weighed).
 struct Polygon {
@@ -91,8 +125,9 @@ struct Polygon {
 
 class Triangulator {
  public:
-  Triangulator(const Vertices& V, const Topology& topo, int threshold)
-      : V_(V), topo_(topo), threshold_(threshold) {}
+  Triangulator(const Vertices& V, const Topology& topo, int threshold,
+               const Forbidden& forbidden)
+      : V_(V), topo_(topo), threshold_(threshold), forbidden_(forbidden) {}
 
   // Appends the triangles of `poly` to `out` (each as (v_k, v_j, v_i), reversing the loop order).
   void triangulate(const Polygon& poly, std::vector<Eigen::Vector3i>& out) {
@@ -124,10 +159,9 @@ class Triangulator {
   // repeat a diagonal of an earlier piece (two pieces can share a vertex of such a loop): each would
   // give an edge more than two faces.
   bool admissible_diagonal(int u, int v) const {
-    return u != v && !is_mesh_edge(topo_, u, v) && !made_.contains(undirected_key(u, v));
+    const std::uint64_t key = undirected_key(u, v);
+    return u != v && !is_mesh_edge(topo_, u, v) && !made_.contains(key) && !forbidden_.diagonals.contains(key);
   }
-
-  static std::uint64_t undirected_key(int u, int v) { return edge_key(std::min(u, v), std::max(u, v)); }
 
   // Positions s < t of the first vertex the polygon passes twice; (-1, -1) if none.
   static std::pair<int, int> repeated_positions(const Polygon& poly) {
@@ -220,6 +254,9 @@ class Triangulator {
         Weight best{kInfinity, kInfinity};
         if (top || admissible_diagonal(vertex(i), vertex(k)))
           for (int j = i + 1; j < k; ++j) {
+            if (!forbidden_.triangles.empty() &&
+                forbidden_.triangles.contains(triangle_key(vertex(i), vertex(j), vertex(k))))
+              continue;
             const Weight& left = weight[at(i, j)];
             const Weight& right = weight[at(j, k)];
             // The sub-polygons' angles bound this candidate's from below: skip hopeless ones
@@ -255,9 +292,58 @@ class Triangulator {
   const Vertices& V_;
   const Topology& topo_;
   int threshold_;
+  const Forbidden& forbidden_;  // what crossed the mesh in an earlier round
   bool divided_ = false;
   std::unordered_set<std::uint64_t> made_;  // diagonals of the pieces solved so far
 };
+
+// The mesh's faces followed by `faces`; `added` receives the indices of the latter.
+Faces with_faces(const Faces& F, const std::vector<Eigen::Vector3i>& faces, std::vector<int>& added) {
+  Faces all(F.rows() + static_cast<Eigen::Index>(faces.size()), 3);
+  all.topRows(F.rows()) = F;
+  added.clear();
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    added.push_back(static_cast<int>(F.rows() + static_cast<Eigen::Index>(f)));
+    all.row(added.back()) = faces[f].transpose();
+  }
+  return all;
+}
+
+// Liepa's triangulation of `poly`, solved again with what crossed the mesh forbidden while it
+// crosses (HoleTriangulationOptions::max_crossing_rounds); the round with the fewest crossings wins.
+// Weights are left to the caller.
+HoleTriangulation triangulate_avoiding_crossings(const Vertices& V, const Faces& F, const Topology& topo,
+                                                 const Polygon& poly, const HoleTriangulationOptions& options) {
+  HoleTriangulation result;
+  Forbidden forbidden;
+  std::size_t fewest = std::numeric_limits<std::size_t>::max();
+  std::vector<int> added;
+  for (int round = 0; round <= options.max_crossing_rounds; ++round) {
+    Triangulator triangulator(V, topo, options.max_dynamic_programming_size, forbidden);
+    std::vector<Eigen::Vector3i> faces;
+    try {
+      triangulator.triangulate(poly, faces);
+    } catch (const InvalidMeshError&) {
+      if (round == 0) throw;
+      break;  // what is forbidden leaves no triangulation: keep the best one found
+    }
+    const Faces all = with_faces(F, faces, added);
+    const auto crossings = options.max_crossing_rounds > 0 ? find_face_intersections(V, all, added)
+                                                           : std::vector<FaceIntersection>{};
+    if (crossings.size() < fewest) {
+      fewest = crossings.size();
+      result.faces = all.bottomRows(static_cast<Eigen::Index>(faces.size()));
+      result.divided = triangulator.divided();
+      result.crossings = static_cast<int>(crossings.size());
+    }
+    if (crossings.empty()) break;
+    for (const FaceIntersection& c : crossings) {
+      forbid_crossing(V, topo, all, c.query_face, c.other_face, forbidden);
+      if (c.other_face >= F.rows()) forbid_crossing(V, topo, all, c.other_face, c.query_face, forbidden);
+    }
+  }
+  return result;
+}
 
 }  // namespace
 
@@ -266,6 +352,9 @@ HoleTriangulation triangulate_hole(const Vertices& V, const Faces& F, const Topo
   if (options.max_dynamic_programming_size < 3)
     throw InvalidArgument("triangulate_hole: max_dynamic_programming_size must be at least 3, got " +
                           std::to_string(options.max_dynamic_programming_size));
+  if (options.max_crossing_rounds < 0)
+    throw InvalidArgument("triangulate_hole: max_crossing_rounds must be at least 0, got " +
+                          std::to_string(options.max_crossing_rounds));
   if (V.rows() != topo.num_vertices)
     throw InvalidArgument("triangulate_hole: the topology is of another mesh");
   const std::vector<int> across = detail::loop_edge_faces(F, topo, loop, "triangulate_hole");
@@ -279,18 +368,10 @@ HoleTriangulation triangulate_hole(const Vertices& V, const Faces& F, const Topo
     outside[edge_key(loop[t], loop[(t + 1) % n])] = poly.side_normals.back();
   }
 
-  Triangulator triangulator(V, topo, options.max_dynamic_programming_size);
-  std::vector<Eigen::Vector3i> faces;
-  faces.reserve(n - 2);
-  triangulator.triangulate(poly, faces);
-
-  HoleTriangulation result;
-  result.faces.resize(static_cast<int>(faces.size()), 3);
-  for (int f = 0; f < result.faces.rows(); ++f) result.faces.row(f) = faces[f].transpose();
+  HoleTriangulation result = triangulate_avoiding_crossings(V, F, topo, poly, options);
   const TriangulationWeight w = weigh(V, result.faces, outside);
   result.max_dihedral_angle = w.max_dihedral_angle;
   result.area = w.area;
-  result.divided = triangulator.divided();
   return result;
 }
 

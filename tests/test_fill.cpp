@@ -14,6 +14,7 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <numbers>
 #include <numeric>
 
 #include "analytic_meshes.h"
@@ -214,6 +215,24 @@ INSTANTIATE_TEST_SUITE_P(Data, RealHoles,
                          ::testing::Values(RealCase{"cgal_mech_holes_shark.off", Continuity::G1, 60},
                                            RealCase{"airplane_holes.obj", Continuity::G2, 0},
                                            RealCase{"stanford_bunny_zipper.obj", Continuity::G1, 0}));
+
+// The shark's hole 3 runs round a corner of the part. Its lightest triangulation crossed the
+// corner's fan, and both the G2 and the C2 fairing of it crossed the mesh, so the hole fell to C1;
+// the triangulation now avoids the crossing and the hole gets at least the C2 floor.
+TEST(FillShark, TheHoleRoundACornerGetsTheRequestedContinuityWithoutCrossing) {
+  const Mesh input = read_mesh(test::data_path("cgal_mech_holes_shark.off"));
+  Mesh filled = input;
+  FillOptions o;
+  o.holes = {3};
+  const FillReport r = fill_holes(filled, o);
+  const HoleReport& h = r.holes[3];
+  ASSERT_EQ(h.status, HoleStatus::filled) << h.reason;
+  EXPECT_EQ(h.supported, Continuity::G2) << delivered_label(h.supported, h.linear) << ": " << h.note;
+  std::vector<int> added(static_cast<std::size_t>(filled.num_faces() - input.num_faces()));
+  std::iota(added.begin(), added.end(), input.num_faces());
+  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, added, 1).empty());
+  EXPECT_LT(h.continuity.max_normal_angle, 45.0 * std::numbers::pi / 180);  // no fold (16° now)
+}
 
 // blub's 64-edge hole gets G2 (from the membrane with fair_region's defaults the G2 flow ran its
 // 200 steps without settling and fell back to G1).

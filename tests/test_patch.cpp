@@ -1,5 +1,6 @@
 // Tests of the patch stage: Liepa hole triangulation, refinement, membrane relaxation, tubes.
 #include <fairsurf/errors.h>
+#include <fairsurf/face_intersection.h>
 #include <fairsurf/hole_triangulation.h>
 #include <fairsurf/io.h>
 #include <fairsurf/membrane.h>
@@ -17,6 +18,7 @@
 #include <iostream>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -347,6 +349,39 @@ TEST(HoleTriangulation, RejectsBadLoopsWithPreciseMessages) {
   EXPECT_NE(message(reversed).find("is not a border edge with the surface on its left"), std::string::npos);
   EXPECT_EQ(message(loop, {.max_dynamic_programming_size = 2}),
             "triangulate_hole: max_dynamic_programming_size must be at least 3, got 2");
+  EXPECT_EQ(message(loop, {.max_crossing_rounds = -1}),
+            "triangulate_hole: max_crossing_rounds must be at least 0, got -1");
+}
+
+// cgal_mech_holes_shark's hole 3 (80 edges) runs round a corner of the part whose fan of needle
+// triangles curls over the hole: Liepa's lightest triangulation passes through 5 of its faces, and
+// the ∆³ fairing of a patch refined from it crossed the mesh. Forbidding what crossed and solving
+// again finds a triangulation that crosses nothing.
+TEST(HoleTriangulation, ReSolvesUntilNoTriangleCrossesTheMesh) {
+  const Mesh m = read_mesh(test::data_path("cgal_mech_holes_shark.off"));
+  const Topology topo = build_topology(m.F, m.num_vertices());
+  const auto loops = boundary_loops(m.F, topo);
+  ASSERT_EQ(loops.size(), 4u);
+  ASSERT_EQ(loops[3].size(), 80u);
+  const auto crossings = [&](const Faces& faces) {
+    Faces all(m.F.rows() + faces.rows(), 3);
+    all << m.F, faces;
+    std::vector<int> added(static_cast<std::size_t>(faces.rows()));
+    std::iota(added.begin(), added.end(), static_cast<int>(m.F.rows()));
+    return find_face_intersections(m.V, all, added).size();
+  };
+  const HoleTriangulation unchecked = triangulate_hole(m.V, m.F, topo, loops[3], {.max_crossing_rounds = 0});
+  EXPECT_GT(crossings(unchecked.faces), 0u);
+  EXPECT_EQ(unchecked.crossings, 0);  // not checked: not counted
+  const HoleTriangulation checked = triangulate_hole(m.V, m.F, topo, loops[3]);
+  EXPECT_EQ(checked.crossings, 0);
+  EXPECT_EQ(crossings(checked.faces), 0u);
+  EXPECT_EQ(checked.faces.rows(), 78);
+  Mesh filled = m;
+  filled.F.conservativeResize(m.F.rows() + checked.faces.rows(), 3);
+  filled.F.bottomRows(checked.faces.rows()) = checked.faces;
+  const auto still_open = boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices()));
+  EXPECT_EQ(still_open.size(), 3u);
 }
 
 // ---------------------------------------------------------------------------------------------

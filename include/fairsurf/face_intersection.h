@@ -31,6 +31,11 @@ std::vector<FaceIntersection> find_face_intersections(const Vertices& V, const F
                                                       std::span<const int> query_faces,
                                                       int max_results = 0);
 
+/// Whether segment (p, q) passes strictly through the interior of triangle (a, b, c) (touching
+/// within the relative tolerance of the header does not count).
+bool segment_crosses_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& a,
+                              const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+
 /// Whether triangles (a0, a1, a2) and (b0, b1, b2), which share no vertex, cross (see the header).
 bool triangles_cross(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
                      const Eigen::Vector3d& b0, const Eigen::Vector3d& b1, const Eigen::Vector3d& b2);
