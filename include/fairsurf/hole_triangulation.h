@@ -32,7 +32,7 @@
 // (face_intersection.h, the same test as fill's); while it crosses, the programme is solved again
 // with the crossing diagonals (an edge through a face) or triangles (a face's edge through them)
 // forbidden, up to `max_crossing_rounds` times, and the triangulation with the fewest crossings is
-// kept. On cgal_mech_holes_shark's 80-edge hole 3 that takes 30 rounds (0.1 s) and removes the 5
+// kept. On cgal_mech_holes_shark's 80-edge hole 3 that takes 30 rounds (0.23 s) and removes the 5
 // crossings that fairing then turned into a crossing patch. CGAL avoids them by restricting the
 // search to a 3D Delaunay triangulation of the loop, which we do not have.
 //
