@@ -10,9 +10,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <utility>
+#include <vector>
 
 #include "test_support.h"
 
@@ -59,6 +62,42 @@ TEST(Blend, Fig4CapsOfOneSphereBlendBackToTheSphere) {
     EXPECT_GT(loop->border.border_vertices, 0);
     EXPECT_LT(loop->border.max_normal_angle, 0.02);
     EXPECT_LT(loop->border.max_mean_curvature_jump, 0.02);
+  }
+}
+
+// A time-stepped flow that ends unsettled (here cut short at 20 of the 47 steps it needs, as real meshes' flows end at
+// their step limit or throw) is continued by the energy descent, which reaches a steady state from
+// its last state: E falls at every accepted descent step, and the tube still lies on the sphere.
+TEST(Blend, AnUnsettledFlowIsContinuedByTheEnergyDescent) {
+  const Scene s = make_scene("fig4", {0.15});
+  for (const bool fallback : {false, true}) {
+    Mesh m = s.mesh;
+    BlendOptions o;
+    o.fair.flow.max_steps = 20;
+    o.descent_fallback = fallback;
+    std::vector<double> energies;
+    const BlendReport r = blend_loops(m, o, [&](const StepRecord& step) {
+      if (step.accepted) energies.push_back(step.energy);
+    });
+    print(fallback ? "fig4, 20 steps + descent" : "fig4, 20 steps", r);
+    EXPECT_EQ(r.fair.supported, Continuity::G2);
+    EXPECT_FALSE(r.fair.linear);
+    if (!fallback) {
+      EXPECT_EQ(r.fair.flow.stop_reason, FlowStopReason::max_steps);
+      EXPECT_TRUE(r.fair.note.empty()) << r.fair.note;
+      continue;
+    }
+    EXPECT_EQ(r.fair.flow.stop_reason, FlowStopReason::steady);
+    EXPECT_NE(r.fair.note.find("the energy descent continued from its last state"), std::string::npos) << r.fair.note;
+    ASSERT_GT(r.fair.flow.accepted_steps, 0);
+    ASSERT_GE(energies.size(), 2u + r.fair.flow.accepted_steps);
+    const auto descent = energies.end() - r.fair.flow.accepted_steps;
+    EXPECT_LT(r.fair.flow.final_energy, r.fair.flow.initial_energy);
+    EXPECT_TRUE(std::is_sorted(descent, energies.end(), std::greater<>()));
+    double worst = 0;
+    for (int v = s.mesh.num_vertices(); v < m.num_vertices(); ++v) worst = std::max(worst, std::abs(m.V.row(v).norm() - 1));
+    EXPECT_LT(worst, 5e-3);
+    for (const BlendLoop* loop : {&r.a, &r.b}) EXPECT_LT(loop->border.max_normal_angle, 0.02);
   }
 }
 
@@ -162,6 +201,7 @@ TEST(Blend, FairingCrossAdjacentEndsJoinByAHandle) {
   Mesh m = read_mesh(test::data_path("fairing_cross.off"));
   BlendOptions o;
   o.fair.flow.max_steps = 15;
+  o.descent_fallback = false;  // the time-stepped flow's 15th state, not a steady one
   const BlendReport r = blend_loops(m, o);
   print("fairing_cross", r);
   std::printf("[blend] fairing_cross: tube quality %.3g, membrane %.3g; energy %.4g -> %.4g\n", r.hermite_quality,

@@ -4,7 +4,8 @@
 // joined by an initial tube (patch.h's tube_patch: loops aligned, Hermite rings, zipper strips,
 // refinement to the surrounding edge length, then the G0 membrane unless it pinches off), and the
 // tube's new vertices are faired by fair_region (fair_region.h): by default the sixth-order flow of
-// f = H to a steady state with the three rings of each surface around the loops as G2 boundary data.
+// f = H to a steady state with the three rings of each surface around the loops as G2 boundary data
+// (continued by the energy descent where the time-stepped flow does not settle: descent_fallback).
 //
 // Loops are numbered in topology.h's boundary_loops order (sorted by their smallest vertex index).
 // Both surfaces must be oriented alike across the tube (tube.h): two outward-oriented pieces, or
@@ -38,6 +39,13 @@ struct BlendOptions {
   /// sheet of slivers (quality 1e-9) that no flow can start from.
   double pinch_quality_ratio = 0.25;
   FairRegionOptions fair;  ///< continuity (G2 default), f, method, steady-state tolerance
+  /// When fair's sixth-order flow steps in time (FlowStepKind::implicit_flow) and ends without a
+  /// steady state or throws, continue from its last accepted state with the energy descent
+  /// (FlowStepKind::energy_descent, steady once a step lowers E by less than 1e-5 of itself) and
+  /// say so in fair.note. On real meshes the time-stepped flow often does not settle (the fitted EL
+  /// is not the gradient of the discrete energy on irregular rings); where it does, as on the
+  /// analytic scenes, its result is kept unchanged.
+  bool descent_fallback = true;
   /// Rings around each loop kept when the continuity is measured at one border (both sides' 2-ring
   /// fits must fit inside). Each figure is taken at its own loop's vertices only.
   int measure_rings = 4;
