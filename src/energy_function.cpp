@@ -3,6 +3,8 @@
 
 #include <fairsurf/errors.h>
 
+#include "parallel.h"
+
 #include <muParser.h>
 #include <omp.h>
 
@@ -151,7 +153,7 @@ void EnergyFunction::evaluate(const Eigen::VectorXd& H, const Eigen::VectorXd& K
   for (Eigen::VectorXd* v : {&out.f, &out.f_H, &out.f_K})
     if (v->size() != n) v->resize(n);
   const int threads = impl_->formula ? static_cast<int>(impl_->slots.size()) : omp_get_max_threads();
-#pragma omp parallel for num_threads(threads) schedule(static)
+#pragma omp parallel for if (detail::worth_parallel(n)) num_threads(threads) schedule(static)
   for (Eigen::Index i = 0; i < n; ++i) {
     const EnergyValue v = impl_->at(H[i], K[i], scale, omp_get_thread_num());
     out.f[i] = v.f;
@@ -277,7 +279,7 @@ WellPosedness check_well_posedness(const EnergyFunctions& functions, const Eigen
   for (std::size_t l = 0; l < functions.size(); ++l) functions[l].evaluate(H, K, scale, values[l]);
   std::vector<char> flags(n, 0);
   int count = 0;
-#pragma omp parallel reduction(+ : count)
+#pragma omp parallel if (detail::worth_parallel(n)) reduction(+ : count)
   {
     std::vector<std::array<double, 2>> symbols(functions.size());
 #pragma omp for schedule(static)

@@ -1,3 +1,4 @@
+#include "parallel.h"
 #include "flow_step.h"
 
 #include <fairsurf/errors.h>
@@ -21,7 +22,7 @@ void fill_like(const SparseOperator& L, SparseOperator& out, Value value) {
   const int* outer = L.outerIndexPtr();
   const int* inner = L.innerIndexPtr();
   double* values = out.valuePtr();
-#pragma omp parallel for schedule(dynamic, 1024)
+#pragma omp parallel for if (detail::worth_parallel(n)) schedule(dynamic, 1024)
   for (int i = 0; i < n; ++i)
     for (int p = outer[i]; p < outer[i + 1]; ++p) values[p] = value(i, inner[p], p);
 }
@@ -104,7 +105,7 @@ void add_product(const Region& region, const SparseOperator& L, const double* ri
   const int* j_outer = jacobian.outerIndexPtr();
   const int* j_inner = jacobian.innerIndexPtr();
   double* J = jacobian.valuePtr();
-#pragma omp parallel num_threads(work.threads)
+#pragma omp parallel if (detail::worth_parallel(num_free)) num_threads(work.threads)
   {
     double* row = work.left_row.data() + static_cast<std::size_t>(omp_get_thread_num()) * n;
     int* slot = work.column_slot.data() + static_cast<std::size_t>(omp_get_thread_num()) * num_free;
@@ -251,7 +252,7 @@ void row_damping(const SparseOperator& jacobian, double dominance, Eigen::Vector
   const int* outer = jacobian.outerIndexPtr();
   const int* inner = jacobian.innerIndexPtr();
   const double* J = jacobian.valuePtr();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (detail::worth_parallel(n)) schedule(static)
   for (int i = 0; i < n; ++i) {
     double diagonal = 0, off = 0;
     for (int p = outer[i]; p < outer[i + 1]; ++p)
@@ -269,7 +270,7 @@ void form_step_matrix(const SparseOperator& jacobian, const Eigen::VectorXd& dam
   const int* inner = jacobian.innerIndexPtr();
   const double* J = jacobian.valuePtr();
   double* A = step.valuePtr();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (detail::worth_parallel(n)) schedule(static)
   for (int i = 0; i < n; ++i)
     for (int p = outer[i]; p < outer[i + 1]; ++p)
       A[p] = inner[p] == i ? 1.0 - tau * (J[p] - damping[i]) : -tau * J[p];

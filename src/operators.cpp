@@ -2,6 +2,8 @@
 #include <fairsurf/operators.h>
 #include <fairsurf/topology.h>
 
+#include "parallel.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -101,7 +103,7 @@ void evaluate_vertices(const QuadraticFits& fits, const Vertices& V, SurfaceGeom
                        RowWriter write_row) {
   const int n = fits.num_vertices();
   resize_geometry(out, n);
-#pragma omp parallel for schedule(dynamic, 512)
+#pragma omp parallel for if (detail::worth_parallel(n)) schedule(dynamic, 512)
   for (int i = 0; i < n; ++i) {
     if (!has_fit(fits.status[i])) {
       store_geometry(out, i, fits.frame_normal.row(i).transpose(), 0.0, 0.0);
@@ -153,7 +155,7 @@ void build_patterns(const QuadraticFits& fits, SurfaceOperators& ops) {
     m->resize(n, n);
     m->resizeNonZeros(outer.back());
   }
-#pragma omp parallel for schedule(dynamic, 512)
+#pragma omp parallel for if (detail::worth_parallel(n)) schedule(dynamic, 512)
   for (int i = 0; i < n; ++i) {
     for (SparseOperator* m : matrices) m->outerIndexPtr()[i + 1] = outer[i + 1];
     if (outer[i] == outer[i + 1]) continue;
@@ -175,7 +177,7 @@ bool has_pattern(const QuadraticFits& fits, SurfaceOperators& ops) {
   for (const SparseOperator* m : matrices)
     if (m->rows() != n || m->cols() != n || !m->isCompressed()) return false;
   bool same = true;
-#pragma omp parallel for schedule(static) reduction(&& : same)
+#pragma omp parallel for if (detail::worth_parallel(n)) schedule(static) reduction(&& : same)
   for (int i = 0; i < n; ++i) {
     const int length = pattern_row_length(fits, i);
     for (const SparseOperator* m : matrices)
@@ -258,7 +260,7 @@ void normal_weighted(const SparseOperator& L, const Vertices& normal, SparseOper
   const int* inner = L.innerIndexPtr();
   std::copy(outer, outer + n + 1, out.outerIndexPtr());
   std::copy(inner, inner + L.nonZeros(), out.innerIndexPtr());
-#pragma omp parallel for schedule(dynamic, 1024)
+#pragma omp parallel for if (detail::worth_parallel(n)) schedule(dynamic, 1024)
   for (int i = 0; i < n; ++i)
     for (int p = outer[i]; p < outer[i + 1]; ++p) {
       const int j = inner[p];

@@ -1,6 +1,8 @@
 #include <fairsurf/errors.h>
 #include <fairsurf/orientation_guard.h>
 
+#include "parallel.h"
+
 #include <Eigen/Geometry>
 
 #include <string>
@@ -23,7 +25,7 @@ bool turned_over(const Eigen::RowVector3d& n, std::span<const Eigen::MatrixX3d* 
 
 Eigen::MatrixX3d face_directions(const Vertices& X, const Faces& F, std::span<const int> faces) {
   Eigen::MatrixX3d out(static_cast<Eigen::Index>(faces.size()), 3);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (detail::worth_parallel(out.rows())) schedule(static)
   for (Eigen::Index k = 0; k < out.rows(); ++k) out.row(k) = direction(X, F, faces[static_cast<std::size_t>(k)]);
   return out;
 }

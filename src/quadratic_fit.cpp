@@ -1,6 +1,8 @@
 #include <fairsurf/errors.h>
 #include <fairsurf/quadratic_fit.h>
 
+#include "parallel.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -230,7 +232,7 @@ std::vector<Neighbourhood> topological_neighbourhoods(const Topology& topo,
                                                       const std::vector<char>& fitted) {
   const auto border = irregular_edge_vertices(topo);
   std::vector<Neighbourhood> choice(topo.num_vertices, Neighbourhood::kNotFitted);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (detail::worth_parallel(topo.num_vertices)) schedule(static)
   for (int i = 0; i < topo.num_vertices; ++i) {
     if (!fitted[i]) continue;
     if (border[i])
@@ -252,7 +254,7 @@ template <class RowOf>
 Csr build_rows(int n, RowOf row_of) {
   Csr csr;
   csr.offsets.assign(n + 1, 0);
-#pragma omp parallel
+#pragma omp parallel if (detail::worth_parallel(n))
   {
     std::vector<int> scratch;
 #pragma omp for schedule(dynamic, 512)
@@ -263,7 +265,7 @@ Csr build_rows(int n, RowOf row_of) {
   }
   std::partial_sum(csr.offsets.begin(), csr.offsets.end(), csr.offsets.begin());
   csr.indices.resize(csr.offsets.back());
-#pragma omp parallel
+#pragma omp parallel if (detail::worth_parallel(n))
   {
     std::vector<int> scratch;
 #pragma omp for schedule(dynamic, 512)
@@ -388,7 +390,7 @@ void refit_quadratics(QuadraticFits& fits, const Vertices& V) {
   if (V.rows() != n)
     throw InvalidArgument("refit_quadratics: " + std::to_string(V.rows()) +
                           " positions for fits over " + std::to_string(n) + " vertices");
-#pragma omp parallel
+#pragma omp parallel if (detail::worth_parallel(n))
   {
     FitScratch scratch;
     LocalSystem system;

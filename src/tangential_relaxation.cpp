@@ -1,6 +1,8 @@
 #include <fairsurf/errors.h>
 #include <fairsurf/tangential_relaxation.h>
 
+#include "parallel.h"
+
 #include <string>
 
 namespace fairsurf {
@@ -11,7 +13,7 @@ Vertices tangential_moves(const Vertices& X, const Topology& topo, std::span<con
                           const Vertices& normals, double weight) {
   const auto count = static_cast<Eigen::Index>(vertices.size());
   Vertices moves(count, 3);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (detail::worth_parallel(count)) schedule(static)
   for (Eigen::Index k = 0; k < count; ++k) {
     const int v = vertices[static_cast<std::size_t>(k)];
     const auto neighbours = topo.vertex_vertices.row(v);

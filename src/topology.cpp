@@ -1,6 +1,8 @@
 #include <fairsurf/errors.h>
 #include <fairsurf/topology.h>
 
+#include "parallel.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -239,7 +241,7 @@ void face_normals_and_areas(const Vertices& V, const Faces& F, Eigen::MatrixX3d&
 Eigen::VectorXd vertex_areas(const Vertices& V, const Faces& F) {
   const int num_faces = static_cast<int>(F.rows());
   Eigen::VectorXd thirds(num_faces);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (detail::worth_parallel(num_faces)) schedule(static)
   for (int f = 0; f < num_faces; ++f) {
     const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
     thirds[f] = (b - a).cross(c - a).norm() / 6.0;
