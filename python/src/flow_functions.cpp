@@ -215,7 +215,7 @@ void register_flow_functions(py::module_& m) {
          std::string method, int max_steps, std::string start, py::object progress) {
         return fair_binding(V, F, region, {continuity, f, method, max_steps}, start, std::move(progress));
       },
-      "V"_a, "F"_a, py::kw_only(), "region"_a, "continuity"_a = "G2", "f"_a = H, "method"_a = "flow",
+      "V"_a, "F"_a, "region"_a, py::kw_only(), "continuity"_a = "G2", "f"_a = H, "method"_a = "flow",
       "max_steps"_a = fair_steps, "start"_a = "harmonic", "progress"_a = py::none(),
       "Fairs a region (boolean mask or vertex indices), as `fairsurf fair`; returns (V, report).");
   m.def(

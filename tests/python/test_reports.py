@@ -52,3 +52,15 @@ def test_fair_report_fields(cli, tmp_path):
     assert report["free_vertices"] == log["free_vertices"] == cap.sum()
     V_cli, _ = fairsurf.read_mesh(tmp_path / "out.ply")
     assert np.abs(V_faired - V_cli).max() <= 1e-12
+
+
+def test_blend_report_fields_and_result(cli, tmp_path):
+    subprocess.run([str(cli), "scene", "fig4", "-o", str(tmp_path / "fig4.ply"), "--edge-length", "0.25"],
+                   check=True, capture_output=True)
+    V, F = fairsurf.read_mesh(tmp_path / "fig4.ply")
+    V2, F2, report = fairsurf.blend(V, F, max_steps=5)
+    log = cli_log(cli, tmp_path, "blend", tmp_path / "fig4.ply", "--max-steps", 5)
+    assert keys(report) == keys(log)
+    assert fairsurf.info(V2, F2)["boundary_loops"] == []  # two caps joined into a closed surface
+    V_cli, F_cli = fairsurf.read_mesh(tmp_path / "out.ply")
+    assert np.array_equal(F2, F_cli) and np.abs(V2 - V_cli).max() <= 1e-12
