@@ -121,7 +121,7 @@ std::vector<int> region_vertices(const py::handle& region, int num_vertices) {
   if (!a || a.dtype().kind() != 'b') return to_indices(region, "region");
   if (a.ndim() != 1 || a.shape(0) != num_vertices)
     throw py::value_error("region: a boolean mask must have one entry per vertex (" + std::to_string(num_vertices) +
-                          "), got shape (" + std::to_string(a.ndim() == 1 ? a.shape(0) : a.size()) + ",)");
+                          "), got " + (a.ndim() == 1 ? std::to_string(a.shape(0)) : std::to_string(a.ndim()) + "-D"));
   const auto mask = py::array_t<bool, py::array::c_style>::ensure(a);
   std::vector<int> indices;
   for (int i = 0; i < num_vertices; ++i)

@@ -92,4 +92,4 @@ def test_bad_options(hand):
     assert str(error.value) == "smooth: give at most one of steps, time and steady"
     with pytest.raises(ValueError) as error:
         fairsurf.fair(V, F, region=np.ones(5, dtype=bool))
-    assert str(error.value) == "region: a boolean mask must have one entry per vertex (810), got shape (5,)"
+    assert str(error.value) == "region: a boolean mask must have one entry per vertex (810), got 5"
