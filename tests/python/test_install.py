@@ -19,7 +19,8 @@ def test_cmake_install_gives_an_importable_package(tmp_path):
     env["PYTHONPATH"] = str(site)
     script = ("import fairsurf; V, F = fairsurf.scene('fig4', edge_length=0.5); "
               "print(fairsurf.__file__); print(fairsurf.info(V, F)['boundary_loops'])")
-    out = subprocess.run([sys.executable, "-c", script], env=env, check=True, capture_output=True, text=True)
+    out = subprocess.run([sys.executable, "-c", script], env=env, cwd=tmp_path, check=True, capture_output=True,
+                         text=True)  # not the cwd: ctest runs in build/python, beside the build tree's package
     module_file, loops = out.stdout.splitlines()
     assert pathlib.Path(module_file).is_relative_to(site)
     assert len(ast.literal_eval(loops)) == 2  # fig4: two caps, two rims
