@@ -52,7 +52,8 @@ py::dict curvature(const py::handle& V, const py::handle& F) {
     c = curvatures(mesh);
   }
   py::array_t<bool> well_posed(static_cast<py::ssize_t>(c.status.size()));
-  for (std::size_t i = 0; i < c.status.size(); ++i) well_posed.mutable_data()[i] = c.status[i] == FitStatus::kOk;
+  bool* ok = well_posed.mutable_data();
+  for (std::size_t i = 0; i < c.status.size(); ++i) ok[i] = c.status[i] == FitStatus::kOk;
   SurfaceGeometry& g = c.geometry;
   return py::dict("H"_a = to_numpy(std::move(g.H)), "K"_a = to_numpy(std::move(g.K)),
                   "k1"_a = to_numpy(std::move(g.k1)), "k2"_a = to_numpy(std::move(g.k2)),
