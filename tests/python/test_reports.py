@@ -64,3 +64,15 @@ def test_blend_report_fields_and_result(cli, tmp_path):
     assert fairsurf.info(V2, F2)["boundary_loops"] == []  # two caps joined into a closed surface
     V_cli, F_cli = fairsurf.read_mesh(tmp_path / "out.ply")
     assert np.array_equal(F2, F_cli) and np.abs(V2 - V_cli).max() <= 1e-12
+
+
+def test_info_fields_and_values(cli, data_dir):
+    path = data_dir / "lagrange_prout.obj"  # findings of most kinds, with examples
+    out = subprocess.run([str(cli), "info", str(path), "--json"], check=True, capture_output=True, text=True).stdout
+    cli_info = json.loads(out)
+    for read_only in ("file", "polygons_triangulated", "triangles_added", "read_notes"):
+        del cli_info[read_only]
+    report = fairsurf.info(*fairsurf.read_mesh(path))
+    assert keys(report) == keys(cli_info)
+    as_json = json.loads(json.dumps(report))  # tuples become lists, as in the CLI's JSON
+    assert as_json == cli_info
