@@ -14,8 +14,6 @@ Progress::Progress(py::object callback) : callback_(std::move(callback)) {
     throw py::type_error("progress must be callable or None");
 }
 
-Progress::~Progress() = default;
-
 void Progress::attach(FlowOptions& options) const {
   options.interrupted = [this] { return stop_; };
 }

@@ -20,7 +20,6 @@ class Progress {
  public:
   /// `callback`: None or a callable taking one dict.
   explicit Progress(py::object callback);
-  ~Progress();
 
   /// Sets options.interrupted so that the run stops once the callback has said so.
   void attach(FlowOptions& options) const;
