@@ -18,6 +18,10 @@ packages=(
   libstb-dev               # stb_truetype.h: glyph rasterization for render's title and colour bar
   fonts-dejavu-core        # DejaVu Sans, the font render draws its text with
   python3                  # standard library only: the demo's and the gallery's noise and measurements
+  python3-dev pybind11-dev # the Python bindings (python/), built for Debian's /usr/bin/python3
+  python3-numpy            # their arrays
+  python3-pytest           # their tests (tests/python)
+  python3-setuptools python3-pip  # `pip install --no-build-isolation .` (setup.py drives CMake)
   libomp-dev               # OpenMP runtime headers
   libgtest-dev libgmock-dev
   libbenchmark-dev

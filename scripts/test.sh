@@ -3,6 +3,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh -DFAIRSURF_WERROR=ON
+# The Python bindings' pytest suite runs in ctest as python_bindings; fail rather than lose it
+# silently when pybind11, NumPy or pytest were not found for /usr/bin/python3.
+if ! (cd build && ctest -N -R '^python_bindings$' | grep -q 'Total Tests: 1'); then
+  echo "test.sh: the Python tests are not configured (see docs/python.md)" >&2
+  exit 1
+fi
 (cd build && ctest --output-on-failure -j "$(nproc)" --timeout 900)
 # Bounded fuzzing: each libFuzzer harness (readers, repair) for FUZZ_SECONDS (25 s by default), then
 # random mutations of small meshes through every CLI command for 60 s; any crash or hang fails.

@@ -407,6 +407,8 @@ FlowReport FlowRun::run() {
   };
   auto finished = [&] {
     if (steady()) return report_.stop_reason = FlowStopReason::steady, true;
+    if (options_.interrupted && options_.interrupted())
+      return report_.stop_reason = FlowStopReason::interrupted, true;
     if (report_.time >= options_.end_time) return report_.stop_reason = FlowStopReason::end_time, true;
     if (report_.accepted_steps >= options_.max_steps)
       return report_.stop_reason = FlowStopReason::max_steps, true;
@@ -514,6 +516,7 @@ const char* to_string(FlowStopReason reason) {
     case FlowStopReason::max_steps: return "max steps";
     case FlowStopReason::end_time: return "end time";
     case FlowStopReason::steady: return "steady";
+    case FlowStopReason::interrupted: return "interrupted";
   }
   return "?";
 }

@@ -3,12 +3,10 @@
 // the --compare meshes beside it, on one scale and one colour range) coloured by a per-vertex scalar.
 #include "command.h"
 
+#include <fairsurf/curvatures.h>
 #include <fairsurf/errors.h>
 #include <fairsurf/io.h>
-#include <fairsurf/operators.h>
-#include <fairsurf/quadratic_fit.h>
 #include <fairsurf/render.h>
-#include <fairsurf/topology.h>
 
 #include <algorithm>
 #include <array>
@@ -82,15 +80,9 @@ std::vector<View> parse_views(const RenderArgs& args) {
   return views;
 }
 
-/// H, K, k1, k2 from the quadratic fits (operators.h; same sign convention as `fairsurf curvature`).
+/// H, K, k1, k2 from the quadratic fits (curvatures.h; same sign convention as `fairsurf curvature`).
 Eigen::VectorXd computed_curvature(const Mesh& mesh, const std::string& name) {
-  Topology topo;
-  try {
-    topo = build_topology(mesh.F, mesh.num_vertices());
-  } catch (const InvalidArgument& e) {
-    throw InvalidMeshError(e.what());
-  }
-  SurfaceGeometry g = compute_geometry(fit_quadratics(mesh.V, mesh.F, topo), mesh.V);
+  SurfaceGeometry g = curvatures(mesh).geometry;
   return name == "H" ? g.H : name == "K" ? g.K : name == "k1" ? g.k1 : g.k2;
 }
 

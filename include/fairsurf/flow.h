@@ -169,6 +169,11 @@ struct FlowOptions {
   int refactor_interval = 1;
   LinearSolverOptions solver;
   FitOptions fit;
+  /// Asked before every trial step (when set): true ends the run with FlowStopReason::interrupted,
+  /// V at the last accepted state. Lets a caller stop from the observer (observers cannot return a
+  /// verdict), e.g. the Python bindings' progress callback; fill, fair and blend pass it on with the
+  /// rest of the flow options.
+  std::function<bool()> interrupted;
 };
 
 /// Why a trial step was rejected (none for accepted steps).
@@ -200,8 +205,9 @@ struct StepRecord {
   double solve_seconds = 0;
 };
 
-/// steady: max|V| under its tolerance, or (energy_descent) E stopped decreasing.
-enum class FlowStopReason { max_steps, end_time, steady };
+/// steady: max|V| under its tolerance, or (energy_descent) E stopped decreasing; interrupted:
+/// FlowOptions::interrupted returned true.
+enum class FlowStopReason { max_steps, end_time, steady, interrupted };
 const char* to_string(FlowStopReason reason);
 
 struct FlowReport {

@@ -1,0 +1,232 @@
+// smooth, fill_holes, fair, blend: the flows. Options are set as the CLI's flags set them
+// (apps/fairsurf/cmd_smooth.cpp, cmd_fill.cpp, region_fairing_args.cpp, cmd_blend.cpp), so that a
+// call and the matching command compute the same result; the GIL is released during the run.
+#include "arrays.h"
+#include "functions.h"
+#include "progress.h"
+#include "reports.h"
+
+#include <fairsurf/blend.h>
+#include <fairsurf/errors.h>
+#include <fairsurf/fair_region.h>
+#include <fairsurf/fill.h>
+#include <fairsurf/smooth.h>
+
+#include <pybind11/stl.h>
+
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fairsurf::python {
+namespace {
+
+using namespace pybind11::literals;
+using Functions = std::vector<std::string>;
+
+// The CLI's short names (`fairsurf smooth --flow`), then the library's.
+FlowKind flow_kind(const std::string& name) {
+  static const std::map<std::string, FlowKind> short_names{
+      {"sixth", FlowKind::sixth_order}, {"diffusion", FlowKind::surface_diffusion}, {"mean", FlowKind::mean_curvature}};
+  const auto found = short_names.find(name);
+  return found != short_names.end() ? found->second : parse_flow_kind(name);
+}
+
+struct SmoothArgs {
+  std::string flow;
+  Functions f;
+  std::optional<double> time, tau;
+  std::optional<int> steps;
+  bool steady;
+  double steady_tolerance;
+  int max_steps, fixed_rings;
+  std::optional<py::object> fixed;
+  std::string solver;
+};
+
+// As `fairsurf smooth`: the scan defaults to the default time, or `steps` steps, a steady state, or
+// `time`; timed runs start at τ = time / 64.
+SmoothOptions smooth_options(const SmoothArgs& a, const Mesh& mesh) {
+  SmoothOptions o = scan_smoothing_options(mesh, flow_kind(a.flow));
+  o.flow.functions = a.f;
+  o.flow.solver.kind = parse_linear_solver_kind(a.solver);
+  o.flow.max_steps = a.max_steps;
+  o.fixed_rings = a.fixed_rings;
+  if (a.fixed) o.fixed_vertices = to_indices(*a.fixed, "fixed");
+  if (a.steps || a.steady) {
+    o.flow.end_time = std::numeric_limits<double>::infinity();
+    o.flow.tau = FlowOptions{}.tau;
+    o.default_time = false;
+  }
+  if (a.steps) {
+    o.flow.max_steps = *a.steps;
+  } else if (a.steady) {
+    steady_smoothing(o.flow, a.steady_tolerance);
+  } else if (a.time) {
+    o.flow.end_time = *a.time;
+    o.flow.tau = *a.time / 64;
+  }
+  if (a.tau) o.flow.tau = *a.tau;
+  return o;
+}
+
+py::tuple smooth_binding(const py::handle& V, const py::handle& F, const SmoothArgs& args, py::object callback) {
+  if (int(args.steps.has_value()) + int(args.time.has_value()) + int(args.steady) > 1)
+    throw InvalidArgument("smooth: give at most one of steps, time and steady");
+  Mesh mesh = to_mesh(V, F);
+  SmoothOptions options = smooth_options(args, mesh);
+  Progress progress(std::move(callback));
+  progress.attach(options.flow);
+  FlowReport report;
+  {
+    py::gil_scoped_release release;
+    report = smooth(mesh, options, progress.flow_observer());
+  }
+  progress.rethrow();
+  py::dict d("flow"_a = to_string(options.flow.kind), "functions"_a = options.flow.functions);
+  for (const auto item : to_dict(report)) d[item.first] = item.second;
+  return py::make_tuple(to_numpy(std::move(mesh.V)), d);
+}
+
+py::tuple fill_binding(const py::handle& V, const py::handle& F, const std::string& continuity,
+                       const std::optional<py::object>& holes, const Functions& f, const std::string& method,
+                       int max_hole_edges, bool skip_largest, std::optional<int> max_steps, py::object callback) {
+  Mesh mesh = to_mesh(V, F);
+  FillOptions o;
+  o.fairing.continuity = parse_continuity(continuity);
+  o.fairing.method = parse_fair_method(method);
+  o.fairing.flow.functions = f;
+  if (max_steps) o.fairing.flow.max_steps = *max_steps;
+  if (holes) o.holes = to_indices(*holes, "holes");
+  o.max_hole_edges = max_hole_edges;
+  o.skip_largest = skip_largest;
+  Progress progress(std::move(callback));
+  progress.attach(o.fairing.flow);
+  FillReport report;
+  {
+    py::gil_scoped_release release;
+    report = fill_holes(mesh, o, progress.fill_observer());
+  }
+  progress.rethrow();
+  py::dict d("continuity"_a = continuity, "method"_a = method, "functions"_a = f);
+  for (const auto item : to_dict(report, progress.fill_steps())) d[item.first] = item.second;
+  return py::make_tuple(to_numpy(std::move(mesh.V)), to_numpy(std::move(mesh.F)), d);
+}
+
+// A boolean mask of length #V, or vertex indices.
+std::vector<int> region_vertices(const py::handle& region, int num_vertices) {
+  const py::array a = py::array::ensure(region);
+  if (!a || a.dtype().kind() != 'b') return to_indices(region, "region");
+  if (a.ndim() != 1 || a.shape(0) != num_vertices)
+    throw py::value_error("region: a boolean mask must have one entry per vertex (" + std::to_string(num_vertices) +
+                          "), got " + (a.ndim() == 1 ? std::to_string(a.shape(0)) : std::to_string(a.ndim()) + "-D"));
+  const auto mask = py::array_t<bool, py::array::c_style>::ensure(a);
+  std::vector<int> indices;
+  for (int i = 0; i < num_vertices; ++i)
+    if (mask.data()[i]) indices.push_back(i);
+  return indices;
+}
+
+struct FairingArgs {
+  std::string continuity;
+  Functions f;
+  std::string method;
+  int max_steps;
+};
+
+// As region_fairing_options in the CLI: continuity, method, f and the step limit on `base`.
+FairRegionOptions fairing_options(const FairingArgs& a, FairRegionOptions o) {
+  o.continuity = parse_continuity(a.continuity);
+  o.method = parse_fair_method(a.method);
+  o.flow.functions = a.f;
+  o.flow.max_steps = a.max_steps;
+  return o;
+}
+
+py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handle& region, const FairingArgs& args,
+                       const std::string& start, py::object callback) {
+  if (start != "harmonic" && start != "input")
+    throw InvalidArgument("fair: start must be 'harmonic' or 'input', got '" + start + "'");
+  Mesh mesh = to_mesh(V, F);
+  const std::vector<int> free = region_vertices(region, mesh.num_vertices());
+  FairRegionOptions options =
+      fairing_options(args, start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{});
+  Progress progress(std::move(callback));
+  progress.attach(options.flow);
+  FairRegionReport report;
+  {
+    py::gil_scoped_release release;
+    report = fair_region(mesh, free, options, progress.flow_observer());
+  }
+  progress.rethrow();
+  py::dict d("functions"_a = args.f);
+  for (const auto item : to_dict(report)) d[item.first] = item.second;
+  return py::make_tuple(to_numpy(std::move(mesh.V)), d);
+}
+
+py::tuple blend_binding(const py::handle& V, const py::handle& F, const std::optional<std::pair<int, int>>& loops,
+                        const FairingArgs& args, bool relax, py::object callback) {
+  Mesh mesh = to_mesh(V, F);
+  BlendOptions options;
+  options.fair = fairing_options(args, FairRegionOptions{});
+  options.patch.relax = relax;
+  if (loops) std::tie(options.loop_a, options.loop_b) = *loops;
+  Progress progress(std::move(callback));
+  progress.attach(options.fair.flow);
+  BlendReport report;
+  {
+    py::gil_scoped_release release;
+    report = blend_loops(mesh, options, progress.flow_observer());
+  }
+  progress.rethrow();
+  py::dict d("functions"_a = args.f);
+  for (const auto item : to_dict(report)) d[item.first] = item.second;
+  return py::make_tuple(to_numpy(std::move(mesh.V)), to_numpy(std::move(mesh.F)), d);
+}
+
+}  // namespace
+
+void register_flow_functions(py::module_& m) {
+  const Functions H{"H"};
+  const int fair_steps = FairRegionOptions::default_fair_flow_options().max_steps;
+  m.def(
+      "smooth",
+      [](const py::handle& V, const py::handle& F, std::string flow, Functions f, std::optional<double> time,
+         std::optional<int> steps, bool steady, double steady_tolerance, std::optional<double> tau, int max_steps,
+         std::optional<py::object> fixed, int fixed_rings, std::string solver, py::object progress) {
+        return smooth_binding(V, F,
+                              {flow, f, time, tau, steps, steady, steady_tolerance, max_steps, fixed_rings,
+                               fixed, solver},
+                              std::move(progress));
+      },
+      "V"_a, "F"_a, py::kw_only(), "flow"_a = "sixth", "f"_a = H, "time"_a = py::none(), "steps"_a = py::none(),
+      "steady"_a = false, "steady_tolerance"_a = 1.0, "tau"_a = py::none(), "max_steps"_a = 1000,
+      "fixed"_a = py::none(), "fixed_rings"_a = 3, "solver"_a = "mumps", "progress"_a = py::none(),
+      "Smooths the whole mesh with a geometric flow, as `fairsurf smooth`; returns (V, report).");
+  m.def("fill_holes", &fill_binding, "V"_a, "F"_a, py::kw_only(), "continuity"_a = "G2", "holes"_a = py::none(),
+        "f"_a = H, "method"_a = "flow", "max_hole_edges"_a = 0, "skip_largest"_a = false,
+        "max_steps"_a = py::none(), "progress"_a = py::none(),
+        "Fills boundary loops with G2 (G1, G0) boundary data, as `fairsurf fill`; returns (V, F, report).");
+  m.def(
+      "fair",
+      [](const py::handle& V, const py::handle& F, const py::handle& region, std::string continuity, Functions f,
+         std::string method, int max_steps, std::string start, py::object progress) {
+        return fair_binding(V, F, region, {continuity, f, method, max_steps}, start, std::move(progress));
+      },
+      "V"_a, "F"_a, "region"_a, py::kw_only(), "continuity"_a = "G2", "f"_a = H, "method"_a = "flow",
+      "max_steps"_a = fair_steps, "start"_a = "harmonic", "progress"_a = py::none(),
+      "Fairs a region (boolean mask or vertex indices), as `fairsurf fair`; returns (V, report).");
+  m.def(
+      "blend",
+      [](const py::handle& V, const py::handle& F, std::optional<std::pair<int, int>> loops, std::string continuity,
+         Functions f, std::string method, int max_steps, bool relax, py::object progress) {
+        return blend_binding(V, F, loops, {continuity, f, method, max_steps}, relax, std::move(progress));
+      },
+      "V"_a, "F"_a, py::kw_only(), "loops"_a = py::none(), "continuity"_a = "G2", "f"_a = H, "method"_a = "flow",
+      "max_steps"_a = fair_steps, "relax"_a = true, "progress"_a = py::none(),
+      "Joins two boundary loops by a fair tube, as `fairsurf blend`; returns (V, F, report).");
+}
+
+}  // namespace fairsurf::python

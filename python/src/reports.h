@@ -1,0 +1,32 @@
+// The library's reports as dicts with the fields, names and nesting of the CLI's JSON logs
+// (apps/fairsurf: flow_log.cpp, cmd_fill.cpp, region_fairing_args.cpp, cmd_blend.cpp, cmd_info.cpp),
+// without the fields that name files or the command (input, output, command, repair).
+// tests/python/test_reports.py compares the keys with the CLI's logs.
+#pragma once
+
+#include <fairsurf/blend.h>
+#include <fairsurf/fair_region.h>
+#include <fairsurf/fill.h>
+#include <fairsurf/flow.h>
+#include <fairsurf/mesh_summary.h>
+#include <fairsurf/validate.h>
+
+#include <pybind11/pybind11.h>
+
+#include <map>
+#include <vector>
+
+namespace fairsurf::python {
+
+namespace py = pybind11;
+
+py::dict to_dict(const StepRecord& record);
+py::dict to_dict(const FlowReport& report);
+py::dict to_dict(const ContinuityMeasure& measure);
+py::dict to_dict(const FairRegionReport& report);
+py::dict to_dict(const BlendReport& report);
+/// `steps` holds each jointly faired group's step dicts, by the group's first hole.
+py::dict to_dict(const FillReport& report, const std::map<int, py::list>& steps);
+py::dict to_dict(const MeshSummary& summary, const ValidationReport& validation);
+
+}  // namespace fairsurf::python

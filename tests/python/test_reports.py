@@ -1,0 +1,78 @@
+"""Report dicts have the CLI's JSON log fields, minus those naming files, the command or --repair."""
+
+import json
+import subprocess
+
+import numpy as np
+
+import fairsurf
+
+NOT_IN_DICTS = {"command", "input", "inputs", "output", "repair"}
+
+
+def keys(tree, prefix=""):
+    """Every key path of nested dicts (lists: their first element)."""
+    found = set()
+    if isinstance(tree, list):
+        return keys(tree[0], prefix) if tree and isinstance(tree[0], (dict, list)) else found
+    if isinstance(tree, dict):
+        for key, value in tree.items():
+            found.add(prefix + key)
+            found |= keys(value, prefix + key + ".")
+    return found
+
+
+def cli_log(cli, tmp_path, *args):
+    log = tmp_path / "log.json"
+    subprocess.run([str(cli), *map(str, args), "-o", str(tmp_path / "out.ply"), "--log", str(log), "--quiet"],
+                   check=True, capture_output=True)
+    tree = json.loads(log.read_text())
+    return {k: v for k, v in tree.items() if k not in NOT_IN_DICTS}
+
+
+def test_fill_report_fields(cli, tmp_path, data_dir, hand):
+    _, _, report = fairsurf.fill_holes(*hand)
+    assert keys(report) == keys(cli_log(cli, tmp_path, "fill", data_dir / "hand_lowres.obj"))
+
+
+def test_smooth_report_fields(cli, tmp_path, data_dir, hand):
+    _, report = fairsurf.smooth(*hand, steps=2)
+    assert keys(report) == keys(cli_log(cli, tmp_path, "smooth", data_dir / "hand_lowres.obj", "--steps", 2))
+
+
+def test_fair_report_fields(cli, tmp_path):
+    subprocess.run([str(cli), "scene", "sphere-cap", "-o", str(tmp_path / "cap.ply"), "--edge-length", "0.3"],
+                   check=True, capture_output=True)
+    V, F = fairsurf.read_mesh(tmp_path / "cap.ply")
+    cap = V[:, 2] == 0.5  # the scene flattens its free cap onto z = 0.5 (and a few vertices lie on it)
+    (tmp_path / "cap.txt").write_text(" ".join(map(str, cap.nonzero()[0])))
+    V_faired, report = fairsurf.fair(V, F, region=cap)
+    log = cli_log(cli, tmp_path, "fair", tmp_path / "cap.ply", "--region", tmp_path / "cap.txt")
+    assert keys(report) == keys(log)
+    assert report["free_vertices"] == log["free_vertices"] == cap.sum()
+    V_cli, _ = fairsurf.read_mesh(tmp_path / "out.ply")
+    assert np.abs(V_faired - V_cli).max() <= 1e-12
+
+
+def test_blend_report_fields_and_result(cli, tmp_path):
+    subprocess.run([str(cli), "scene", "fig4", "-o", str(tmp_path / "fig4.ply"), "--edge-length", "0.25"],
+                   check=True, capture_output=True)
+    V, F = fairsurf.read_mesh(tmp_path / "fig4.ply")
+    V2, F2, report = fairsurf.blend(V, F, max_steps=5)
+    log = cli_log(cli, tmp_path, "blend", tmp_path / "fig4.ply", "--max-steps", 5)
+    assert keys(report) == keys(log)
+    assert fairsurf.info(V2, F2)["boundary_loops"] == []  # two caps joined into a closed surface
+    V_cli, F_cli = fairsurf.read_mesh(tmp_path / "out.ply")
+    assert np.array_equal(F2, F_cli) and np.abs(V2 - V_cli).max() <= 1e-12
+
+
+def test_info_fields_and_values(cli, data_dir):
+    path = data_dir / "lagrange_prout.obj"  # findings of most kinds, with examples
+    out = subprocess.run([str(cli), "info", str(path), "--json"], check=True, capture_output=True, text=True).stdout
+    cli_info = json.loads(out)
+    for read_only in ("file", "polygons_triangulated", "triangles_added", "read_notes"):
+        del cli_info[read_only]
+    report = fairsurf.info(*fairsurf.read_mesh(path))
+    assert keys(report) == keys(cli_info)
+    as_json = json.loads(json.dumps(report))  # tuples become lists, as in the CLI's JSON
+    assert as_json == cli_info
