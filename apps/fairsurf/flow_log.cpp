@@ -2,6 +2,7 @@
 
 #include <fairsurf/io.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include <unistd.h>
@@ -53,6 +54,13 @@ nlohmann::json to_json(const FlowReport& report) {
           {"steps", steps}};
 }
 
+void warn_if_not_parabolic(const FlowReport& report) {
+  const WellPosedness& w = report.well_posedness;
+  if (w.violating_vertices > 0)
+    std::fprintf(stderr, "fairsurf: warning: the chosen f is not parabolic at %d of %d vertices of the flow's "
+                 "input (METHOD §4); the step control kept the flow stable\n", w.violating_vertices, w.vertices);
+}
+
 FlowCommandRun::FlowCommandRun(std::string command, std::string log_path, bool quiet, nlohmann::json log)
     : command_(std::move(command)),
       log_path_(std::move(log_path)),
@@ -65,6 +73,16 @@ FlowObserver FlowCommandRun::observer() {
     if (progress_)
       std::fprintf(stderr, "\r  step %d  t %.3g  tau %.3g  E %.4g  max|V| %.3g%s   ", r.step, r.time, r.tau,
                    r.energy, r.max_velocity, r.accepted ? "" : "  (rejected)");
+    if (!r.accepted) return;
+    largest_tau_ = std::max(largest_tau_, r.tau);
+    if (r.tau < kStagnantStepRatio * largest_tau_) {
+      char text[400];
+      std::snprintf(text, sizeof text, "%s: the flow stagnated at step %d: its steps shrank to tau = %.3g, below "
+                    "%g of its largest (%.3g), so it approaches no steady state and more steps would not "
+                    "help (docs/blend.md: regions without a steady state)", command_.c_str(), r.step, r.tau,
+                    kStagnantStepRatio, largest_tau_);
+      throw NumericalError(text);
+    }
   };
 }
 
