@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include "analytic_meshes.h"
 #include "test_support.h"
@@ -126,4 +127,42 @@ TEST_F(CliLabels, BlendSaysItDropsVertexProperties) {
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("so blend drops them all"), std::string::npos) << run.out;
   EXPECT_TRUE(read_mesh(file("b.ply")).vertex_scalars.empty());
+}
+
+// f = K is ill-posed where K <= 0 (METHOD §4): blend says so as smooth does.
+TEST_F(CliLabels, BlendWarnsWhenFIsNotParabolic) {
+  ASSERT_EQ(test::run_cli("scene fig3 -o " + path("fig3.ply") + " --edge-length 0.3").exit_code, 0);
+  const auto run =
+      test::run_cli("blend " + path("fig3.ply") + " -o " + path("b.ply") + " --f K --max-steps 5 --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("fairsurf: warning: the chosen f is not parabolic at "), std::string::npos) << run.out;
+}
+
+// The summary counts the filled holes by what each got; the harmonic method is linear C2, not G2.
+TEST_F(CliLabels, FillSummaryCountsHolesPerDeliveredContinuity) {
+  // A sphere without its cap z > 0.7: one hole wide enough for interior vertices.
+  const Mesh sphere = test::icosphere(3);
+  Mesh open;
+  open.V = sphere.V;
+  std::vector<int> kept;
+  for (int f = 0; f < sphere.num_faces(); ++f)
+    if (sphere.V(sphere.F(f, 0), 2) + sphere.V(sphere.F(f, 1), 2) + sphere.V(sphere.F(f, 2), 2) < 3 * 0.7)
+      kept.push_back(f);
+  open.F.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (std::size_t k = 0; k < kept.size(); ++k) open.F.row(static_cast<Eigen::Index>(k)) = sphere.F.row(kept[k]);
+  write_mesh(file("open.obj"), open);
+  const auto run = test::run_cli("fill " + path("open.obj") + " -o " + path("f.obj") + " --method harmonic --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("filled 1 of 1 selected holes of " + file("open.obj") + " (1 C2 (linear); 0 failed"),
+            std::string::npos)
+      << run.out;
+}
+
+// Without --continuity G1/G0 a fill runs no lower-order flow: hand_lowres's hole once got a flat G0
+// lid at 117° after G2 and G1 had failed, with exit 0.
+TEST_F(CliLabels, FillRunsNoLowerContinuityUnlessAsked) {
+  const auto run = test::run_cli("fill '" + test::data_path("hand_lowres.obj") + "' -o " + path("h.obj"));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_EQ(run.out.find(" G1"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find(" G0"), std::string::npos) << run.out;
 }
