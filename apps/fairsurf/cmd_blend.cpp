@@ -69,7 +69,8 @@ void run_blend(const BlendArgs& args) {
                      {{"command", "blend"},
                       {"inputs", args.inputs},
                       {"functions", f.functions},
-                      {"repair", repair_json(repaired)}});
+                      {"repair", repair_json(repaired)}},
+                     options.fair.flow.step_kind);
   const BlendReport report =
       run.run([&] { return blend_loops(mesh, options, run.observer()); }, mesh, args.output);
   if (report.fair.method == FairMethod::flow) warn_if_not_parabolic(report.fair.flow);

@@ -61,7 +61,8 @@ void run_fair(const FairArgs& args) {
                      {{"command", "fair"},
                       {"input", args.input},
                       {"functions", f.functions},
-                      {"repair", repair_json(repaired)}});
+                      {"repair", repair_json(repaired)}},
+                     options.flow.step_kind);
   const FairRegionReport report =
       run.run([&] { return fair_region(mesh, region, options, run.observer()); }, mesh, args.output);
   if (report.method == FairMethod::flow) warn_if_not_parabolic(report.flow);

@@ -92,7 +92,8 @@ void run_smooth(const SmoothArgs& args) {
                       {"input", args.input},
                       {"flow", to_string(options.flow.kind)},
                       {"functions", options.flow.functions},
-                      {"repair", repair_json(repaired)}});
+                      {"repair", repair_json(repaired)}},
+                     options.flow.step_kind);
   const FlowReport report = run.run([&] { return smooth(mesh, options, run.observer()); }, mesh, args.output);
   warn_if_not_parabolic(report);
   write_output([&] { write_mesh(args.output, mesh); });

@@ -2,7 +2,6 @@
 
 #include <fairsurf/io.h>
 
-#include <algorithm>
 #include <cstdio>
 
 #include <unistd.h>
@@ -61,10 +60,12 @@ void warn_if_not_parabolic(const FlowReport& report) {
                  "input (METHOD §4); the step control kept the flow stable\n", w.violating_vertices, w.vertices);
 }
 
-FlowCommandRun::FlowCommandRun(std::string command, std::string log_path, bool quiet, nlohmann::json log)
+FlowCommandRun::FlowCommandRun(std::string command, std::string log_path, bool quiet, nlohmann::json log,
+                               FlowStepKind step_kind)
     : command_(std::move(command)),
       log_path_(std::move(log_path)),
       progress_(!quiet && ::isatty(STDERR_FILENO)),
+      watch_stagnation_(step_kind == FlowStepKind::implicit_flow),
       log_(std::move(log)) {}
 
 FlowObserver FlowCommandRun::observer() {
@@ -73,14 +74,17 @@ FlowObserver FlowCommandRun::observer() {
     if (progress_)
       std::fprintf(stderr, "\r  step %d  t %.3g  tau %.3g  E %.4g  max|V| %.3g%s   ", r.step, r.time, r.tau,
                    r.energy, r.max_velocity, r.accepted ? "" : "  (rejected)");
-    if (!r.accepted) return;
-    largest_tau_ = std::max(largest_tau_, r.tau);
-    if (r.tau < kStagnantStepRatio * largest_tau_) {
+    if (!r.accepted || !watch_stagnation_) return;
+    recent_times_.push_back(r.time);
+    if (static_cast<int>(recent_times_.size()) <= kStagnationWindow) return;
+    const double advance = recent_times_.back() - recent_times_.front();
+    recent_times_.pop_front();
+    if (advance < kStagnantProgress * r.time) {
       char text[400];
-      std::snprintf(text, sizeof text, "%s: the flow stagnated at step %d: its steps shrank to tau = %.3g, below "
-                    "%g of its largest (%.3g), so it approaches no steady state and more steps would not "
-                    "help (docs/blend.md: regions without a steady state)", command_.c_str(), r.step, r.tau,
-                    kStagnantStepRatio, largest_tau_);
+      std::snprintf(text, sizeof text, "%s: the flow stagnated at step %d: its last %d steps advanced t by %.3g, "
+                    "under %g of t = %.3g (tau now %.3g), so it approaches no steady state and more steps would "
+                    "not help (docs/blend.md: regions with no steady state)", command_.c_str(), r.step,
+                    kStagnationWindow, advance, kStagnantProgress, r.time, r.tau);
       throw NumericalError(text);
     }
   };
