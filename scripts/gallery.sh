@@ -90,8 +90,8 @@ render_row() {   # [VIEW=iso] render_row OUT.png RANGE TITLE NAME...
   local png=$1 range=$2 title=$3; shift 3
   local first=$1; shift
   local more=()
-  for name in "$@"; do more+=("$work/$name.obj"); done
-  run render "$fs" render "$work/$first.obj" ${more[@]+--compare "${more[@]}"} -o "$png" \
+  for name in "$@"; do more+=(--compare "$work/$name.obj"); done
+  run render "$fs" render "$work/$first.obj" ${more[@]+"${more[@]}"} -o "$png" \
     --range "$range" --size "$size" --title "$title" --view "${VIEW:-iso}" --force
   picture "$png" "$title"
 }

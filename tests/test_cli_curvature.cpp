@@ -107,7 +107,7 @@ TEST_F(CliCurvature, RefusesToOverwriteTheInputWithoutForce) {
   write_mesh(in, test::icosphere(2, 1.0));
   const auto refused = run_cli("curvature '" + in.string() + "' -o '" + in.string() + "'");
   EXPECT_EQ(refused.exit_code, 5);
-  EXPECT_EQ(refused.out, "fairsurf: error: refusing to overwrite input '" + in.string() +
+  EXPECT_EQ(refused.out, "fairsurf: error: curvature: -o would overwrite the input '" + in.string() +
                              "' (pass --force to allow it)\n");
   EXPECT_FALSE(read_mesh(in).vertex_scalars.count("H"));
   const auto forced = run_cli("curvature '" + in.string() + "' -o '" + in.string() + "' --force");

@@ -101,14 +101,15 @@ TEST_F(CliRender, BadFlagsExitWithUsageError) {
   EXPECT_FALSE(fs::exists(path("x.png")));
 }
 
-TEST_F(CliRender, RefusesToOverwriteAnInputUnlessForced) {
+// render writes PNG only, so a mesh input can never be its output, not even with --force.
+TEST_F(CliRender, NeverWritesAnImageOverAMeshInput) {
   const std::string before = test::read_bytes(path("sphere.ply"));
   const std::string args = "render '" + path("sphere.ply") + "' --color height --size 64x48 -o '" + path("sphere.ply") + "'";
   const test::CliRun refused = test::run_cli(args);
-  EXPECT_EQ(refused.exit_code, 5) << refused.out;
+  EXPECT_EQ(refused.exit_code, 1) << refused.out;
+  EXPECT_NE(refused.out.find("render writes PNG images only"), std::string::npos) << refused.out;
+  EXPECT_EQ(test::run_cli(args + " --force").exit_code, 1);
   EXPECT_TRUE(test::read_bytes(path("sphere.ply")) == before);
-  EXPECT_EQ(test::run_cli(args + " --force").exit_code, 0);
-  EXPECT_EQ(test::read_bytes(path("sphere.ply")).substr(1, 3), "PNG");
 }
 
 TEST_F(CliRender, InputAndOutputFailures) {

@@ -86,8 +86,8 @@ TEST_F(CliFair, AFlowStoppedAtItsStepLimitKeepsTheLinearSolutionAndSaysSo) {
                               "' --region-property free --start flat --max-steps 2 --quiet --force");
   ASSERT_EQ(flat.exit_code, 0) << flat.out;
   EXPECT_NE(flat.out.find("2 steps, max steps, max|V| "), std::string::npos) << flat.out;
-  EXPECT_NE(flat.out.find("; NOT steady: the result is the flow's state after its last step"), std::string::npos)
-      << flat.out;
+  EXPECT_NE(flat.out.find("; NOT steady: "), std::string::npos) << flat.out;
+  EXPECT_NE(flat.out.find("; the result is the flow's state after its last step"), std::string::npos) << flat.out;
   const CliRun full = run_cli("fair '" + scene + "' -o '" + out + "' --region-property free --quiet --force");
   ASSERT_EQ(full.exit_code, 0) << full.out;
   EXPECT_EQ(full.out.find("NOT steady"), std::string::npos) << full.out;

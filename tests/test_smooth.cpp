@@ -130,7 +130,7 @@ TEST_F(CliSmooth, StepsStopsByStepCountNotTheDefaultTime) {
 TEST_F(CliSmooth, ExitCodes) {
   auto run = test::run_cli("smooth '" + noisy_ + "' -o '" + noisy_ + "'");
   EXPECT_EQ(run.exit_code, 5) << run.out;
-  EXPECT_NE(run.out.find("fairsurf: error: refusing to overwrite input"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("fairsurf: error: smooth: -o would overwrite the input"), std::string::npos) << run.out;
   run = test::run_cli("smooth '" + noisy_ + "' -o " + (dir_ / "x.ply").string() + " --flow curly");
   EXPECT_EQ(run.exit_code, 1) << run.out;
   EXPECT_NE(run.out.find("curly"), std::string::npos) << run.out;

@@ -56,20 +56,25 @@ nlohmann::json loop_json(const BlendLoop& loop) {
 void run_blend(const BlendArgs& args) {
   const RegionFairingArgs& f = args.fairing;
   const std::vector<std::filesystem::path> inputs(args.inputs.begin(), args.inputs.end());
-  check_output_path(args.output, inputs, f.force);
-  if (!f.log.empty()) check_output_path(f.log, inputs, f.force);
+  check_outputs("blend", {{"-o", args.output, OutputKind::mesh}, {"--log", f.log, OutputKind::json}}, inputs,
+                f.force);
   const BlendOptions options = blend_options(args);
   Mesh mesh = read_input(args.inputs[0]);
   if (args.inputs.size() == 2) mesh = concatenate_meshes(mesh, read_input(args.inputs[1]));
-  const auto repaired = repair_input(mesh, f.repair, args.inputs.size() == 2 ? "the two inputs" : args.inputs[0]);
+  const std::string input_name = args.inputs.size() == 2 ? "the two inputs" : args.inputs[0];
+  const bool had_vertex_data = has_vertex_data(mesh);
+  const auto repaired = repair_input(mesh, f.repair, input_name);
 
   FlowCommandRun run("blend", f.log, f.quiet,
                      {{"command", "blend"},
                       {"inputs", args.inputs},
                       {"functions", f.functions},
-                      {"repair", repair_json(repaired)}});
+                      {"repair", repair_json(repaired)}},
+                     options.fair.flow.step_kind);
   const BlendReport report =
       run.run([&] { return blend_loops(mesh, options, run.observer()); }, mesh, args.output);
+  if (report.fair.method == FairMethod::flow) warn_if_not_parabolic(report.fair.flow);
+  note_vertex_data_dropped(had_vertex_data, mesh, input_name, "blend");
   write_output([&] { write_mesh(args.output, mesh); });
   run.finish(nlohmann::json{{"loops_found", report.loops_found},
               {"automatic", report.automatic},

@@ -19,13 +19,17 @@ struct ConvertArgs {
 };
 
 void run_convert(const ConvertArgs& args) {
-  check_output_path(args.output, {args.input}, args.force);
+  check_outputs("convert", {{"-o", args.output, OutputKind::mesh}}, {args.input}, args.force);
   const Mesh mesh = read_input(args.input);
   WriteOptions options;
   options.binary = !args.ascii;
   write_output([&] { write_mesh(args.output, mesh, options); });
-  std::cout << "wrote " << args.output << ": " << mesh.num_vertices() << " vertices, " << mesh.num_faces()
-            << " triangles\n";
+  if (lower_extension(args.output) == ".stl")
+    std::cout << "wrote " << args.output << ": " << mesh.num_faces()
+              << " triangles (STL stores 3 corners per triangle, no shared vertices)\n";
+  else
+    std::cout << "wrote " << args.output << ": " << mesh.num_vertices() << " vertices, " << mesh.num_faces()
+              << " triangles\n";
 }
 
 void setup_convert(CLI::App& app) {

@@ -13,7 +13,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -135,13 +134,10 @@ void print_json(const CurvatureArgs& args, const Mesh& mesh, const QuadraticFits
 }
 
 void run_curvature(const CurvatureArgs& args) {
-  check_output_path(args.output, {args.input}, args.force);
-  std::string extension = std::filesystem::path(args.output).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension != ".ply")
+  if (lower_extension(args.output) != ".ply")
     throw CliError(kUsage, "curvature: the output must be a .ply file, the only format that carries "
                            "per-vertex H, K, k1, k2 (got '" + args.output + "')");
+  check_outputs("curvature", {{"-o", args.output, OutputKind::mesh}}, {args.input}, args.force);
   Mesh mesh = read_mesh(args.input);
   const auto repaired = repair_input(mesh, args.repair, args.input, args.json);
   if (mesh.num_faces() == 0) throw InvalidMeshError("curvature: '" + args.input + "' has no triangles");

@@ -48,11 +48,12 @@ std::string degrees(double radians) {
 
 void run_fair(const FairArgs& args) {
   const RegionFairingArgs& f = args.fairing;
-  check_output_path(args.output, {args.input}, f.force);
-  if (!f.log.empty()) check_output_path(f.log, {args.input}, f.force);
+  check_outputs("fair", {{"-o", args.output, OutputKind::mesh}, {"--log", f.log, OutputKind::json}},
+                {args.input, args.region_file}, f.force);
   const FairRegionOptions options = region_fairing_options(
       f, args.start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{});
   Mesh mesh = read_input(args.input);
+  drop_shape_properties(mesh, args.input);
   const auto repaired = repair_input(mesh, f.repair, args.input);
   const std::vector<int> region = selected_region(args, mesh);
 
@@ -60,9 +61,11 @@ void run_fair(const FairArgs& args) {
                      {{"command", "fair"},
                       {"input", args.input},
                       {"functions", f.functions},
-                      {"repair", repair_json(repaired)}});
+                      {"repair", repair_json(repaired)}},
+                     options.flow.step_kind);
   const FairRegionReport report =
       run.run([&] { return fair_region(mesh, region, options, run.observer()); }, mesh, args.output);
+  if (report.method == FairMethod::flow) warn_if_not_parabolic(report.flow);
   write_output([&] { write_mesh(args.output, mesh); });
   run.finish(to_json(report));
   std::printf("faired %s: %d free vertices, %s; border (%d vertices): max normal angle %s, max H jump "

@@ -1,8 +1,10 @@
 // fairsurf fill: fill the holes of a mesh with G2 (or G1/G0) boundary data (fill.h).
 #include <fairsurf/fill.h>
 #include <fairsurf/io.h>
+#include <fairsurf/topology.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -130,11 +132,61 @@ std::string open_surface_hint(const FillReport& report, const FillArgs& args) {
   return "; the largest loop looks like the outer border of an open surface: use --skip-largest";
 }
 
+using Triangle = std::array<int, 3>;
+
+Triangle sorted_corners(int a, int b, int c) {
+  Triangle t{a, b, c};
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+// The 3-edge loops that run around a lone triangle, by their corners: such a loop already bounds
+// its face, so its fill can only be that face again, reversed (a duplicate).
+std::map<Triangle, int> lone_triangle_loops(const Mesh& mesh) {
+  const auto loops = boundary_loops(mesh.F, build_topology(mesh.F, mesh.num_vertices()));
+  std::map<Triangle, int> loops_of_three;
+  for (int h = 0; h < static_cast<int>(loops.size()); ++h)
+    if (loops[h].size() == 3) loops_of_three[sorted_corners(loops[h][0], loops[h][1], loops[h][2])] = h;
+  std::map<Triangle, int> lone;
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const auto found = loops_of_three.find(sorted_corners(mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)));
+    if (found != loops_of_three.end()) lone.insert(*found);
+  }
+  return lone;
+}
+
+// Removes the duplicate faces that filling lone triangles' loops added, and reports those holes
+// as skipped with the reason instead of filled.
+void undo_duplicate_fills(Mesh& mesh, FillReport& report, const std::map<Triangle, int>& lone) {
+  if (lone.empty()) return;
+  std::vector<int> kept;
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const auto found = f < report.input_faces ? lone.end()
+                                              : lone.find(sorted_corners(mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)));
+    if (found == lone.end()) {
+      kept.push_back(f);
+      continue;
+    }
+    HoleReport& hole = report.holes[found->second];
+    HoleReport skipped;
+    skipped.index = hole.index;
+    skipped.border_edges = hole.border_edges;
+    skipped.reason = "the loop runs around a lone triangle: filling it would add that face again, reversed";
+    hole = skipped;
+    --report.filled;
+    ++report.skipped;
+  }
+  Faces faces(static_cast<Eigen::Index>(kept.size()), 3);
+  for (std::size_t k = 0; k < kept.size(); ++k) faces.row(static_cast<Eigen::Index>(k)) = mesh.F.row(kept[k]);
+  mesh.F = std::move(faces);
+}
+
 void run_fill(const FillArgs& args) {
-  check_output_path(args.output, {args.input}, args.force);
-  if (!args.log.empty()) check_output_path(args.log, {args.input}, args.force);
+  check_outputs("fill", {{"-o", args.output, OutputKind::mesh}, {"--log", args.log, OutputKind::json}},
+                {args.input}, args.force);
   const FillOptions options = fill_options(args);
   Mesh mesh = read_input(args.input);
+  drop_shape_properties(mesh, args.input);
   const auto repaired = repair_input(mesh, args.repair, args.input);
   const bool progress = !args.quiet && ::isatty(STDERR_FILENO);
   std::map<int, nlohmann::json> steps;  // by the first hole of each jointly faired group
@@ -144,8 +196,12 @@ void run_fill(const FillArgs& args) {
       std::fprintf(stderr, "\r  hole %d  step %d  tau %.3g  max|V| %.3g%s   ", holes.front(), r.step, r.tau,
                    r.max_velocity, r.accepted ? "" : "  (rejected)");
   };
-  const FillReport report = fill_holes(mesh, options, observer);
+  const auto lone = lone_triangle_loops(mesh);
+  const bool had_vertex_data = has_vertex_data(mesh);
+  FillReport report = fill_holes(mesh, options, observer);
   if (progress) std::fputc('\n', stderr);
+  undo_duplicate_fills(mesh, report, lone);
+  note_vertex_data_dropped(had_vertex_data, mesh, args.input, "fill");
 
   write_output([&] { write_mesh(args.output, mesh); });
   if (!args.log.empty()) {
@@ -194,15 +250,20 @@ void setup_fill(CLI::App& app) {
   cmd->add_option("--continuity", args->continuity,
                   "G2 (default: sixth-order flow, three fixed rings), G1 (Willmore) or G0 (mean curvature)");
   cmd->add_option("--f", args->functions,
-                  "Energy function(s) f(H,K) of the sixth-order flow, repeatable (default H)")
-      ->take_all();
-  cmd->add_option("--holes", args->holes, "Fill only these boundary loops (0-based, comma separated)")
-      ->delimiter(',');
-  cmd->add_option("--max-hole-edges", args->max_hole_edges, "Skip loops with more border edges than this");
+                  "Energy function(s) f(H,K) of the sixth-order flow, repeatable: one per --f (default H)")
+      ->allow_extra_args(false);
+  cmd->add_option("--holes", args->holes,
+                  "Fill only these boundary loops (0-based, comma separated, or one per --holes)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(whole_number_at_least(0));
+  cmd->add_option("--max-hole-edges", args->max_hole_edges, "Skip loops with more border edges than this (>= 1)")
+      ->check(whole_number_at_least(1));
   cmd->add_flag("--skip-largest", args->skip_largest,
                 "Leave the longest loop open (the outer border of an open surface)");
   cmd->add_option("--method", args->method, "flow (default: the flow, or its linear ∆^k floor where that re-predicts the held-out rings better) or harmonic (the re-evaluated cotangent ∆^k alone, labelled C2 (linear))");
-  cmd->add_option("--max-steps", args->max_steps, "Stop each hole's flow after this many accepted steps");
+  cmd->add_option("--max-steps", args->max_steps, "Stop each hole's flow after this many accepted steps (>= 1)")
+      ->check(whole_number_at_least(1));
   cmd->add_option("--log", args->log, "Write a per-hole JSON report with every flow step here");
   add_repair_flag(cmd, args->repair);
   cmd->add_flag("--quiet", args->quiet, "Only the summary line; no progress");

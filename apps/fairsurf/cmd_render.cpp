@@ -121,11 +121,14 @@ void run_render(const RenderArgs& args) {
 
   std::vector<std::string> paths{args.input};
   paths.insert(paths.end(), args.compare.begin(), args.compare.end());
-  check_output_path(args.output, {paths.begin(), paths.end()}, args.force);
+  check_outputs("render", {{"-o", args.output, OutputKind::png}}, {paths.begin(), paths.end()}, args.force);
 
   std::vector<Mesh> meshes;
   meshes.reserve(paths.size());
-  for (const std::string& path : paths) meshes.push_back(read_input(path));
+  for (const std::string& path : paths) {
+    meshes.push_back(read_input(path));
+    if (meshes.back().num_faces() == 0) throw InvalidMeshError("render: '" + path + "' has no faces: nothing to draw");
+  }
   std::vector<RenderMesh> items;
   for (std::size_t k = 0; k < meshes.size(); ++k)
     items.push_back({&meshes[k], quantity_of(meshes[k], args.color, paths[k]),
@@ -157,7 +160,9 @@ void setup_render(CLI::App& app) {
   cmd->add_option("--map", args->map, "Colour map: auto, diverging, sequential, none")->capture_default_str();
   cmd->add_flag("--wire", args->wire, "Overlay the visible edges");
   cmd->add_option("--title", args->title, "Title drawn above the image");
-  cmd->add_option("--compare", args->compare, "Further meshes drawn beside the first, same scale and colour range");
+  cmd->add_option("--compare", args->compare,
+                  "A further mesh drawn beside the first, same scale and colour range; one per --compare")
+      ->allow_extra_args(false);
   cmd->add_flag("--force", args->force, "Allow the output to overwrite an input");
   cmd->callback([args] { run_render(*args); });
 }

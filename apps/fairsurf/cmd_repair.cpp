@@ -54,7 +54,7 @@ nlohmann::json remaining_json(const ValidationReport& report) {
 }
 
 void run_repair(const RepairArgs& args) {
-  check_output_path(args.output, {args.input}, args.force);
+  check_outputs("repair", {{"-o", args.output, OutputKind::mesh}}, {args.input}, args.force);
   Mesh mesh = read_input(args.input);
   const RepairReport report = repair(mesh, repair_options(args));
   if (mesh.num_faces() == 0)
@@ -84,21 +84,25 @@ void setup_repair(CLI::App& app) {
   cmd->add_flag("--force", args->force, "Allow the output to overwrite the input");
   cmd->add_flag("--no-merge", args->no_merge, "Keep duplicate vertices apart");
   cmd->add_option("--merge-tolerance", args->options.merge_tolerance,
-                  "Also merge vertices closer than this times the mean edge length (default 0: exact only)");
+                  "Also merge vertices closer than this times the mean edge length (default 0: exact only)")
+      ->check(non_negative_number());
   cmd->add_flag("--no-stitch", args->no_stitch, "Do not stitch coincident borders");
   cmd->add_option("--stitch-tolerance", args->options.stitch_tolerance,
                   "Stitch border vertices closer than this times the mean edge length (default 0: "
-                  "coincident ones only)");
+                  "coincident ones only)")
+      ->check(non_negative_number());
   cmd->add_flag("--no-duplicate-faces", args->no_duplicate_faces, "Keep duplicate faces");
   cmd->add_flag("--no-degenerate", args->no_degenerate, "Keep zero-area and near-degenerate faces");
   cmd->add_option("--needle-tolerance", args->options.needle_tolerance,
                   "A degenerate face is a needle (collapsed) when its shortest edge is at most this "
-                  "times its longest (default 1e-6); otherwise a cap (flipped)");
+                  "times its longest (default 1e-6); otherwise a cap (flipped)")
+      ->check(non_negative_number());
   cmd->add_flag("--no-split-vertices", args->no_split_vertices, "Do not split non-manifold vertices");
   cmd->add_flag("--no-resolve-edges", args->no_resolve_edges, "Do not detach the extra faces of non-manifold edges");
   cmd->add_flag("--no-orient", args->no_orient, "Do not flip faces to a consistent orientation");
   cmd->add_option("--min-component-faces", args->options.min_component_faces,
-                  "Remove components with fewer faces (default 2: lone triangles; 0 keeps all)");
+                  "Remove components with fewer faces (default 2: lone triangles; 0 keeps all)")
+      ->check(whole_number_at_least(0));
   cmd->add_flag("--keep-unreferenced", args->keep_unreferenced, "Keep vertices no face uses");
   cmd->callback([args] { run_repair(*args); });
 }

@@ -17,10 +17,13 @@ struct SceneArgs {
 };
 
 void run_scene(const SceneArgs& args) {
-  check_output_path(args.output, {}, args.force);
+  check_outputs("scene", {{"-o", args.output, OutputKind::mesh}}, {}, args.force);
   SceneOptions options;
   options.edge_length = args.edge_length;
   const Scene scene = make_scene(args.name, options);
+  if (!scene.free_vertices.empty() && lower_extension(args.output) != ".ply")
+    throw CliError(kUsage, "scene: " + args.name + " marks its free region with the vertex property 'free', "
+                               "which only PLY carries; name the output .ply (got '" + args.output + "')");
   write_output([&] { write_mesh(args.output, scene.mesh); });
   std::printf("%s\n", scene.description.c_str());
   if (!scene.free_vertices.empty())
@@ -39,7 +42,8 @@ void setup_scene(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("scene", "Write one of the paper's scenes: fig3, fig4, fig7, fig8, sphere-cap");
   cmd->add_option("name", args->name, "fig3, fig4 (blend), fig7, fig8, sphere-cap (fair)")->required();
   cmd->add_option("-o,--output", args->output, "Output mesh (.ply keeps the 'free' property)")->required();
-  cmd->add_option("--edge-length", args->edge_length, "Target edge length in scene units (default 0.1)");
+  cmd->add_option("--edge-length", args->edge_length, "Target edge length in scene units (default 0.1)")
+      ->check(positive_number());
   cmd->add_flag("--force", args->force, "Accepted for symmetry with the other commands (a scene has no input)");
   cmd->callback([args] { run_scene(*args); });
 }

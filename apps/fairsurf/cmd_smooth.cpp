@@ -3,8 +3,8 @@
 #include <fairsurf/region_selection.h>
 #include <fairsurf/smooth.h>
 
+#include <algorithm>
 #include <cstdio>
-#include <iostream>
 #include <limits>
 #include <map>
 #include <memory>
@@ -56,16 +56,35 @@ SmoothOptions smooth_options(const SmoothArgs& args, const Mesh& mesh) {
     steady_smoothing(o.flow, args.steady_tolerance);
   } else if (args.time > 0) {
     o.flow.end_time = args.time;
-    o.flow.tau = args.time / 64;
+    o.flow.tau = std::min(args.time / 64, o.flow.tau_max);
   }
   if (args.tau > 0) o.flow.tau = args.tau;
   return o;
 }
 
+// The bounds that depend on two options, or on the flow's own limits: checked before any work.
+void check_times(const SmoothArgs& args) {
+  const double tau_max = FlowOptions{}.tau_max;
+  char text[300];
+  if (args.tau > tau_max) {
+    std::snprintf(text, sizeof text, "smooth: --tau: must be <= %g, the largest step the step control takes "
+                  "(unit-diagonal units; got %g)", tau_max, args.tau);
+    throw CliError(kUsage, text);
+  }
+  if (args.time > args.max_steps * tau_max) {
+    std::snprintf(text, sizeof text, "smooth: --time %g cannot be reached: --max-steps %d steps of at most "
+                  "%g each end by t = %g (unit-diagonal units)", args.time, args.max_steps, tau_max,
+                  args.max_steps * tau_max);
+    throw CliError(kUsage, text);
+  }
+}
+
 void run_smooth(const SmoothArgs& args) {
-  check_output_path(args.output, {args.input}, args.force);
-  if (!args.log.empty()) check_output_path(args.log, {args.input}, args.force);
+  check_times(args);
+  check_outputs("smooth", {{"-o", args.output, OutputKind::mesh}, {"--log", args.log, OutputKind::json}},
+                {args.input, args.fixed_file}, args.force);
   Mesh mesh = read_input(args.input);
+  drop_shape_properties(mesh, args.input);
   const auto repaired = repair_input(mesh, args.repair, args.input);
   const SmoothOptions options = smooth_options(args, mesh);
   FlowCommandRun run("smooth", args.log, args.quiet,
@@ -73,12 +92,10 @@ void run_smooth(const SmoothArgs& args) {
                       {"input", args.input},
                       {"flow", to_string(options.flow.kind)},
                       {"functions", options.flow.functions},
-                      {"repair", repair_json(repaired)}});
+                      {"repair", repair_json(repaired)}},
+                     options.flow.step_kind);
   const FlowReport report = run.run([&] { return smooth(mesh, options, run.observer()); }, mesh, args.output);
-  if (report.well_posedness.violating_vertices > 0)
-    std::cerr << "fairsurf: warning: the chosen f is not parabolic at "
-              << report.well_posedness.violating_vertices << " of " << report.well_posedness.vertices
-              << " vertices of the input (METHOD §4); the step control kept the flow stable\n";
+  warn_if_not_parabolic(report);
   write_output([&] { write_mesh(args.output, mesh); });
   run.finish(to_json(report));
   std::printf("smoothed %s: %s flow, %d steps (%d rejected) to t = %.3g (%s); energy %.4g -> %.4g; "
@@ -87,6 +104,10 @@ void run_smooth(const SmoothArgs& args) {
               report.rejected_steps, report.time, to_string(report.stop_reason), report.initial_energy,
               report.final_energy, report.initial_max_velocity, report.final_max_velocity,
               report.free_vertices, args.output.c_str());
+  if (args.steady && report.stop_reason != FlowStopReason::steady)
+    std::printf("NOT steady: --steady stopped at --max-steps %d before reaching its tolerance; the output is "
+                "the flow's state after its last step (raise --max-steps, or --steady-tolerance)\n",
+                args.max_steps);
 }
 
 void setup_smooth(CLI::App& app) {
@@ -99,22 +120,29 @@ void setup_smooth(CLI::App& app) {
                   "sixth (default), willmore, diffusion (surface diffusion) or mean (mean curvature)");
   cmd->add_option("--f", args->functions,
                   "Energy function(s) f(H,K) of the sixth-order flow, repeatable: H (default), K, H2, "
-                  "absHpH:p, 4absHH+2K, k1, k2 or a formula in H and K")
-      ->take_all();
-  cmd->add_option("--tau", args->tau, "Initial time step, unit-diagonal units (default: the run's time / 64)");
-  auto* steps = cmd->add_option("--steps", args->steps, "Run this many accepted steps");
+                  "absHpH:p, 4absHH+2K, k1, k2 or a formula in H and K; one per --f")
+      ->allow_extra_args(false);
+  cmd->add_option("--tau", args->tau,
+                  "Initial time step, unit-diagonal units, in (0, 1] (default: the run's time / 64)")
+      ->check(positive_number());
+  auto* steps = cmd->add_option("--steps", args->steps, "Run this many accepted steps (>= 1)")
+                    ->check(whole_number_at_least(1));
   auto* time = cmd->add_option("--time", args->time,
-                               "Run to this time, unit-diagonal units (default: (2h)^order, h the mean "
-                               "edge length)");
+                               "Run to this time > 0, unit-diagonal units (default: (2h)^order, h the "
+                               "mean edge length)")
+                   ->check(positive_number());
   auto* steady = cmd->add_flag("--steady", args->steady, "Run to a steady state: max|V| under the tolerance or, for the sixth-order flow, until the energy descent stops lowering E (docs/flow.md)");
   steps->excludes(time)->excludes(steady);
   time->excludes(steady);
   cmd->add_option("--steady-tolerance", args->steady_tolerance,
-                  "Steady-state tolerance on max|V| over free vertices, unit-diagonal units (default 1)");
-  cmd->add_option("--max-steps", args->max_steps, "Stop after this many accepted steps (default 1000)");
+                  "Steady-state tolerance on max|V| over free vertices, unit-diagonal units (default 1)")
+      ->check(positive_number());
+  cmd->add_option("--max-steps", args->max_steps, "Stop after this many accepted steps (default 1000)")
+      ->check(whole_number_at_least(1));
   cmd->add_option("--fixed", args->fixed_file, "File of 0-based vertex indices to hold fixed");
   cmd->add_option("--fixed-rings", args->fixed_rings,
-                  "Rings held fixed along the mesh border (default 3; 0 frees the border)");
+                  "Rings held fixed along the mesh border (default 3; 0 frees the border)")
+      ->check(whole_number_at_least(0));
   cmd->add_option("--solver", args->solver, "Linear solver: mumps (default, also 'lu'), umfpack or gmres");
   cmd->add_option("--log", args->log, "Write a per-step JSON log here");
   add_repair_flag(cmd, args->repair);

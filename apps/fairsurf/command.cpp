@@ -2,8 +2,16 @@
 
 #include <fairsurf/io.h>
 
-#include <iostream>
+#include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstring>
+#include <iostream>
+#include <optional>
 #include <system_error>
 
 namespace fairsurf::cli {
@@ -17,16 +25,132 @@ CommandRegistration::CommandRegistration(int order, CommandSetup setup) {
   command_registry().emplace_back(order, setup);
 }
 
-void check_output_path(const std::filesystem::path& output,
-                       const std::vector<std::filesystem::path>& inputs, bool force) {
-  if (force) return;
-  for (const auto& input : inputs) {
-    std::error_code ec;
-    const bool same = std::filesystem::equivalent(output, input, ec);
-    if (same && !ec)
-      throw CliError(kOutputError, "refusing to overwrite input '" + input.string() +
-                                       "' (pass --force to allow it)");
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+namespace {
+
+// One file under two names: the same target of links, or the same path once resolved (an output
+// usually does not exist yet, so `equivalent` alone cannot tell).
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+  std::error_code ec_equivalent, ec_a, ec_b;
+  if (std::filesystem::equivalent(a, b, ec_equivalent) && !ec_equivalent) return true;
+  const auto resolved_a = std::filesystem::weakly_canonical(std::filesystem::absolute(a), ec_a);
+  const auto resolved_b = std::filesystem::weakly_canonical(std::filesystem::absolute(b), ec_b);
+  return !ec_a && !ec_b && resolved_a == resolved_b;
+}
+
+void check_extension(const std::string& command, const Output& out) {
+  const std::string ext = lower_extension(out.path);
+  if (out.kind == OutputKind::mesh && ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
+    throw CliError(kUsage, command + ": " + out.option + " '" + out.path +
+                               "': unknown mesh extension (supported: .obj, .off, .ply, .stl)");
+  if (out.kind == OutputKind::png && ext != ".png")
+    throw CliError(kUsage, command + ": " + out.option + " '" + out.path +
+                               "': render writes PNG images only; name the output .png");
+}
+
+void check_directory(const std::string& command, const Output& out) {
+  const std::filesystem::path path(out.path);
+  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw CliError(kOutputError, command + ": " + out.option + " '" + out.path + "' is a directory");
+  if (!std::filesystem::is_directory(dir, ec))
+    throw CliError(kOutputError, command + ": " + out.option + " '" + out.path + "': the directory '" +
+                                     dir.string() + "' does not exist");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw CliError(kOutputError, command + ": " + out.option + " '" + out.path + "': cannot write in '" +
+                                     dir.string() + "' (" + std::strerror(errno) + ")");
+}
+
+}  // namespace
+
+void check_outputs(const std::string& command, const std::vector<Output>& outputs,
+                   const std::vector<std::filesystem::path>& inputs, bool force) {
+  std::vector<Output> given;
+  for (const Output& out : outputs)
+    if (!out.path.empty()) given.push_back(out);
+  for (const Output& out : given) check_extension(command, out);
+  for (std::size_t i = 0; i < given.size(); ++i)
+    for (std::size_t j = i + 1; j < given.size(); ++j)
+      if (same_file(given[i].path, given[j].path))
+        throw CliError(kUsage, command + ": " + given[i].option + " and " + given[j].option +
+                                   " name the same file '" + given[j].path + "'");
+  for (const Output& out : given)
+    for (const auto& input : inputs)
+      if (!force && !input.empty() && same_file(out.path, input))
+        throw CliError(kOutputError, command + ": " + out.option + " would overwrite the input '" +
+                                         input.string() + "' (pass --force to allow it)");
+  for (const Output& out : given) check_directory(command, out);
+}
+
+namespace {
+
+// The number in `text` if all of it is one, else nothing.
+std::optional<double> number_in(const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double value = std::stod(text, &used);
+    if (used == text.size()) return value;
+  } catch (const std::logic_error&) {
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+CLI::Validator whole_number_at_least(int lowest) {
+  const std::string range = "a whole number >= " + std::to_string(lowest);
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        const auto value = number_in(text);
+        if (value && *value == std::floor(*value) && *value >= lowest && *value <= INT_MAX) return "";
+        return "must be " + range + " (got '" + text + "')";
+      },
+      range);
+}
+
+CLI::Validator positive_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const auto value = number_in(text);
+        if (value && std::isfinite(*value) && *value > 0) return "";
+        return "must be a finite number > 0 (got '" + text + "')";
+      },
+      "a number > 0");
+}
+
+CLI::Validator non_negative_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const auto value = number_in(text);
+        if (value && std::isfinite(*value) && *value >= 0) return "";
+        return "must be a finite number >= 0 (got '" + text + "')";
+      },
+      "a number >= 0");
+}
+
+void drop_shape_properties(Mesh& mesh, const std::string& path) {
+  std::string dropped;
+  for (const std::string& name : kShapeProperties)
+    if (mesh.vertex_scalars.erase(name) > 0) dropped += (dropped.empty() ? "" : ", ") + name;
+  if (!dropped.empty())
+    std::cerr << "fairsurf: note: " << path << ": dropped the vertex properties " << dropped
+              << " (curvatures of the input's shape, stale once vertices move; run `fairsurf curvature` "
+                 "on the output)\n";
+}
+
+bool has_vertex_data(const Mesh& mesh) { return !mesh.vertex_scalars.empty() || mesh.vertex_colors.rows() > 0; }
+
+void note_vertex_data_dropped(bool input_had, const Mesh& output, const std::string& path,
+                              const std::string& command) {
+  if (input_had && !has_vertex_data(output))
+    std::cerr << "fairsurf: note: " << path << ": the output has no vertex properties or colours: the new "
+              << "vertices have none, so " << command << " drops them all\n";
 }
 
 Mesh read_input(const std::string& path) {

@@ -38,9 +38,37 @@ struct CommandRegistration {
 };
 std::vector<std::pair<int, CommandSetup>>& command_registry();
 
-/// Refuses to write `output` over any of `inputs` unless `force`; throws CliError(kOutputError).
-void check_output_path(const std::filesystem::path& output,
-                       const std::vector<std::filesystem::path>& inputs, bool force);
+/// The extension of `path` in lower case, with its dot (".ply"); formats are chosen by it.
+std::string lower_extension(const std::filesystem::path& path);
+
+/// What a command writes to a path: a mesh (.obj, .off, .ply, .stl), a PNG image, or a JSON log.
+enum class OutputKind { mesh, png, json };
+struct Output {
+  std::string option;  ///< the flag that named it, for messages ("-o", "--log")
+  std::string path;    ///< empty: not asked for, nothing to check
+  OutputKind kind;
+};
+
+/// Checks every output of a command before any work, so that no run is thrown away at the end:
+/// an extension the writer knows (exit 1), an existing writable directory and no directory at the
+/// path itself (exit 5), no two outputs on one file (exit 1), and none over one of `inputs` (every
+/// file the command reads: meshes, --fixed, --region; empty paths are skipped) unless `force` (exit 5).
+void check_outputs(const std::string& command, const std::vector<Output>& outputs,
+                   const std::vector<std::filesystem::path>& inputs, bool force);
+
+/// CLI11 checks for numeric options; each names the valid range and the value given, e.g.
+/// "--steps: must be a whole number >= 1 (got 0)".
+CLI::Validator whole_number_at_least(int lowest);
+CLI::Validator positive_number();      ///< finite and > 0
+CLI::Validator non_negative_number();  ///< finite and >= 0
+
+/// The per-vertex properties derived from the shape (`fairsurf curvature` writes them): stale as
+/// soon as a vertex moves.
+inline const std::vector<std::string> kShapeProperties{"H", "K", "k1", "k2", "fit_status"};
+
+/// For commands that move vertices: drops kShapeProperties from `mesh` and says so on standard error
+/// ("fairsurf: note: PATH: dropped ..."), so that no output carries curvatures of the old shape.
+void drop_shape_properties(Mesh& mesh, const std::string& path);
 
 /// Runs `write`, which writes one output file; an IoError from it becomes exit code 5 (an input
 /// error would be 2).
@@ -52,6 +80,14 @@ void write_output(Write&& write) {
     throw CliError(kOutputError, e.what());
   }
 }
+
+/// Whether `mesh` carries PLY vertex properties or colours.
+bool has_vertex_data(const Mesh& mesh);
+
+/// For fill and blend, which drop every vertex property and colour once they add vertices (the new
+/// ones have no values): says so on standard error when the input had some and the output has none.
+void note_vertex_data_dropped(bool input_had, const Mesh& output, const std::string& path,
+                              const std::string& command);
 
 /// Reads a mesh with read_mesh and prints each of the reader's notes to standard error as
 /// "fairsurf: note: PATH: ..." (fanned polygons, ignored lines, welded STL corners).

@@ -53,10 +53,19 @@ nlohmann::json to_json(const FlowReport& report) {
           {"steps", steps}};
 }
 
-FlowCommandRun::FlowCommandRun(std::string command, std::string log_path, bool quiet, nlohmann::json log)
+void warn_if_not_parabolic(const FlowReport& report) {
+  const WellPosedness& w = report.well_posedness;
+  if (w.violating_vertices > 0)
+    std::fprintf(stderr, "fairsurf: warning: the chosen f is not parabolic at %d of %d vertices of the flow's "
+                 "input (METHOD §4); the step control kept the flow stable\n", w.violating_vertices, w.vertices);
+}
+
+FlowCommandRun::FlowCommandRun(std::string command, std::string log_path, bool quiet, nlohmann::json log,
+                               FlowStepKind step_kind)
     : command_(std::move(command)),
       log_path_(std::move(log_path)),
       progress_(!quiet && ::isatty(STDERR_FILENO)),
+      watch_stagnation_(step_kind == FlowStepKind::implicit_flow),
       log_(std::move(log)) {}
 
 FlowObserver FlowCommandRun::observer() {
@@ -65,6 +74,19 @@ FlowObserver FlowCommandRun::observer() {
     if (progress_)
       std::fprintf(stderr, "\r  step %d  t %.3g  tau %.3g  E %.4g  max|V| %.3g%s   ", r.step, r.time, r.tau,
                    r.energy, r.max_velocity, r.accepted ? "" : "  (rejected)");
+    if (!r.accepted || !watch_stagnation_) return;
+    recent_times_.push_back(r.time);
+    if (static_cast<int>(recent_times_.size()) <= kStagnationWindow) return;
+    const double advance = recent_times_.back() - recent_times_.front();
+    recent_times_.pop_front();
+    if (advance < kStagnantProgress * r.time) {
+      char text[400];
+      std::snprintf(text, sizeof text, "%s: the flow stagnated at step %d: its last %d steps advanced t by %.3g, "
+                    "under %g of t = %.3g (tau now %.3g), so it approaches no steady state and more steps would "
+                    "not help (docs/blend.md: regions with no steady state)", command_.c_str(), r.step,
+                    kStagnationWindow, advance, kStagnantProgress, r.time, r.tau);
+      throw NumericalError(text);
+    }
   };
 }
 

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <deque>
 #include <string>
 
 namespace fairsurf::cli {
@@ -17,14 +18,28 @@ nlohmann::json to_json(const StepRecord& record);
 /// The whole run: every step plus the summary figures (stop reason, time, energies, well-posedness).
 nlohmann::json to_json(const FlowReport& report);
 
+/// Prints "fairsurf: warning: the chosen f is not parabolic at N of M vertices ..." when the
+/// sixth-order flow of `report` was ill-posed on part of its input (METHOD §4); nothing otherwise.
+void warn_if_not_parabolic(const FlowReport& report);
+
 /// One flow command's run: a progress line on a terminal (unless quiet), every trial step kept for
 /// the log, and the log written to `log_path` (none if empty) when the run ends either way.
 class FlowCommandRun {
  public:
-  FlowCommandRun(std::string command, std::string log_path, bool quiet, nlohmann::json log);
+  /// `step_kind`: the flow's (flow.h); only the time-stepped flow is watched for stagnation, since
+  /// the energy descent's τ is a trust region, not time, and it stops by itself once E stops falling.
+  FlowCommandRun(std::string command, std::string log_path, bool quiet, nlohmann::json log,
+                 FlowStepKind step_kind);
 
-  /// Records each step (and prints progress); pass it to the library call.
+  /// Records each step (and prints progress); pass it to the library call. It stops a stagnating
+  /// time-stepped flow, one whose last kStagnationWindow accepted steps advanced its time by less than
+  /// kStagnantProgress of the time reached, by throwing NumericalError: such a flow approaches no
+  /// steady state (blend on data/fairing_cross.off crawled on at tau ~ 1e-15 for thousands of steps),
+  /// so more steps only waste the run. A window, not one step, so that a run recovering from a
+  /// streak of rejections (tau quartered up to 12 times) is left alone.
   FlowObserver observer();
+  static constexpr int kStagnationWindow = 100;
+  static constexpr double kStagnantProgress = 1e-6;
 
   /// Runs `flow` and ends the progress line. On NumericalError nothing is lost: `mesh` (the last
   /// accepted state) is written to `output`, the log gets the error and the steps, and the command
@@ -50,9 +65,10 @@ class FlowCommandRun {
   void write_log() const;
 
   std::string command_, log_path_;
-  bool progress_;
+  bool progress_, watch_stagnation_;
   nlohmann::json log_;
   nlohmann::json steps_ = nlohmann::json::array();
+  std::deque<double> recent_times_;  ///< flow time after each of the last accepted steps
 };
 
 }  // namespace fairsurf::cli

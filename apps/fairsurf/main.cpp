@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <memory>
 #include <string>
 
 namespace {
@@ -14,22 +15,56 @@ int report(fairsurf::cli::ExitCode code, const char* what) {
   return code;
 }
 
+// A parse error as one line, naming the command whose arguments were wrong and where to look.
+int report_parse_error(const CLI::App& app, const CLI::ParseError& e) {
+  std::string where = "fairsurf";
+  for (const CLI::App* sub = &app; !sub->get_subcommands().empty();) {
+    sub = sub->get_subcommands().front();
+    where += " " + sub->get_name();
+  }
+  std::cerr << "fairsurf: error: " << (where == "fairsurf" ? "" : where.substr(9) + ": ") << e.what() << " (see `"
+            << where << " --help`)\n";
+  return fairsurf::cli::kUsage;
+}
+
+// `fairsurf help [COMMAND]`: the same text as `fairsurf [COMMAND] --help`.
+void add_help_command(CLI::App& app) {
+  auto command = std::make_shared<std::string>();
+  CLI::App* help = app.add_subcommand("help", "Print this help, or a command's: fairsurf help COMMAND");
+  help->add_option("command", *command, "The command to describe");
+  help->callback([&app, command] {
+    if (command->empty()) {
+      // app.help() would describe the selected subcommand, i.e. `help` itself.
+      std::cout << app.get_formatter()->make_help(&app, "fairsurf", CLI::AppFormatMode::Normal);
+      return;
+    }
+    for (const CLI::App* sub : app.get_subcommands({}))
+      if (sub->get_name() == *command) {
+        std::cout << sub->help();
+        return;
+      }
+    throw fairsurf::cli::CliError(fairsurf::cli::kUsage, "help: unknown command '" + *command + "'");
+  });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace fairsurf::cli;
   CLI::App app{"fairsurf: fair surfaces on triangle meshes with sixth-order geometric flows"};
   app.set_version_flag("--version", FAIRSURF_VERSION);
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);
   auto& registry = command_registry();
   std::sort(registry.begin(), registry.end());
   for (const auto& entry : registry) entry.second(app);
+  add_help_command(app);
 
   try {
     app.parse(argc, argv);
+    if (app.get_subcommands().empty()) throw CliError(kUsage, "a command is required (`fairsurf help` lists them)");
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);  // prints help, version or the parse error itself
-    return code == 0 ? kOk : kUsage;
+    if (e.get_exit_code() != 0) return report_parse_error(app, e);
+    return app.exit(e);  // --help, --version
   } catch (const CliError& e) {
     return report(e.code, e.what());
   } catch (const fairsurf::InvalidArgument& e) {

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 
+#include "command.h"
 #include "flow_log.h"
 
 namespace fairsurf::cli {
@@ -13,12 +14,13 @@ void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args) {
                   "curvature, one)");
   cmd->add_option("--f", args.functions,
                   "Energy function(s) f(H,K) of the sixth-order flow, repeatable: H (default), K, H2, "
-                  "absHpH:p, 4absHH+2K, k1, k2 or a formula in H and K")
-      ->take_all();
+                  "absHpH:p, 4absHH+2K, k1, k2 or a formula in H and K; one per --f")
+      ->allow_extra_args(false);
   cmd->add_option("--method", args.method,
                   "flow (default: the geometric flow to a steady state) or harmonic (cotangent "
                   "Laplacian^(k+1) x = 0, the linear baseline)");
-  cmd->add_option("--max-steps", args.max_steps, "Stop the flow after this many accepted steps (default 200)");
+  cmd->add_option("--max-steps", args.max_steps, "Stop the flow after this many accepted steps (default 200)")
+      ->check(whole_number_at_least(1));
   cmd->add_option("--log", args.log, "Write a JSON report with every flow step here");
   cmd->add_flag("--quiet", args.quiet, "No progress line");
   add_repair_flag(cmd, args.repair);
@@ -76,8 +78,11 @@ std::string summary(const FairRegionReport& r) {
   std::string out = text;
   if (!r.note.empty()) out += "; " + r.note;
   if (!r.linear && r.flow.stop_reason != FlowStopReason::steady)
-    out += "; NOT steady: the result is the flow's state after its last step (raise --max-steps, or see "
-           "docs/blend.md for regions with no steady state)";
+    out += "; NOT steady: " + unsettled_reason(r.flow) + "; the result is the flow's state after its last step" +
+           (r.flow.final_max_velocity > r.flow.initial_max_velocity
+                ? " (more steps drift further from a steady state: a lower --max-steps keeps an earlier "
+                  "state; docs/blend.md, regions with no steady state)"
+                : " (max|V| was still falling: raise --max-steps)");
   if (r.supported != r.requested)
     out += "; requested " + std::string(to_string(r.requested)) + " but the fixed rings support only " +
            std::string(to_string(r.supported));
