@@ -133,6 +133,23 @@ TEST_F(CliFair, BlendJoinsTwoMeshFilesAndReportsBothBorders) {
   EXPECT_NE(info.out.find("boundary loops: 0"), std::string::npos) << info.out;
 }
 
+// A blend whose time-stepped flow stops at --max-steps is continued by the energy descent and
+// ends steady, saying so; --no-descent-fallback keeps the time-stepped flow's state, NOT steady.
+TEST_F(CliFair, BlendContinuesAnUnsettledFlowWithTheDescentUnlessTold) {
+  const std::string scene = path("fig4.ply");
+  ASSERT_EQ(run_cli("scene fig4 --edge-length 0.15 -o '" + scene + "'").exit_code, 0);
+  const CliRun continued = run_cli("blend '" + scene + "' -o '" + path("a.ply") + "' --max-steps 20 --quiet");
+  ASSERT_EQ(continued.exit_code, 0) << continued.out;
+  EXPECT_NE(continued.out.find("the energy descent continued from its last state"), std::string::npos)
+      << continued.out;
+  EXPECT_EQ(continued.out.find("NOT steady"), std::string::npos) << continued.out;
+  const CliRun kept =
+      run_cli("blend '" + scene + "' -o '" + path("b.ply") + "' --max-steps 20 --no-descent-fallback --quiet");
+  ASSERT_EQ(kept.exit_code, 0) << kept.out;
+  EXPECT_EQ(kept.out.find("energy descent"), std::string::npos) << kept.out;
+  EXPECT_NE(kept.out.find("NOT steady"), std::string::npos) << kept.out;
+}
+
 TEST_F(CliFair, BlendErrors) {
   const std::string cross = test::data_path("fairing_cross.off");
   CliRun r = run_cli("blend '" + cross + "' -o '" + path("x.ply") + "' --loops 0,7");

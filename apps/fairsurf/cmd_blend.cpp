@@ -20,6 +20,7 @@ struct BlendArgs {
   std::string output;
   std::vector<int> loops;
   bool no_relax = false;
+  bool no_descent_fallback = false;
   RegionFairingArgs fairing;
 };
 
@@ -27,6 +28,7 @@ BlendOptions blend_options(const BlendArgs& args) {
   BlendOptions o;
   o.fair = region_fairing_options(args.fairing);
   o.patch.relax = !args.no_relax;
+  o.descent_fallback = !args.no_descent_fallback;
   if (!args.loops.empty()) {
     o.loop_a = args.loops[0];
     o.loop_b = args.loops[1];
@@ -115,6 +117,9 @@ void setup_blend(CLI::App& app) {
   cmd->add_flag("--no-relax", args->no_relax,
                 "Start the flow from the Hermite tube, without the G0 membrane (the membrane is dropped "
                 "by itself when it pinches off: no minimal surface spans loops far apart for their size)");
+  cmd->add_flag("--no-descent-fallback", args->no_descent_fallback,
+                "Keep the time-stepped flow's last state when it does not settle, instead of continuing "
+                "with the energy descent (BlendOptions::descent_fallback; docs/blend.md)");
   add_region_fairing_options(cmd, args->fairing);
   cmd->callback([args] { run_blend(*args); });
 }

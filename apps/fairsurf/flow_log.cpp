@@ -74,6 +74,7 @@ FlowObserver FlowCommandRun::observer() {
     if (progress_)
       std::fprintf(stderr, "\r  step %d  t %.3g  tau %.3g  E %.4g  max|V| %.3g%s   ", r.step, r.time, r.tau,
                    r.energy, r.max_velocity, r.accepted ? "" : "  (rejected)");
+    if (r.attempt == 1) recent_times_.clear();  // a new run (blend's descent continuation): its own window
     if (!r.accepted || !watch_stagnation_) return;
     recent_times_.push_back(r.time);
     if (static_cast<int>(recent_times_.size()) <= kStagnationWindow) return;
