@@ -78,8 +78,19 @@ std::string unfillable_border(int hole, const std::vector<std::vector<int>>& loo
 }
 
 // Marks the loops that are not to be filled as skipped, with the reason; returns the others.
-std::vector<int> select_holes(const std::vector<std::vector<int>>& loops, const FillOptions& options,
-                              std::vector<HoleReport>& reports) {
+// Whether the 3-edge loop `loop` runs around a face of the mesh (a lone triangle, or a triangle
+// whose three edges are all on the border): its fill could only be that face again, reversed.
+bool around_a_face(const Faces& F, const Topology& topo, const std::vector<int>& loop) {
+  if (loop.size() != 3) return false;
+  for (int f : topo.vertex_faces.row(loop[0])) {
+    const auto corner = [&](int v) { return F(f, 0) == v || F(f, 1) == v || F(f, 2) == v; };
+    if (corner(loop[1]) && corner(loop[2])) return true;
+  }
+  return false;
+}
+
+std::vector<int> select_holes(const Faces& F, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                              const FillOptions& options, std::vector<HoleReport>& reports) {
   const int n = static_cast<int>(loops.size());
   std::vector<char> selected(n, options.holes.empty() ? 1 : 0);
   for (int i : options.holes) {
@@ -103,6 +114,10 @@ std::vector<int> select_holes(const std::vector<std::vector<int>>& loops, const 
     if (options.max_hole_edges > 0 && reports[i].border_edges > options.max_hole_edges) {
       reports[i].reason = std::to_string(reports[i].border_edges) + " border edges, more than the maximum " +
                           std::to_string(options.max_hole_edges);
+      continue;
+    }
+    if (around_a_face(F, topo, loops[i])) {
+      reports[i].reason = "the loop runs around a lone triangle: filling it would add that face again, reversed";
       continue;
     }
     chosen.push_back(i);
@@ -309,7 +324,7 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
   }
 
   const std::vector<int> border_edges = border_edge_counts(topo);
-  const std::vector<int> chosen = select_holes(loops, options, report.holes);
+  const std::vector<int> chosen = select_holes(mesh.F, topo, loops, options, report.holes);
   std::vector<char> is_chosen(loops.size(), 0);
   for (int h : chosen) is_chosen[h] = 1;
   const auto pinches = holes_at_pinches(loops, border_edges);

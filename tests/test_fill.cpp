@@ -216,6 +216,26 @@ INSTANTIATE_TEST_SUITE_P(Data, RealHoles,
                                            RealCase{"airplane_holes.obj", Continuity::G2, 0},
                                            RealCase{"stanford_bunny_zipper.obj", Continuity::G1, 0}));
 
+// A loop of three edges around a face of the mesh (here a lone triangle) already bounds that face:
+// filling it could only add the face again, reversed. It is skipped with the reason, and the mesh
+// is left as it was.
+TEST(FillLoneTriangle, ALoopAroundAFaceIsSkippedNotFilledWithTheFaceReversed) {
+  Mesh m;
+  m.V.resize(3, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0;
+  m.F.resize(1, 3);
+  m.F << 0, 1, 2;
+  const Mesh input = m;
+  const FillReport r = fill_holes(m);
+  ASSERT_EQ(r.holes.size(), 1u);
+  EXPECT_EQ(r.holes[0].status, HoleStatus::skipped);
+  EXPECT_EQ(r.holes[0].reason, "the loop runs around a lone triangle: filling it would add that face again, reversed");
+  EXPECT_EQ(r.filled, 0);
+  EXPECT_EQ(r.skipped, 1);
+  EXPECT_EQ(m.F, input.F);
+  EXPECT_EQ(m.V, input.V);
+}
+
 // The shark's hole 3 runs round a corner of the part. Its lightest triangulation crossed the
 // corner's fan, and both the G2 and the C2 fairing of it crossed the mesh, so the hole fell to C1;
 // the triangulation now avoids the crossing and the hole gets at least the C2 floor.

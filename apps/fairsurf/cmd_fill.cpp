@@ -1,10 +1,8 @@
 // fairsurf fill: fill the holes of a mesh with G2 (or G1/G0) boundary data (fill.h).
 #include <fairsurf/fill.h>
 #include <fairsurf/io.h>
-#include <fairsurf/topology.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -132,55 +130,6 @@ std::string open_surface_hint(const FillReport& report, const FillArgs& args) {
   return "; the largest loop looks like the outer border of an open surface: use --skip-largest";
 }
 
-using Triangle = std::array<int, 3>;
-
-Triangle sorted_corners(int a, int b, int c) {
-  Triangle t{a, b, c};
-  std::sort(t.begin(), t.end());
-  return t;
-}
-
-// The 3-edge loops that run around a lone triangle, by their corners: such a loop already bounds
-// its face, so its fill can only be that face again, reversed (a duplicate).
-std::map<Triangle, int> lone_triangle_loops(const Mesh& mesh) {
-  const auto loops = boundary_loops(mesh.F, build_topology(mesh.F, mesh.num_vertices()));
-  std::map<Triangle, int> loops_of_three;
-  for (int h = 0; h < static_cast<int>(loops.size()); ++h)
-    if (loops[h].size() == 3) loops_of_three[sorted_corners(loops[h][0], loops[h][1], loops[h][2])] = h;
-  std::map<Triangle, int> lone;
-  for (int f = 0; f < mesh.num_faces(); ++f) {
-    const auto found = loops_of_three.find(sorted_corners(mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)));
-    if (found != loops_of_three.end()) lone.insert(*found);
-  }
-  return lone;
-}
-
-// Removes the duplicate faces that filling lone triangles' loops added, and reports those holes
-// as skipped with the reason instead of filled.
-void undo_duplicate_fills(Mesh& mesh, FillReport& report, const std::map<Triangle, int>& lone) {
-  if (lone.empty()) return;
-  std::vector<int> kept;
-  for (int f = 0; f < mesh.num_faces(); ++f) {
-    const auto found = f < report.input_faces ? lone.end()
-                                              : lone.find(sorted_corners(mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)));
-    if (found == lone.end()) {
-      kept.push_back(f);
-      continue;
-    }
-    HoleReport& hole = report.holes[found->second];
-    HoleReport skipped;
-    skipped.index = hole.index;
-    skipped.border_edges = hole.border_edges;
-    skipped.reason = "the loop runs around a lone triangle: filling it would add that face again, reversed";
-    hole = skipped;
-    --report.filled;
-    ++report.skipped;
-  }
-  Faces faces(static_cast<Eigen::Index>(kept.size()), 3);
-  for (std::size_t k = 0; k < kept.size(); ++k) faces.row(static_cast<Eigen::Index>(k)) = mesh.F.row(kept[k]);
-  mesh.F = std::move(faces);
-}
-
 void run_fill(const FillArgs& args) {
   check_outputs("fill", {{"-o", args.output, OutputKind::mesh}, {"--log", args.log, OutputKind::json}},
                 {args.input}, args.force);
@@ -196,11 +145,9 @@ void run_fill(const FillArgs& args) {
       std::fprintf(stderr, "\r  hole %d  step %d  tau %.3g  max|V| %.3g%s   ", holes.front(), r.step, r.tau,
                    r.max_velocity, r.accepted ? "" : "  (rejected)");
   };
-  const auto lone = lone_triangle_loops(mesh);
   const bool had_vertex_data = has_vertex_data(mesh);
   FillReport report = fill_holes(mesh, options, observer);
   if (progress) std::fputc('\n', stderr);
-  undo_duplicate_fills(mesh, report, lone);
   note_vertex_data_dropped(had_vertex_data, mesh, args.input, "fill");
 
   write_output([&] { write_mesh(args.output, mesh); });

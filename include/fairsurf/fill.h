@@ -50,7 +50,9 @@ struct FillOptions {
   FairRegionOptions fairing = default_fairing();
   PatchOptions patch;  ///< triangulation, refinement and membrane of the initial patch
 
-  // Which boundary loops are filled. A loop left out is reported as skipped with the reason.
+  // Which boundary loops are filled. A loop left out is reported as skipped with the reason. A
+  // 3-edge loop around a face of the mesh (a lone triangle) is always skipped: its only fill is
+  // that face again, reversed.
   std::vector<int> holes;   ///< loop indices (boundary_loops order); empty: every loop
   int max_hole_edges = 0;   ///< loops with more border edges are skipped; 0: no limit
   bool skip_largest = false;  ///< leave the longest loop (an open surface's outer border) open
