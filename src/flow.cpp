@@ -111,6 +111,7 @@ class FlowRun {
         solver_(make_linear_solver(step_solver_options(options))) {}
 
   FlowReport run();
+  const WellPosedness& well_posedness() const { return report_.well_posedness; }
 
  private:
   void initialize();
@@ -532,7 +533,16 @@ FlowReport run_flow(Vertices& V, const Faces& F, const Region& region, const Flo
                     const FlowObserver& observer) {
   check_options(options);
   FlowRun run(V, F, region, options, observer);
-  return run.run();
+  try {
+    return run.run();
+  } catch (const NumericalError& e) {
+    // The report, and with it the well-posedness, is lost with the throw; an f that is not
+    // parabolic on part of the input is a likely cause of the failure, so the error says so.
+    const WellPosedness& w = run.well_posedness();
+    if (w.violating_vertices == 0) throw;
+    throw NumericalError(std::string(e.what()) + " (f is not parabolic at " + std::to_string(w.violating_vertices) +
+                         " of " + std::to_string(w.vertices) + " vertices of the flow's input, METHOD §4)");
+  }
 }
 
 FlowReport run_flow(Vertices& V, const Faces& F, const FlowOptions& options,

@@ -238,7 +238,8 @@ using FlowObserver = std::function<void(const StepRecord&)>;
 /// Flows the free vertices of `region` (built on F's topology) under `options`, calling `observer`
 /// (if set) after each trial step. V (#V by 3) is replaced only by accepted states. Throws
 /// InvalidArgument for invalid options or a region/mesh mismatch, InvalidMeshError for non-finite
-/// input, NumericalError as the header says.
+/// input, NumericalError as the header says; when f is not parabolic on part of the input, that
+/// error's message ends with "(f is not parabolic at N of M vertices of the flow's input, METHOD §4)".
 FlowReport run_flow(Vertices& V, const Faces& F, const Region& region, const FlowOptions& options = {},
                     const FlowObserver& observer = {});
 
