@@ -26,6 +26,23 @@ namespace {
 using namespace pybind11::literals;
 using Functions = std::vector<std::string>;
 
+// Runs `call` (a flow on `mesh`) without the GIL. A NumericalError leaves `mesh` at the flow's last
+// accepted state (flow.h); it is raised as fairsurf.NumericalError carrying that state as its
+// attribute `V`, as the CLI writes it to its output, so nothing computed is lost.
+template <class Call>
+auto keeping_last_state(Mesh& mesh, Call call) {
+  try {
+    py::gil_scoped_release release;
+    return call();
+  } catch (const NumericalError& e) {  // the GIL is held again here
+    const py::object type = py::module_::import("fairsurf").attr("NumericalError");
+    py::object error = type(e.what());
+    error.attr("V") = to_numpy(std::move(mesh.V));
+    PyErr_SetObject(type.ptr(), error.ptr());
+    throw py::error_already_set();
+  }
+}
+
 // The CLI's short names (`fairsurf smooth --flow`), then the library's.
 FlowKind flow_kind(const std::string& name) {
   static const std::map<std::string, FlowKind> short_names{
@@ -79,11 +96,7 @@ py::tuple smooth_binding(const py::handle& V, const py::handle& F, const SmoothA
   SmoothOptions options = smooth_options(args, mesh);
   Progress progress(std::move(callback));
   progress.attach(options.flow);
-  FlowReport report;
-  {
-    py::gil_scoped_release release;
-    report = smooth(mesh, options, progress.flow_observer());
-  }
+  const FlowReport report = keeping_last_state(mesh, [&] { return smooth(mesh, options, progress.flow_observer()); });
   progress.rethrow();
   py::dict d("flow"_a = to_string(options.flow.kind), "functions"_a = options.flow.functions);
   for (const auto item : to_dict(report)) d[item.first] = item.second;
@@ -155,11 +168,8 @@ py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handl
       fairing_options(args, start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{});
   Progress progress(std::move(callback));
   progress.attach(options.flow);
-  FairRegionReport report;
-  {
-    py::gil_scoped_release release;
-    report = fair_region(mesh, free, options, progress.flow_observer());
-  }
+  const FairRegionReport report =
+      keeping_last_state(mesh, [&] { return fair_region(mesh, free, options, progress.flow_observer()); });
   progress.rethrow();
   py::dict d("functions"_a = args.f);
   for (const auto item : to_dict(report)) d[item.first] = item.second;
@@ -175,11 +185,8 @@ py::tuple blend_binding(const py::handle& V, const py::handle& F, const std::opt
   if (loops) std::tie(options.loop_a, options.loop_b) = *loops;
   Progress progress(std::move(callback));
   progress.attach(options.fair.flow);
-  BlendReport report;
-  {
-    py::gil_scoped_release release;
-    report = blend_loops(mesh, options, progress.flow_observer());
-  }
+  const BlendReport report =
+      keeping_last_state(mesh, [&] { return blend_loops(mesh, options, progress.flow_observer()); });
   progress.rethrow();
   py::dict d("functions"_a = args.f);
   for (const auto item : to_dict(report)) d[item.first] = item.second;

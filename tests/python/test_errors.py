@@ -93,3 +93,18 @@ def test_bad_options(hand):
     with pytest.raises(ValueError) as error:
         fairsurf.fair(V, F, region=np.ones(5, dtype=bool))
     assert str(error.value) == "region: a boolean mask must have one entry per vertex (810), got 5"
+
+
+def test_a_failed_flow_raises_numerical_error_with_the_last_accepted_state(data_dir):
+    # f = K is not parabolic on the torus: its flow fails after some accepted steps, as
+    # `fairsurf smooth data/torus.obj --f K --tau 0.9 --steps 30` does (exit 4, state written).
+    V, F = fairsurf.read_mesh(data_dir / "torus.obj")
+    with pytest.raises(fairsurf.NumericalError) as error:
+        fairsurf.smooth(V, F, f=["K"], tau=0.9, steps=30)
+    message = str(error.value)
+    assert "consecutive rejected steps" in message
+    assert "f is not parabolic at" in message
+    last = error.value.V
+    assert last.shape == V.shape and last.dtype == np.float64
+    assert np.all(np.isfinite(last))
+    assert np.abs(last - V).max() > 0  # accepted steps moved the mesh before the failure
