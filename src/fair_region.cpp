@@ -93,6 +93,7 @@ bool linear_predicts_better(const Submesh& sub, const FairRegionOptions& options
   report.held_out_flow_error = errors.flow;
   report.held_out_linear_error = errors.linear;
   if (!(errors.linear < errors.flow)) return false;
+  report.flow.well_posedness = errors.flow_well_posedness;  // the flow that was weighed, not run here
   char text[200];
   std::snprintf(text, sizeof text,
                 "the linear ∆%d solution re-predicts the %d rings around the region better than the %s "

@@ -269,6 +269,7 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
     r.steps = flowed ? fairing.flow.accepted_steps : 0;
     r.harmonic_solves = fairing.harmonic.iterations;
     r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();
+    if (fairing.method == FairMethod::flow) r.well_posedness = fairing.flow.well_posedness;
     if (!free.empty()) r.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, to_local(sub, free));
     if (free.empty()) {  // nothing was faired: the patch is the triangulation of the loop
       r.supported = Continuity::G0;

@@ -36,10 +36,12 @@ double mean_edge_length(const Vertices& V, const Topology& topo, const std::vect
 
 // Mean |(x − x0)·n0| over `held_out` after fairing the region `free` of a copy of `mesh`.
 double held_out_error(const Mesh& mesh, const std::vector<int>& free, const std::vector<int>& held_out,
-                      const Vertices& normal, double edge, const FairRegionOptions& fairing) {
+                      const Vertices& normal, double edge, const FairRegionOptions& fairing,
+                      WellPosedness* well_posedness = nullptr) {
   Mesh trial = mesh;
   try {
     const FairRegionReport report = fair_region(trial, free, fairing);
+    if (well_posedness) *well_posedness = report.flow.well_posedness;
     if (fairing.method == FairMethod::flow && report.linear) return std::numeric_limits<double>::infinity();
   } catch (const Error&) {
     return std::numeric_limits<double>::infinity();
@@ -65,7 +67,7 @@ HeldOutErrors held_out_errors(const Submesh& sub, int rings, const FairRegionOpt
   flow.held_out_rings = 0;
   FairRegionOptions linear = flow;
   linear.method = FairMethod::harmonic;
-  errors.flow = held_out_error(sub.mesh, free, held_out, normal, edge, flow);
+  errors.flow = held_out_error(sub.mesh, free, held_out, normal, edge, flow, &errors.flow_well_posedness);
   errors.linear = held_out_error(sub.mesh, free, held_out, normal, edge, linear);
   return errors;
 }

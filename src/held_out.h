@@ -13,6 +13,8 @@ namespace fairsurf::fair_detail {
 struct HeldOutErrors {
   double flow = 0;
   double linear = 0;
+  /// Of the flow's trial on the enlarged region (its report's; empty when the flow threw).
+  WellPosedness flow_well_posedness;
 };
 
 /// Frees the `rings` rings of fixed vertices around the free vertices in a copy of `sub`, fairs that

@@ -4,6 +4,7 @@
 #include <fairsurf/io.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <filesystem>
@@ -136,6 +137,23 @@ TEST_F(CliLabels, BlendWarnsWhenFIsNotParabolic) {
       test::run_cli("blend " + path("fig3.ply") + " -o " + path("b.ply") + " --f K --max-steps 5 --quiet");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("fairsurf: warning: the chosen f is not parabolic at "), std::string::npos) << run.out;
+}
+
+// fill warns per hole when f is not parabolic on the flow's input (f = K on blub's hole region),
+// whether the hole then got the flow or the linear floor, and its log says where.
+TEST_F(CliLabels, FillWarnsWhenFIsNotParabolic) {
+  const auto run = test::run_cli("fill " + test::data_path("blub_open.obj") + " -o " + path("f.ply") +
+                                 " --f K --log " + path("f.json") + " --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("fairsurf: warning: hole 0: the chosen f is not parabolic at "), std::string::npos)
+      << run.out;
+  std::ifstream in(file("f.json"));
+  const nlohmann::json log = nlohmann::json::parse(in);
+  const auto& w = log["holes"][0]["well_posedness"];
+  EXPECT_GT(w["violating_vertices"].get<int>(), 0);
+  EXPECT_LE(w["violating_vertices"].get<int>(), w["vertices"].get<int>());
+  const auto quiet_h = test::run_cli("fill " + test::data_path("blub_open.obj") + " -o " + path("h.ply") + " --quiet");
+  EXPECT_EQ(quiet_h.out.find("not parabolic"), std::string::npos) << quiet_h.out;
 }
 
 // The summary counts the filled holes by what each got; the harmonic method is linear C2, not G2.

@@ -110,6 +110,9 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"harmonic_solves", r.harmonic_solves},
                    {"seconds", r.seconds},
                    {"final_max_velocity", r.final_max_velocity},
+                   {"well_posedness",
+                    {{"vertices", r.well_posedness.vertices},
+                     {"violating_vertices", r.well_posedness.violating_vertices}}},
                    {"continuity",
                     {{"border_vertices", r.continuity.border_vertices},
                      {"max_normal_angle", r.continuity.max_normal_angle},
@@ -173,6 +176,7 @@ void run_fill(const FillArgs& args) {
     write_output([&] { write_file_atomically(args.log, log.dump(2) + "\n", "fill"); });
   }
 
+  for (const auto& r : report.holes) warn_if_not_parabolic(r.well_posedness, "hole " + std::to_string(r.index) + ": ");
   if (!args.quiet)
     for (const auto& r : report.holes) std::printf("%s\n", hole_line(r).c_str());
   const int selected = report.filled + report.failed;

@@ -53,12 +53,14 @@ nlohmann::json to_json(const FlowReport& report) {
           {"steps", steps}};
 }
 
-void warn_if_not_parabolic(const FlowReport& report) {
-  const WellPosedness& w = report.well_posedness;
+void warn_if_not_parabolic(const WellPosedness& w, const std::string& where) {
   if (w.violating_vertices > 0)
-    std::fprintf(stderr, "fairsurf: warning: the chosen f is not parabolic at %d of %d vertices of the flow's "
-                 "input (METHOD §4); the step control kept the flow stable\n", w.violating_vertices, w.vertices);
+    std::fprintf(stderr, "fairsurf: warning: %sthe chosen f is not parabolic at %d of %d vertices of the flow's "
+                 "input (METHOD §4); the step control kept the flow stable\n", where.c_str(), w.violating_vertices,
+                 w.vertices);
 }
+
+void warn_if_not_parabolic(const FlowReport& report) { warn_if_not_parabolic(report.well_posedness, ""); }
 
 FlowCommandRun::FlowCommandRun(std::string command, std::string log_path, bool quiet, nlohmann::json log,
                                FlowStepKind step_kind)

@@ -21,6 +21,8 @@ nlohmann::json to_json(const FlowReport& report);
 /// Prints "fairsurf: warning: the chosen f is not parabolic at N of M vertices ..." when the
 /// sixth-order flow of `report` was ill-posed on part of its input (METHOD §4); nothing otherwise.
 void warn_if_not_parabolic(const FlowReport& report);
+/// The same with a prefix naming where (fill: "hole N: ").
+void warn_if_not_parabolic(const WellPosedness& w, const std::string& where);
 
 /// One flow command's run: a progress line on a terminal (unless quiet), every trial step kept for
 /// the log, and the log written to `log_path` (none if empty) when the run ends either way.

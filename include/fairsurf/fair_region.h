@@ -82,7 +82,9 @@ struct FairRegionReport {
   Continuity supported = Continuity::G2;  ///< what the fixed rings allow; the flow used this one
   FairMethod method = FairMethod::flow;
   FlowKind flow_kind = FlowKind::sixth_order;  ///< when method == flow
-  FlowReport flow;                             ///< when method == flow
+  /// When method == flow. Where held_out_rings chose the linear solution, only its
+  /// well_posedness is set: that of the flow's trial on the enlarged region.
+  FlowReport flow;
   /// When method == harmonic, or of the flow's start (FairRegionOptions::harmonic_start_iterations)
   HarmonicReport harmonic;
   /// The result is the linear ∆^k solution (C(k−1), reported as such, not as G(k−1)): method

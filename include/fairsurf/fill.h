@@ -32,6 +32,7 @@
 // mesh (face_intersection.h). The other holes are still filled.
 #pragma once
 
+#include <fairsurf/energy_function.h>
 #include <fairsurf/fair_region.h>
 #include <fairsurf/mesh.h>
 #include <fairsurf/patch.h>
@@ -110,6 +111,9 @@ struct HoleReport {
   /// max|V| on the free vertices at the end, in the flow's units (flow.h; |EL| for the sixth-order
   /// flow); NaN for the harmonic method or a patch without interior vertices.
   double final_max_velocity = 0;
+  /// Where the sixth-order flow's f is not parabolic on its input (METHOD §4; energy_function.h):
+  /// of the flow that ran or was weighed (FairRegionReport::flow); zero when none reported it.
+  WellPosedness well_posedness;
   /// Normal angle and mean-curvature jump across this hole's border, measured after fairing
   /// (border_vertices == 0 when the patch has no interior vertex).
   ContinuityMeasure continuity;

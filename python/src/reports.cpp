@@ -76,7 +76,10 @@ py::dict hole_dict(const HoleReport& r) {
                   "held_out_flow_error"_a = r.held_out_flow_error,
                   "held_out_linear_error"_a = r.held_out_linear_error, "note"_a = r.note, "steps"_a = r.steps,
                   "harmonic_solves"_a = r.harmonic_solves, "seconds"_a = r.seconds,
-                  "final_max_velocity"_a = r.final_max_velocity, "continuity"_a = to_dict(r.continuity));
+                  "final_max_velocity"_a = r.final_max_velocity,
+                  "well_posedness"_a = py::dict("vertices"_a = r.well_posedness.vertices,
+                                                "violating_vertices"_a = r.well_posedness.violating_vertices),
+                  "continuity"_a = to_dict(r.continuity));
 }
 
 }  // namespace
