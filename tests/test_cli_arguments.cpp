@@ -4,13 +4,13 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include "analytic_meshes.h"
+#include "scratch_dir.h"
 #include "test_support.h"
 
 namespace fs = std::filesystem;
@@ -18,23 +18,17 @@ using namespace fairsurf;
 
 namespace {
 
-class CliArguments : public ::testing::Test {
+class CliArguments : public test::ScratchDirTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fairsurf_cli_arguments_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    ScratchDirTest::SetUp();
     write_mesh(path("sphere.obj"), test::icosphere(2));
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string path(const std::string& name) const { return file(name); }
   static std::string quoted(const std::string& s) { return "'" + s + "'"; }
   // The sphere as input; a missing file when the test must show that nothing was read.
   std::string sphere() const { return quoted(path("sphere.obj")); }
   std::string missing() const { return quoted(path("missing.obj")); }
-
-  fs::path dir_;
 };
 
 // The only line of an error run, checked to be exactly one prefixed line.

@@ -2,13 +2,13 @@
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "scratch_dir.h"
 #include "test_support.h"
 
 using namespace fairsurf;
@@ -19,18 +19,7 @@ namespace {
 using test::CliRun;
 using test::run_cli;
 
-class CliConvert : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("fairsurf_test_cli_convert_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
+class CliConvert : public test::ScratchDirTest {};
 
 }  // namespace
 

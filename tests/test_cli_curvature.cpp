@@ -5,11 +5,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <unistd.h>
 
 #include <filesystem>
 
 #include "analytic_meshes.h"
+#include "scratch_dir.h"
 #include "test_support.h"
 
 using namespace fairsurf;
@@ -18,23 +18,14 @@ using test::run_cli;
 
 namespace {
 
-class CliCurvature : public ::testing::Test {
+class CliCurvature : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("fairsurf_test_cli_curvature_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   // Writes an icosphere of radius R (outward normals) and returns its path.
   fs::path sphere(double R) {
     const fs::path path = dir_ / "sphere.off";
     write_mesh(path, test::icosphere(4, R));
     return path;
   }
-  fs::path dir_;
 };
 
 }  // namespace

@@ -3,12 +3,12 @@
 #include <fairsurf/io.h>
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 
 #include "analytic_meshes.h"
+#include "scratch_dir.h"
 #include "test_support.h"
 
 namespace fs = std::filesystem;
@@ -16,13 +16,10 @@ using namespace fairsurf;
 
 namespace {
 
-class CliExitCodes : public ::testing::Test {
+class CliExitCodes : public test::ScratchDirTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fairsurf_cli_exit_codes_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    ScratchDirTest::SetUp();
     write_mesh(file("sphere.ply"), test::icosphere(2));
     Mesh open = test::icosphere(2);
     open.F = open.F.bottomRows(open.F.rows() - 1).eval();
@@ -31,8 +28,6 @@ class CliExitCodes : public ::testing::Test {
     points.V = test::icosphere(1).V;
     write_mesh(file("points.ply"), points);
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string file(const std::string& name) const { return (dir_ / name).string(); }
   // Built with append: GCC 12 warns falsely (-Wrestrict) on "'" + a temporary string.
   std::string path(const std::string& name) const { return std::string("'").append(file(name)).append("'"); }
   static std::string data(const std::string& name) {
@@ -49,8 +44,6 @@ class CliExitCodes : public ::testing::Test {
       }
     }
   }
-
-  fs::path dir_;
 };
 
 }  // namespace

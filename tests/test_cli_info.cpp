@@ -2,7 +2,6 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -10,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "scratch_dir.h"
 #include "test_support.h"
 
 namespace fs = std::filesystem;
@@ -28,17 +28,8 @@ std::string slurp(const fs::path& path) {
   return ss.str();
 }
 
-// A fresh directory per test, removed at the end.
-class CliInfo : public ::testing::Test {
+class CliInfo : public fairsurf::test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("fairsurf_cli_info_" + std::string(info->name()) + "_" +
-                                        std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
 
   CliRun run(const std::string& args) const {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
@@ -56,8 +47,6 @@ class CliInfo : public ::testing::Test {
   static std::string quoted(const std::string& path) {
     return std::string("'").append(path).append("'");
   }
-
-  fs::path dir_;
 };
 
 }  // namespace

@@ -5,13 +5,13 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <vector>
 
 #include "analytic_meshes.h"
+#include "scratch_dir.h"
 #include "test_support.h"
 
 namespace fs = std::filesystem;
@@ -19,20 +19,10 @@ using namespace fairsurf;
 
 namespace {
 
-class CliLabels : public ::testing::Test {
+class CliLabels : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fairsurf_cli_labels_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   // Built with append: GCC 12 warns falsely (-Wrestrict) on "'" + a temporary string.
   std::string path(const std::string& name) const { return std::string("'").append(file(name)).append("'"); }
-  std::string file(const std::string& name) const { return (dir_ / name).string(); }
-
-  fs::path dir_;
 };
 
 }  // namespace

@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -10,6 +9,7 @@
 #include <iterator>
 
 #include "analytic_meshes.h"
+#include "scratch_dir.h"
 #include "test_support.h"
 
 using namespace fairsurf;
@@ -17,21 +17,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class CliRender : public ::testing::Test {
+class CliRender : public test::ScratchDirTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fairsurf_test_cli_render_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    ScratchDirTest::SetUp();
     // A sphere carrying one stored vertex property, "height" (its y coordinate).
     Mesh sphere = test::icosphere(2);
     sphere.vertex_scalars["height"] = sphere.V.col(1);
     write_mesh(path("sphere.ply"), sphere);
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
+  std::string path(const std::string& name) const { return file(name); }
 };
 
 }  // namespace

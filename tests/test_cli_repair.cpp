@@ -6,11 +6,11 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 
+#include "scratch_dir.h"
 #include "test_support.h"
 
 namespace fs = std::filesystem;
@@ -18,22 +18,11 @@ using namespace fairsurf;
 
 namespace {
 
-class CliRepair : public ::testing::Test {
+class CliRepair : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("fairsurf_cli_repair_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string path(const std::string& name) const { return file(name); }
   static std::string quoted(const std::string& s) { return "'" + s + "'"; }
   static std::string data(const std::string& name) { return quoted(test::data_path(name)); }
-
-  fs::path dir_;
 };
 
 TEST_F(CliRepair, RepairsTheHourglassAndSaysWhat) {

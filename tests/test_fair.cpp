@@ -5,11 +5,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 
+#include "scratch_dir.h"
 #include "test_support.h"
 
 using namespace fairsurf;
@@ -20,17 +20,9 @@ namespace {
 using test::CliRun;
 using test::run_cli;
 
-class CliFair : public ::testing::Test {
+class CliFair : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fairsurf_test_cli_fair_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
+  std::string path(const std::string& name) const { return file(name); }
 };
 
 }  // namespace

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>
-#include <unistd.h>
 
 #include <csignal>
 #include <cmath>
@@ -16,6 +15,7 @@
 #include <set>
 #include <sstream>
 
+#include "scratch_dir.h"
 #include "test_support.h"
 
 using namespace fairsurf;
@@ -23,17 +23,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh directory per test, removed afterwards.
-class IoTest : public ::testing::Test {
+class IoTest : public test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("fairsurf_test_io_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
 
   fs::path path(const std::string& name) const { return dir_ / name; }
 
@@ -48,8 +39,6 @@ class IoTest : public ::testing::Test {
     for (const auto& e : fs::directory_iterator(dir_)) names.insert(e.path().filename().string());
     return names;
   }
-
-  fs::path dir_;
 };
 
 // Expects `read_mesh(p)` to throw exactly `type` with exactly `message`.

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "flow_meshes.h"
+#include "scratch_dir.h"
 #include "test_support.h"
 
 using namespace fairsurf;
@@ -84,16 +85,13 @@ TEST(Smooth, RejectsInvalidMeshAndEmptyFreeSet) {
   EXPECT_THROW(smooth(m), InvalidMeshError);
 }
 
-class CliSmooth : public ::testing::Test {
+class CliSmooth : public test::ScratchDirTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fairsurf_cli_smooth_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-    noisy_ = (dir_ / "noisy.ply").string();
+    ScratchDirTest::SetUp();
+    noisy_ = file("noisy.ply");
     write_mesh(noisy_, test::noisy_sphere(3, 1.0, 0.05));
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
   std::string noisy_;
 };
 
