@@ -156,6 +156,23 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// The row of a ball case: which section, mesh, centre, radius and noise.
+Row ball_row(const char* section, const Loaded& m, int centre, int radius_h, bool noisy) {
+  Row row;
+  row.section = section;
+  row.mesh = m.name;
+  row.centre = centre;
+  row.radius_h = radius_h;
+  row.noise = noisy ? kNoise : 0.0;
+  return row;
+}
+
+// FOLD: the border angle above 1.5 times the uncut mesh's reading at the same place, or 5°.
+void flag_fold(Row& row) {
+  if (!std::isnan(row.angle) && !std::isnan(row.uncut_angle))
+    row.fold = row.angle > std::max(1.5 * row.uncut_angle, 5.0 / kDegrees);
+}
+
 void add_note(Row& row, const std::string& note) { row.note += (row.note.empty() ? "" : "; ") + note; }
 
 void add_csv(const Row& r) {
@@ -323,12 +340,7 @@ void print_fill_row(const Row& r) {
 }
 
 Row fill_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) {
-  Row row;
-  row.section = "fill";
-  row.mesh = m.name;
-  row.centre = centre;
-  row.radius_h = radius_h;
-  row.noise = noisy ? kNoise : 0.0;
+  Row row = ball_row("fill", m, centre, radius_h, noisy);
   const Eigen::Vector3d c = m.mesh.V.row(centre).transpose();
   bench::CutMesh cut = bench::cut_ball(m.mesh, c, radius_h * m.h);
   if (noisy) bench::add_normal_noise(cut.mesh, kNoise * m.h, noise_seed(centre, radius_h));
@@ -343,8 +355,7 @@ Row fill_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) 
     row.uncut_angle = measure_continuity(m.mesh.V, m.mesh.F, cut.dropped).max_normal_angle;
   if (row.cgal_ok && row.ours.count > 0 && row.status == "ok" && row.cgal.mean > 0)
     row.ratio = row.ours.mean / row.cgal.mean;
-  if (!std::isnan(row.angle) && !std::isnan(row.uncut_angle))
-    row.fold = row.angle > std::max(1.5 * row.uncut_angle, 5.0 / kDegrees);
+  flag_fold(row);
   return row;
 }
 
@@ -446,12 +457,7 @@ void fair_cgal([[maybe_unused]] const Mesh& mesh, [[maybe_unused]] const std::ve
 }
 
 Row fair_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) {
-  Row row;
-  row.section = "fair";
-  row.mesh = m.name;
-  row.centre = centre;
-  row.radius_h = radius_h;
-  row.noise = noisy ? kNoise : 0.0;
+  Row row = ball_row("fair", m, centre, radius_h, noisy);
   const Eigen::Vector3d c = m.mesh.V.row(centre).transpose();
   Mesh mesh = m.mesh;
   if (noisy) bench::add_normal_noise(mesh, kNoise * m.h, noise_seed(centre, radius_h));
@@ -464,7 +470,7 @@ Row fair_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) 
   if (cgal) fair_cgal(mesh, region, distance, m.h, row);
   row.uncut_angle = measure_continuity(m.mesh.V, m.mesh.F, region).max_normal_angle;
   if (row.has_cgal && row.cgal_ok && row.ours.count > 0 && row.cgal.mean > 0) row.ratio = row.ours.mean / row.cgal.mean;
-  if (!std::isnan(row.angle)) row.fold = row.angle > std::max(1.5 * row.uncut_angle, 5.0 / kDegrees);
+  flag_fold(row);
   return row;
 }
 
@@ -563,7 +569,7 @@ Row blend_case(const Loaded& m, const Slab& slab) {
     row.angle = std::max(report.a.border.max_normal_angle, report.b.border.max_normal_angle);
     row.uncut_angle = std::max(report.a.reference.max_normal_angle, report.b.reference.max_normal_angle);
     row.ours = bench::distance_stats(distance, mesh.V, rows_from(cut.mesh.num_vertices(), mesh.num_vertices()), m.h);
-    row.fold = row.angle > std::max(1.5 * row.uncut_angle, 5.0 / kDegrees);
+    flag_fold(row);
   } catch (const std::exception& e) {
     row.seconds = seconds_since(start);
     row.status = "error";
