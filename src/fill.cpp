@@ -77,7 +77,6 @@ std::string unfillable_border(int hole, const std::vector<std::vector<int>>& loo
   return "";
 }
 
-// Marks the loops that are not to be filled as skipped, with the reason; returns the others.
 // Whether the 3-edge loop `loop` runs around a face of the mesh (a lone triangle, or a triangle
 // whose three edges are all on the border): its fill could only be that face again, reversed.
 bool around_a_face(const Faces& F, const Topology& topo, const std::vector<int>& loop) {
@@ -89,6 +88,7 @@ bool around_a_face(const Faces& F, const Topology& topo, const std::vector<int>&
   return false;
 }
 
+// Marks the loops that are not to be filled as skipped, with the reason; returns the others.
 std::vector<int> select_holes(const Faces& F, const Topology& topo, const std::vector<std::vector<int>>& loops,
                               const FillOptions& options, std::vector<HoleReport>& reports) {
   const int n = static_cast<int>(loops.size());
