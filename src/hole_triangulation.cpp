@@ -7,10 +7,12 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -58,11 +60,11 @@ std::uint64_t edge_key(int from, int to) {
 }
 
 // The vertex set of a triangle, independent of its orientation and corner order.
-std::uint64_t triangle_key(int a, int b, int c) {
-  int v[3] = {a, b, c};
-  std::sort(v, v + 3);
-  return (static_cast<std::uint64_t>(v[0]) << 42) ^ (static_cast<std::uint64_t>(v[1]) << 21) ^
-         static_cast<std::uint64_t>(v[2]);
+using TriangleKey = std::array<int, 3>;
+TriangleKey triangle_key(int a, int b, int c) {
+  TriangleKey v{a, b, c};
+  std::sort(v.begin(), v.end());
+  return v;
 }
 
 // Weight of `faces` against the outside faces whose normals are given per directed edge a→b
@@ -95,7 +97,7 @@ std::uint64_t undirected_key(int u, int v) { return edge_key(std::min(u, v), std
 // Diagonals and triangles of earlier rounds that crossed the mesh (triangulate_hole).
 struct Forbidden {
   std::unordered_set<std::uint64_t> diagonals;  // undirected_key
-  std::unordered_set<std::uint64_t> triangles;  // triangle_key
+  std::set<TriangleKey> triangles;
 };
 
 // Forbids what makes new face `q` of `all` cross face `o`: each edge of q through o's interior
