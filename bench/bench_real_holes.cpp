@@ -125,7 +125,7 @@ std::uint64_t noise_seed(int centre, int radius_h) {
 
 std::string csv_text =
     "section,mesh,centre,radius_h,noise_h,size,status,continuity,steps,seconds,mean_h,max_h,"
-    "baseline_mean_h,baseline_max_h,cgal_mean_h,cgal_max_h,ratio,angle_deg,uncut_angle_deg,fold,disks,note\n";
+    "baseline_mean_h,baseline_max_h,cgal_mean_h,cgal_max_h,ratio,angle_deg,uncut_angle_deg,fold,cgal_angle_deg,cgal_fold,disks,note\n";
 
 std::string csv_escape(std::string s) {
   std::replace(s.begin(), s.end(), '"', '\'');
@@ -144,9 +144,9 @@ struct Row {
   int centre = 0, radius_h = 0, steps = 0;
   double noise = 0, seconds = 0;
   DistanceStats ours, baseline, cgal;
-  bool has_baseline = false, has_cgal = false, cgal_ok = false, fold = false;
+  bool has_baseline = false, has_cgal = false, cgal_ok = false, fold = false, cgal_fold = false;
   bool disks = true;  // fill: the cut removed disks only (a ball across a thin tube removes an annulus)
-  double ratio = NAN, angle = NAN, uncut_angle = NAN;
+  double ratio = NAN, angle = NAN, uncut_angle = NAN, cgal_angle = NAN;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -167,10 +167,16 @@ Row ball_row(const char* section, const Loaded& m, int centre, int radius_h, boo
   return row;
 }
 
-// FOLD: the border angle above 1.5 times the uncut mesh's reading at the same place, or 5°.
+// FOLD: a border angle above 1.5 times the uncut mesh's reading at the same place, or 5°. CGAL's
+// result is judged by the same rule, so that a fold count can be told from the measure's own floor
+// (one-sided fits on a coarse or noisy ring read tens of degrees on any smooth fill).
+bool folds(double angle, double uncut_angle) {
+  return !std::isnan(angle) && !std::isnan(uncut_angle) && angle > std::max(1.5 * uncut_angle, 5.0 / kDegrees);
+}
+
 void flag_fold(Row& row) {
-  if (!std::isnan(row.angle) && !std::isnan(row.uncut_angle))
-    row.fold = row.angle > std::max(1.5 * row.uncut_angle, 5.0 / kDegrees);
+  row.fold = folds(row.angle, row.uncut_angle);
+  row.cgal_fold = folds(row.cgal_angle, row.uncut_angle);
 }
 
 void add_note(Row& row, const std::string& note) { row.note += (row.note.empty() ? "" : "; ") + note; }
@@ -184,7 +190,12 @@ void add_csv(const Row& r) {
               stat(r.has_baseline, r.baseline.mean) + "," + stat(r.has_baseline, r.baseline.max) + "," +
               stat(r.has_cgal, r.cgal.mean) + "," + stat(r.has_cgal, r.cgal.max) + "," + number(r.ratio) + "," +
               number(r.angle * kDegrees) + "," + number(r.uncut_angle * kDegrees) + "," + (r.fold ? "1" : "0") +
-              "," + (r.disks ? "1" : "0") + "," + csv_escape(r.note) + "\n";
+              "," + number(r.cgal_angle * kDegrees) + "," + (r.cgal_fold ? "1" : "0") + "," + (r.disks ? "1" : "0") + "," + csv_escape(r.note) + "\n";
+}
+
+// CGAL's border angle in degrees, starred when it folds by the same rule.
+std::string cgal_angle_text(const Row& r) {
+  return number(r.cgal_angle * kDegrees, "%.1f") + (r.cgal_fold ? "*" : "");
 }
 
 std::string pair_text(bool has, const DistanceStats& s) {
@@ -196,7 +207,7 @@ std::string pair_text(bool has, const DistanceStats& s) {
 
 // Counts over the rows of one section and noise level.
 struct Tally {
-  int rows = 0, failed = 0, g2 = 0, folds = 0, compared = 0, below = 0, steady = 0, excluded = 0;
+  int rows = 0, failed = 0, g2 = 0, folds = 0, cgal_folds = 0, compared = 0, below = 0, steady = 0, excluded = 0;
   double log_ratio = 0, worst = 0;
   void ratio(double r) {
     if (std::isnan(r) || r <= 0) return;
@@ -317,25 +328,29 @@ void fill_cgal([[maybe_unused]] const Mesh& cut, [[maybe_unused]] const bench::S
   const bench::CgalResult result = bench::cgal_fill_holes(cut);
   row.has_cgal = !result.moved.empty();
   row.cgal_ok = result.ok && row.has_cgal;
-  if (row.has_cgal) row.cgal = bench::distance_stats(distance, result.V, result.moved, h);
+  if (row.has_cgal) {
+    row.cgal = bench::distance_stats(distance, result.V, result.moved, h);
+    const ContinuityMeasure border = measure_continuity(result.V, result.F, result.moved);
+    if (border.border_vertices > 0) row.cgal_angle = border.max_normal_angle;
+  }
   if (!result.ok) add_note(row, "CGAL: " + std::string(result.error));
   else if (!row.has_cgal) add_note(row, "CGAL: no new vertex");
 #endif
 }
 
 void print_fill_header() {
-  std::printf("%-9s %6s %2s %5s %-8s %-12s %5s %6s | %-12s | %-12s | %-12s | %5s | %6s %6s %s\n", "mesh", "centre",
+  std::printf("%-9s %6s %2s %5s %-8s %-12s %5s %6s | %-12s | %-12s | %-12s | %5s | %6s %6s %-4s %6s\n", "mesh", "centre",
               "r", "noise", "edges", "continuity", "steps", "sec", "fairsurf h", "D3 h", "CGAL C2 h", "ratio",
-              "angle", "uncut", "fold");
+              "angle", "uncut", "fold", "cgal");
 }
 
 void print_fill_row(const Row& r) {
-  std::printf("%-9s %6d %2d %5.2f %-8s %-12s %5d %6.2f | %s | %s | %s | %5s | %6s %6s %s%s%s\n", r.mesh.c_str(),
+  std::printf("%-9s %6d %2d %5.2f %-8s %-12s %5d %6.2f | %s | %s | %s | %5s | %6s %6s %-4s %6s%s%s\n", r.mesh.c_str(),
               r.centre, r.radius_h, r.noise, r.size.c_str(), r.continuity.c_str(), r.steps, r.seconds,
               pair_text(r.ours.count > 0, r.ours).c_str(), pair_text(r.has_baseline, r.baseline).c_str(),
               pair_text(r.has_cgal, r.cgal).c_str(), number(r.ratio, "%.2f").c_str(),
               number(r.angle * kDegrees, "%.1f").c_str(), number(r.uncut_angle * kDegrees, "%.1f").c_str(),
-              r.fold ? "FOLD" : "-", r.note.empty() ? "" : "  ", r.note.c_str());
+              r.fold ? "FOLD" : "-", cgal_angle_text(r).c_str(), r.note.empty() ? "" : "  ", r.note.c_str());
   std::fflush(stdout);
 }
 
@@ -361,8 +376,9 @@ Row fill_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) 
 
 std::string fill_summary(const char* label, const Tally& t) {
   char text[512];
-  std::snprintf(text, sizeof text, "%s holes: %d (+%d not disks), failed %d, G2 %d (%s), folds %d, %s, %s", label,
-                t.rows, t.excluded, t.failed, t.g2, percent(t.g2, t.rows).c_str(), t.folds, t.ratio_text().c_str(),
+  std::snprintf(text, sizeof text, "%s holes: %d (+%d not disks), failed %d, G2 %d (%s), folds %d (CGAL %d), %s, %s",
+                label, t.rows, t.excluded, t.failed, t.g2, percent(t.g2, t.rows).c_str(), t.folds, t.cgal_folds,
+                t.ratio_text().c_str(),
                 t.baseline_text().c_str());
   return text;
 }
@@ -397,6 +413,7 @@ std::string fill_section(const std::vector<Loaded>& meshes, bool cgal) {
           t.failed += row.status != "ok";
           t.g2 += row.status == "ok" && all_g2(row.continuity);
           t.folds += row.fold;
+          t.cgal_folds += row.cgal_fold;
           t.ratio(row.ratio);
           if (row.status == "ok") t.baseline(row);
         }
@@ -451,7 +468,11 @@ void fair_cgal([[maybe_unused]] const Mesh& mesh, [[maybe_unused]] const std::ve
   const bench::CgalResult result = bench::cgal_fair(mesh, region);
   row.has_cgal = result.V.rows() > 0;
   row.cgal_ok = result.ok;
-  if (row.has_cgal) row.cgal = bench::distance_stats(distance, result.V, result.moved, h);
+  if (row.has_cgal) {
+    row.cgal = bench::distance_stats(distance, result.V, result.moved, h);
+    const ContinuityMeasure border = measure_continuity(result.V, mesh.F, region);
+    if (border.border_vertices > 0) row.cgal_angle = border.max_normal_angle;
+  }
   if (!result.ok) add_note(row, "CGAL: " + std::string(result.error));
 #endif
 }
@@ -475,18 +496,18 @@ Row fair_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) 
 }
 
 void print_fair_header() {
-  std::printf("%-9s %6s %2s %5s %5s %-10s %-4s %5s %6s | %-12s | %-12s | %-12s | %5s | %6s %6s %s\n", "mesh",
+  std::printf("%-9s %6s %2s %5s %5s %-10s %-4s %5s %6s | %-12s | %-12s | %-12s | %5s | %6s %6s %-4s %6s\n", "mesh",
               "centre", "r", "noise", "free", "exit", "cont", "steps", "sec", "fairsurf h", "D3 h", "CGAL C2 h",
-              "ratio", "angle", "uncut", "fold");
+              "ratio", "angle", "uncut", "fold", "cgal");
 }
 
 void print_fair_row(const Row& r) {
-  std::printf("%-9s %6d %2d %5.2f %5s %-10s %-4s %5d %6.2f | %s | %s | %s | %5s | %6s %6s %s%s%s\n", r.mesh.c_str(),
+  std::printf("%-9s %6d %2d %5.2f %5s %-10s %-4s %5d %6.2f | %s | %s | %s | %5s | %6s %6s %-4s %6s%s%s\n", r.mesh.c_str(),
               r.centre, r.radius_h, r.noise, r.size.c_str(), r.status.c_str(), r.continuity.c_str(), r.steps,
               r.seconds, pair_text(r.ours.count > 0, r.ours).c_str(), pair_text(r.has_baseline, r.baseline).c_str(),
               pair_text(r.has_cgal, r.cgal).c_str(), number(r.ratio, "%.2f").c_str(),
               number(r.angle * kDegrees, "%.1f").c_str(), number(r.uncut_angle * kDegrees, "%.1f").c_str(),
-              r.fold ? "FOLD" : "-", r.note.empty() ? "" : "  ", r.note.c_str());
+              r.fold ? "FOLD" : "-", cgal_angle_text(r).c_str(), r.note.empty() ? "" : "  ", r.note.c_str());
   std::fflush(stdout);
 }
 
@@ -506,12 +527,13 @@ std::string fair_section(const std::vector<Loaded>& meshes, bool cgal) {
           errors += row.status == "error";
           tally.steady += row.status == "steady" && row.continuity == "G2";
           tally.folds += row.fold;
+          tally.cgal_folds += row.cgal_fold;
           tally.ratio(row.ratio);
           tally.baseline(row);
         }
   char text[512];
-  std::snprintf(text, sizeof text, "fair: %d steady G2 of %d, errors %d, folds %d, %s, %s", tally.steady, tally.rows,
-                errors, tally.folds, tally.ratio_text().c_str(), tally.baseline_text().c_str());
+  std::snprintf(text, sizeof text, "fair: %d steady G2 of %d, errors %d, folds %d (CGAL %d), %s, %s", tally.steady,
+                tally.rows, errors, tally.folds, tally.cgal_folds, tally.ratio_text().c_str(), tally.baseline_text().c_str());
   std::printf("fair summary: %s\n\n", text);
   return text;
 }

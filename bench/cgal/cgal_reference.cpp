@@ -39,6 +39,18 @@ Vertices positions(const SurfaceMesh& sm) {
   return V;
 }
 
+// Surface_mesh keeps no removed elements here (nothing is deleted), so face and vertex indices are
+// dense and the input's come first.
+Faces triangles(const SurfaceMesh& sm) {
+  Faces F(static_cast<int>(sm.number_of_faces()), 3);
+  for (SurfaceMesh::Face_index f : sm.faces()) {
+    int corner = 0;
+    for (SurfaceMesh::Vertex_index v : CGAL::vertices_around_face(sm.halfedge(f), sm))
+      F(static_cast<int>(f), corner++) = static_cast<int>(v);
+  }
+  return F;
+}
+
 // One border halfedge per hole.
 std::vector<SurfaceMesh::Halfedge_index> border_loops(const SurfaceMesh& sm) {
   std::vector<SurfaceMesh::Halfedge_index> loops;
@@ -83,6 +95,7 @@ CgalResult cgal_fill_holes(const Mesh& mesh) {
       for (SurfaceMesh::Vertex_index v : added) result.moved.push_back(static_cast<int>(v));
     }
     result.V = positions(sm);
+    result.F = triangles(sm);
   });
 }
 

@@ -13,6 +13,7 @@ struct CgalResult {
   bool ok = false;             ///< every call reported success
   std::string error;           ///< why not (a failed fairing, an exception, a face CGAL refused)
   Vertices V;                  ///< positions after the call (the input's vertices first)
+  Faces F;                     ///< triangles after the call (fill: the input's and the patches')
   std::vector<int> moved;      ///< new vertices (fill) or the faired vertices (fair)
   double seconds = 0;
 };
