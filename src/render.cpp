@@ -134,9 +134,64 @@ double shared_scale(const std::vector<RenderMesh>& meshes, const RenderOptions& 
   return std::isfinite(scale) ? scale : 1.0;
 }
 
-}  // namespace
+/// The faces of a mesh with every vertex inside a ball, over the vertices they use (in order).
+struct Cropped {
+  Mesh mesh;
+  Eigen::VectorXd values;
+};
 
-ColorRange resolve_color_range(const std::vector<RenderMesh>& meshes, const RenderOptions& options) {
+Cropped crop_to_ball(const RenderMesh& item, const RenderFocus& focus) {
+  const Mesh& mesh = *item.mesh;
+  const double r2 = focus.radius * focus.radius;
+  std::vector<int> inside(mesh.num_vertices(), -1);  // new index, or -1 outside the ball
+  int kept_vertices = 0;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if ((mesh.V.row(v).transpose() - focus.centre).squaredNorm() <= r2) inside[v] = kept_vertices++;
+  std::vector<int> faces;
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    if (inside[mesh.F(f, 0)] >= 0 && inside[mesh.F(f, 1)] >= 0 && inside[mesh.F(f, 2)] >= 0) faces.push_back(f);
+  Cropped out;
+  out.mesh.V.resize(kept_vertices, 3);
+  if (item.values.size() > 0) out.values.resize(kept_vertices);
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    if (inside[v] < 0) continue;
+    out.mesh.V.row(inside[v]) = mesh.V.row(v);
+    if (item.values.size() > 0) out.values[inside[v]] = item.values[v];
+  }
+  out.mesh.F.resize(static_cast<int>(faces.size()), 3);
+  for (int i = 0; i < static_cast<int>(faces.size()); ++i)
+    for (int k = 0; k < 3; ++k) out.mesh.F(i, k) = inside[mesh.F(faces[i], k)];
+  return out;
+}
+
+/// The meshes cut to the focus ball (`storage` owns them; the result points into it).
+std::vector<RenderMesh> focused(const std::vector<RenderMesh>& meshes, const RenderFocus& focus,
+                                std::vector<Cropped>& storage) {
+  if (!focus.centre.allFinite() || !std::isfinite(focus.radius) || !(focus.radius > 0))
+    throw InvalidArgument("render: the focus ball needs a finite centre and a finite radius > 0");
+  storage.clear();
+  storage.reserve(meshes.size());
+  std::vector<RenderMesh> out;
+  bool any_face = false;
+  for (const RenderMesh& item : meshes) {
+    storage.push_back(crop_to_ball(item, focus));
+    any_face = any_face || storage.back().mesh.num_faces() > 0;
+    out.push_back({&storage.back().mesh, storage.back().values, item.label});
+  }
+  if (!any_face) throw InvalidArgument("render: no face has all three vertices inside the focus ball");
+  return out;
+}
+
+/// With a focus: the scale at which the ball's diameter fits the smallest panel.
+double focus_scale(const RenderFocus& focus, const Layout& l) {
+  double scale = std::numeric_limits<double>::infinity();
+  for (int r = 0; r < l.rows; ++r)
+    for (int c = 0; c < l.cols; ++c) scale = std::min(scale, kFill * std::min(l.panel_w(c), l.draw_h(r)) / (2 * focus.radius));
+  return scale;
+}
+
+/// The given range, or the automatic one over every finite value of `meshes`.
+ColorRange color_range_of(const std::vector<RenderMesh>& meshes, const RenderOptions& options) {
   if (options.range) {
     const ColorRange r = *options.range;
     if (!(std::isfinite(r.lo) && std::isfinite(r.hi) && r.lo < r.hi))
@@ -162,11 +217,23 @@ ColorRange resolve_color_range(const std::vector<RenderMesh>& meshes, const Rend
   return m > 0 ? ColorRange{-m, m} : ColorRange{-1.0, 1.0};
 }
 
-Image render(const std::vector<RenderMesh>& meshes, const RenderOptions& options) {
-  validate(meshes, options);
+}  // namespace
+
+ColorRange resolve_color_range(const std::vector<RenderMesh>& meshes, const RenderOptions& options) {
+  if (options.focus && !options.range) {
+    std::vector<Cropped> cropped;
+    return color_range_of(focused(meshes, *options.focus, cropped), options);
+  }
+  return color_range_of(meshes, options);
+}
+
+Image render(const std::vector<RenderMesh>& given, const RenderOptions& options) {
+  validate(given, options);
+  std::vector<Cropped> cropped;
+  const std::vector<RenderMesh> meshes = options.focus ? focused(given, *options.focus, cropped) : given;
   const Layout layout = make_layout(meshes, options);
   const int ss = options.supersampling;
-  const double scale = shared_scale(meshes, options, layout);
+  const double scale = options.focus ? focus_scale(*options.focus, layout) : shared_scale(meshes, options, layout);
 
   Image image{options.width, options.height, {}};
   image.rgb.resize(3 * static_cast<std::size_t>(image.width) * image.height);
@@ -178,7 +245,7 @@ Image render(const std::vector<RenderMesh>& meshes, const RenderOptions& options
 
   render_detail::ShadeOptions shade;
   shade.color_map = options.color_map;
-  shade.range = resolve_color_range(meshes, options);
+  shade.range = color_range_of(meshes, options);
   shade.shading = options.shading;
   shade.wireframe = options.wireframe;
   shade.wire_half_width = 0.4 * ss;  // 0.8 pixel wide
@@ -192,8 +259,12 @@ Image render(const std::vector<RenderMesh>& meshes, const RenderOptions& options
       camera.scale = scale * ss;
       camera.width = layout.panel_w(c) * ss;
       camera.height = layout.draw_h(r) * ss;
-      const Extent e = projected_extent(*meshes[m].mesh, camera.rotation);
-      if (!e.empty()) camera.center_world = 0.5 * (e.lo + e.hi);
+      if (options.focus) {
+        camera.center_world = (camera.rotation * options.focus->centre).head<2>();
+      } else {
+        const Extent e = projected_extent(*meshes[m].mesh, camera.rotation);
+        if (!e.empty()) camera.center_world = 0.5 * (e.lo + e.hi);
+      }
       render_detail::draw_panel(*meshes[m].mesh, meshes[m].values, camera, shade, ss, image,
                                 layout.panel_x(c), layout.panel_y(r) + layout.label_h);
     }

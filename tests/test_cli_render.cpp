@@ -51,6 +51,30 @@ TEST_F(CliRender, StoredQuantityWithEveryOptionIsReproducible) {
   EXPECT_TRUE(test::read_bytes(path("a.png")) == test::read_bytes(path("b.png")));
 }
 
+TEST_F(CliRender, FocusFramesABallAndRefusesABadOne) {
+  const std::string base = "render '" + path("sphere.ply") + "' --color height --size 120x90 ";
+  // A ball on the equator: the automatic (symmetric) range is that of the heights inside it, |y| < 0.4,
+  // where the whole sphere's reaches 0.95.
+  const auto range_end = [](const std::string& out) { return std::stod(out.substr(out.find("on [-") + 5)); };
+  const test::CliRun focused = test::run_cli(base + "--focus 1,0,0,0.4 -o '" + path("f.png") + "'");
+  ASSERT_EQ(focused.exit_code, 0) << focused.out;
+  const test::CliRun whole = test::run_cli(base + "-o '" + path("w.png") + "'");
+  ASSERT_EQ(whole.exit_code, 0) << whole.out;
+  EXPECT_LT(range_end(focused.out), 0.4) << focused.out;
+  EXPECT_GT(range_end(whole.out), 0.8) << whole.out;
+  EXPECT_NE(test::read_bytes(path("f.png")), test::read_bytes(path("w.png")));
+  for (const std::string bad : {"0,1,0", "0,1,0,-1", "0,1,0,r", "0,1,nan,1"}) {
+    const test::CliRun run = test::run_cli(base + "--focus " + bad + " -o '" + path("b.png") + "'");
+    EXPECT_EQ(run.exit_code, 1) << bad;
+    EXPECT_NE(run.out.find("fairsurf: error: render: --focus '" + bad + "' is not x,y,z,r"), std::string::npos) << run.out;
+  }
+  const test::CliRun empty = test::run_cli(base + "--focus 0,0,0,0.5 -o '" + path("e.png") + "'");
+  EXPECT_EQ(empty.exit_code, 1);
+  EXPECT_NE(empty.out.find("no face has all three vertices inside the focus ball"), std::string::npos) << empty.out;
+  EXPECT_FALSE(fs::exists(path("b.png")));
+  EXPECT_FALSE(fs::exists(path("e.png")));
+}
+
 TEST_F(CliRender, ComputesMeanCurvatureWhenTheFileHasNone) {
   // H = -1/R on an outward sphere (operators.h): the colour range is centred on 0 and reaches 1/R.
   write_mesh(path("sphere2.off"), test::icosphere(3, 2.0));

@@ -288,6 +288,54 @@ TEST(Render, NamesRoundTripAndUnknownNamesListTheValidOnes) {
   EXPECT_THROW(color_map_from_name("jet"), InvalidArgument);
 }
 
+TEST(Render, FocusDrawsOnlyTheBallCloseUp) {
+  // Coloured by z on [-1, 1], unshaded: the cap of the unit sphere inside a ball of radius 0.3 at
+  // its north pole has z >= 0.955, so it is deep red; from the back, the rest of the sphere is not.
+  const Mesh sphere = test::icosphere(4);
+  RenderOptions o = plain_options(200, 200);
+  o.shading = false;
+  o.range = ColorRange{-1.0, 1.0};
+  const auto red = [](Rgb8 c) { return c.r > c.b + 60; };
+  const auto drawn = [](Rgb8 c) { return !is_background(c); };
+  o.views = {View::back};  // the camera on -z: without the cut-away, the southern hemisphere hides the cap
+  const Image whole = render({{&sphere, sphere.V.col(2), ""}}, o);
+  o.focus = RenderFocus{Eigen::Vector3d(0, 0, 1), 0.3};
+  const Image cap = render({{&sphere, sphere.V.col(2), ""}}, o);
+  EXPECT_GT(count_pixels(whole, drawn), 20000);
+  EXPECT_EQ(count_pixels(whole, red), 0);
+  // The ball's diameter spans 0.92 of the panel: the cap (projected radius 0.2985, less the last
+  // ring of faces that leaves the ball, edges ~0.08) is a disk of 75-92 pixels radius, all red.
+  const int cap_pixels = count_pixels(cap, drawn);
+  EXPECT_GT(cap_pixels, M_PI * 75 * 75);
+  EXPECT_LT(cap_pixels, M_PI * 92 * 92);
+  EXPECT_GT(count_pixels(cap, red), 0.95 * cap_pixels);
+  // Centred on the ball's centre: the pole is the image's middle pixel.
+  EXPECT_TRUE(drawn(cap.pixel(100, 100)));
+  EXPECT_FALSE(drawn(cap.pixel(100, 5)));
+  // The automatic range comes from the vertices inside the ball only.
+  RenderOptions automatic = o;
+  automatic.range.reset();
+  const ColorRange range = resolve_color_range({{&sphere, sphere.V.col(2), ""}}, automatic);
+  EXPECT_GT(range.hi, 0.95);
+  EXPECT_LE(range.hi, 1.0);
+}
+
+TEST(Render, FocusBallMustHoldAFace) {
+  const Mesh sphere = test::icosphere(2);
+  RenderOptions o = plain_options(50, 50);
+  o.focus = RenderFocus{Eigen::Vector3d(0, 0, 0), 0.5};  // inside the sphere: no vertex
+  try {
+    render({{&sphere, {}, ""}}, o);
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "render: no face has all three vertices inside the focus ball");
+  }
+  o.focus = RenderFocus{Eigen::Vector3d(0, 0, 1), 0.0};
+  EXPECT_THROW(render({{&sphere, {}, ""}}, o), InvalidArgument);
+  o.focus = RenderFocus{Eigen::Vector3d(0, NAN, 1), 1.0};
+  EXPECT_THROW(render({{&sphere, {}, ""}}, o), InvalidArgument);
+}
+
 TEST(Render, RejectsBadInput) {
   Mesh sphere = test::icosphere(2);
   RenderOptions o = plain_options(50, 50);

@@ -1,5 +1,5 @@
 // `fairsurf render MESH -o OUT.png [--color Q] [--range a,b] [--view V | --views V1,V2]
-// [--size WxH] [--wire] [--title T] [--map M] [--compare MESH2 ...] [--force]`: draws the mesh (and
+// [--size WxH] [--wire] [--title T] [--map M] [--focus x,y,z,r] [--compare MESH2 ...] [--force]`: draws the mesh (and
 // the --compare meshes beside it, on one scale and one colour range) coloured by a per-vertex scalar.
 #include "command.h"
 
@@ -28,6 +28,7 @@ struct RenderArgs {
   std::string size = "1200x900";
   std::string map = "auto";
   std::string title;
+  std::string focus;
   std::vector<std::string> compare;
   bool wire = false;
   bool force = false;
@@ -68,6 +69,23 @@ ColorRange parse_range(const std::string& text) {
   } catch (const std::logic_error&) {
   }
   throw InvalidArgument("render: --range '" + text + "' is not two finite numbers a,b with a < b");
+}
+
+RenderFocus parse_focus(const std::string& text) {
+  const std::vector<std::string> parts = split(text);
+  try {
+    if (parts.size() == 4) {
+      RenderFocus focus;
+      std::size_t used[4] = {};
+      for (int k = 0; k < 3; ++k) focus.centre[k] = std::stod(parts[k], &used[k]);
+      focus.radius = std::stod(parts[3], &used[3]);
+      bool whole = true;
+      for (int k = 0; k < 4; ++k) whole = whole && used[k] == parts[k].size();
+      if (whole && focus.centre.allFinite() && std::isfinite(focus.radius) && focus.radius > 0) return focus;
+    }
+  } catch (const std::logic_error&) {
+  }
+  throw InvalidArgument("render: --focus '" + text + "' is not x,y,z,r with finite numbers and r > 0");
 }
 
 std::vector<View> parse_views(const RenderArgs& args) {
@@ -115,6 +133,7 @@ void run_render(const RenderArgs& args) {
   parse_size(args.size, options);
   if (!args.range.empty()) options.range = parse_range(args.range);
   options.views = parse_views(args);
+  if (!args.focus.empty()) options.focus = parse_focus(args.focus);
   options.wireframe = args.wire;
   options.title = args.title;
   options.quantity = args.color == "none" ? "" : args.color;
@@ -160,6 +179,8 @@ void setup_render(CLI::App& app) {
   cmd->add_option("--map", args->map, "Colour map: auto, diverging, sequential, none")->capture_default_str();
   cmd->add_flag("--wire", args->wire, "Overlay the visible edges");
   cmd->add_option("--title", args->title, "Title drawn above the image");
+  cmd->add_option("--focus", args->focus,
+                  "x,y,z,r: draw only the faces inside this ball, centred and scaled to it (a filled hole up close)");
   cmd->add_option("--compare", args->compare,
                   "A further mesh drawn beside the first, same scale and colour range; one per --compare")
       ->allow_extra_args(false);

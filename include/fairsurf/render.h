@@ -73,6 +73,12 @@ struct RenderMesh {
   std::string label;           ///< written above each of the mesh's panels; may be empty
 };
 
+/// A ball to look into instead of the whole mesh (RenderOptions::focus).
+struct RenderFocus {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double radius = 1.0;  ///< > 0, in the mesh's units
+};
+
 struct RenderOptions {
   int width = 1200;                 ///< whole image, pixels
   int height = 900;                 ///< whole image, pixels
@@ -91,6 +97,11 @@ struct RenderOptions {
   std::string quantity;             ///< colour bar caption ("H", "energy density", ...)
   bool color_bar = true;            ///< ignored for ColorMap::none
   Rgb8 background{255, 255, 255};
+  /// Set: draw only the faces with all three vertices inside this ball (a cut-away: what lies in
+  /// front of a filled hole on a large model is not drawn), centre every panel on the ball's centre
+  /// and scale it so that the ball's diameter fits, and take the automatic colour range from the
+  /// drawn vertices. Unset: every face, each mesh fitted and centred as above.
+  std::optional<RenderFocus> focus;
   /// TrueType font for title, labels and ticks (Debian: fonts-dejavu-core).
   std::filesystem::path font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 };
@@ -107,13 +118,15 @@ struct Image {
   }
 };
 
-/// The colour range render() uses for `meshes` under `options` (given or automatic). Degenerate
+/// The colour range render() uses for `meshes` under `options` (given, or automatic: over the
+/// vertices inside the focus ball when there is one). Degenerate
 /// automatic ranges (all values 0, or all equal) widen to a unit interval around them.
 ColorRange resolve_color_range(const std::vector<RenderMesh>& meshes, const RenderOptions& options);
 
 /// Renders every mesh in every view into one image (panel grid as above), with the title
 /// above and a horizontal colour bar below. Throws InvalidArgument (bad size, no views, values of
-/// the wrong length, a null mesh), InvalidMeshError (face index out of range) or IoError (font file
+/// the wrong length, a null mesh, a focus ball that is not finite with radius > 0 or holds no face
+/// of any mesh), InvalidMeshError (face index out of range) or IoError (font file
 /// unreadable, only when text is drawn).
 Image render(const std::vector<RenderMesh>& meshes, const RenderOptions& options = {});
 

@@ -10,6 +10,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -62,7 +63,7 @@ ColorMap choose_map(const std::string& map, const py::handle& color, const std::
 }
 
 struct RenderArgs {
-  py::object compare, color, range, path;
+  py::object compare, color, range, path, focus;
   std::vector<std::string> views, labels;
   std::pair<int, int> size;
   std::string color_map, title;
@@ -82,6 +83,10 @@ py::array render_binding(const py::handle& V, const py::handle& F, const RenderA
   if (!a.range.is_none()) options.range = ColorRange{a.range[py::int_(0)].cast<double>(), a.range[py::int_(1)].cast<double>()};
   options.wireframe = a.wireframe;
   options.title = a.title;
+  if (!a.focus.is_none()) {
+    const auto xyzr = a.focus.cast<std::array<double, 4>>();
+    options.focus = RenderFocus{Eigen::Vector3d(xyzr[0], xyzr[1], xyzr[2]), xyzr[3]};
+  }
   options.quantity = py::isinstance<py::str>(a.color) && a.color.cast<std::string>() != "none" ? a.color.cast<std::string>() : "";
   std::vector<RenderMesh> items;
   for (std::size_t k = 0; k < meshes.size(); ++k)
@@ -107,16 +112,17 @@ void register_render_functions(py::module_& m) {
       "render",
       [](const py::handle& V, const py::handle& F, py::object color, std::vector<std::string> views,
          std::pair<int, int> size, py::object path, py::object range, std::string color_map, std::string title,
-         bool wireframe, py::object compare, std::vector<std::string> labels) {
-        return render_binding(V, F, {compare, color, range, path, views, labels, size, color_map, title, wireframe});
+         bool wireframe, py::object compare, std::vector<std::string> labels, py::object focus) {
+        return render_binding(V, F,
+                              {compare, color, range, path, focus, views, labels, size, color_map, title, wireframe});
       },
       "V"_a, "F"_a, py::kw_only(), "color"_a = "H", "views"_a = std::vector<std::string>{"iso"},
       "size"_a = std::pair<int, int>{1200, 900}, "path"_a = py::none(), "range"_a = py::none(),
       "color_map"_a = "auto", "title"_a = "", "wireframe"_a = false, "compare"_a = py::none(),
-      "labels"_a = std::vector<std::string>{},
+      "labels"_a = std::vector<std::string>{}, "focus"_a = py::none(),
       "Draws the mesh (and the `compare` meshes beside it, one scale, one colour range) coloured by H, K, "
       "k1, k2, none or per-vertex values; returns the (height, width, 3) uint8 image and writes a PNG to "
-      "`path` if given.");
+      "`path` if given. `focus=(x, y, z, r)` draws only the faces inside that ball, framed on it.");
 }
 
 }  // namespace fairsurf::python

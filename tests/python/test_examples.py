@@ -6,6 +6,7 @@ import subprocess
 import sys
 
 import numpy as np
+import pytest
 
 import fairsurf
 
@@ -43,3 +44,15 @@ def test_render_returns_the_image_it_writes(tmp_path, hand):
     assert (image != 255).any()  # something was drawn on the white background
     again = fairsurf.render(V, F, color=fairsurf.curvature(V, F)["H"], size=(320, 240))
     assert np.array_equal(image[:200], again[:200])  # same colours above the colour bar caption
+
+
+def test_render_focus_frames_a_ball(hand):
+    V, F = hand
+    centre = V[F[0, 0]]
+    radius = 0.05 * np.linalg.norm(V.max(axis=0) - V.min(axis=0))
+    whole = fairsurf.render(V, F, color="none", size=(160, 120))
+    close = fairsurf.render(V, F, color="none", size=(160, 120), focus=(*centre, radius))
+    assert not np.array_equal(whole, close)
+    assert (close[60, 80] != 255).any()  # the ball's centre, on the surface, is the image's middle
+    with pytest.raises(fairsurf.InvalidArgument, match="no face has all three vertices inside the focus ball"):
+        fairsurf.render(V, F, size=(160, 120), focus=(*(V.max(axis=0) + 10 * radius), radius))
