@@ -4,7 +4,8 @@
 #   before/after coloured by H, and fill / blend when this build has those commands.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+# The library and the CLI only; scripts/test.sh builds the rest (tests, benchmarks, bindings).
+FAIRSURF_BUILD_TARGET=fairsurf_cli bash scripts/build.sh
 fs=build/bin/fairsurf
 mkdir -p out
 written=()
