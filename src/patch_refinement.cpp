@@ -37,7 +37,21 @@ class MuteOpenMeshErrors {
   bool was_enabled_;
 };
 
+// A triangle with an angle above this (160°) is a sliver: its cotangent weights (cot 177° ≈ −19)
+// make the ∆ of the fairing indefinite. A flip that removes one may turn a border triangle up to
+// kSliverFlipDihedral (120°) against the mesh. Liepa's triangulation of a flat hole that meets the
+// mesh at about a right angle keeps its largest dihedral low with such slivers along the border (a
+// 120-edge hemisphere of data/: 91.4°, with 60 border triangles of 177°); the flips that remove them
+// give 96–102°, the border faces' own tilt, and without them ∆³ blew the patch out through the cap.
+constexpr double kSliverAngle = 160 * std::numbers::pi / 180;
+constexpr double kSliverFlipDihedral = 120 * std::numbers::pi / 180;
+
 double angle_between(const Vec& u, const Vec& v) { return std::atan2(OpenMesh::cross(u, v).norm(), OpenMesh::dot(u, v)); }
+
+// The largest interior angle of the triangle (p, q, r).
+double largest_angle(const Vec& p, const Vec& q, const Vec& r) {
+  return std::max({angle_between(q - p, r - p), angle_between(r - q, p - q), angle_between(p - r, q - r)});
+}
 
 // The local patch: OpenMesh connectivity, its vertices' global indices and their scales σ.
 class Refiner {
@@ -214,12 +228,15 @@ class Refiner {
     const int ci = mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h0)).idx();
     const int di = mesh_.to_vertex_handle(mesh_.next_halfedge_handle(h1)).idx();
     if (outside_edges_.contains(undirected_key(ci, di))) return false;
-    // Nor may it fold a triangle against the mesh across the border: beyond a right angle and
-    // beyond what the two triangles had (a Delaunay flip on a curved patch can turn a border
-    // triangle over; the flow then starts from a crease at the border).
+    // Nor may it fold a triangle against the mesh across the border beyond a right angle and beyond
+    // what the two triangles had (a Delaunay flip on a curved patch can turn a border triangle
+    // over; the flow then starts from a crease at the border) — unless it removes a sliver, which
+    // may go to kSliverFlipDihedral.
     const double folded = std::max(border_dihedral(ai, di, ci), border_dihedral(di, bi, ci));
-    if (folded > std::numbers::pi / 2 && folded > std::max(border_dihedral(ai, bi, ci), border_dihedral(bi, ai, di)))
-      return false;
+    const bool removes_sliver = std::max(largest_angle(a, b, c), largest_angle(b, a, d)) > kSliverAngle;
+    const double allowed = std::max({removes_sliver ? kSliverFlipDihedral : std::numbers::pi / 2,
+                                     border_dihedral(ai, bi, ci), border_dihedral(bi, ai, di)});
+    if (folded > allowed) return false;
     if (!mesh_.is_flip_ok(eh)) return false;  // c-d is already an edge; checked last, it walks a fan
     mesh_.flip(eh);
     ++flips_;

@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <string>
 
@@ -77,3 +79,28 @@ INSTANTIATE_TEST_SUITE_P(Data, RealHoles,
                          ::testing::Values(RealHole{"spot.obj", {0.312594, 0.674309, -0.341185}, 0.190738},
                                            RealHole{"blub.obj", {0.176282, 0.148983, -0.699856}, 0.307912},
                                            RealHole{"blub.obj", {-0.565203, -0.333718, 0.0970017}, 0.153956}));
+
+// data/hemisphere.off (pmp-library) is the unit sphere above z ≈ 0.1, open along a 120-edge circle
+// that meets any flat lid at about a right angle. Its triangulation keeps that angle low with
+// slivers (177°) along the border; the refinement must flip them away (patch_refinement.h), or the
+// cotangent ∆³ of the start blows the patch out through the cap (to z = 4, "crosses the mesh") and
+// the fill fell back to C1. The G2 fill closes the sphere: H is constant there, its gradient zero.
+TEST(RealHoleHemisphere, TheG2FillClosesTheSphere) {
+  Mesh mesh = read_mesh(test::data_path("hemisphere.off"));
+  const int input_vertices = mesh.num_vertices();
+  const FillReport report = fill_holes(mesh, FillOptions{});
+  ASSERT_EQ(report.holes.size(), 1u);
+  const HoleReport& hole = report.holes.front();
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
+  EXPECT_TRUE(validate(mesh).manifold());
+  EXPECT_TRUE(boundary_loops(mesh.F, build_topology(mesh.F, mesh.num_vertices())).empty());
+  double worst = 0, lowest = 1;
+  for (int v = input_vertices; v < mesh.num_vertices(); ++v) {
+    worst = std::max(worst, std::abs(mesh.V.row(v).norm() - 1.0));
+    lowest = std::min(lowest, mesh.V(v, 2));
+  }
+  EXPECT_LT(worst, 0.02);     // measured 0.006 (CGAL's C2 fill: 0.56)
+  EXPECT_LT(lowest, -0.95);   // down to the south pole
+  EXPECT_LT(hole.continuity.max_normal_angle, 5.0 * std::numbers::pi / 180);
+}

@@ -526,6 +526,34 @@ TEST(PatchFolds, RefinementNeverFoldsABorderTriangleOfARealHole) {
   }
 }
 
+// data/hemisphere.off's 120-edge border circle: its minimum-weight triangulation puts a sliver
+// (177°) on every other border vertex, which keeps its largest dihedral against the sphere at 91°.
+// The refinement flips them away although that turns those border triangles to 96–102°: every
+// border vertex then has an interior neighbour and no patch triangle keeps an angle above 160°.
+TEST(PatchFolds, RefinementFlipsAwayTheSliversAlongAFlatBorder) {
+  const Mesh hemisphere = read_mesh(test::data_path("hemisphere.off"));
+  const auto loops = boundary_loops(hemisphere.F, build_topology(hemisphere.F, hemisphere.num_vertices()));
+  ASSERT_EQ(loops.size(), 1u);
+  PatchOptions unrelaxed;
+  unrelaxed.relax = false;
+  const InitialPatch p = hole_patch(hemisphere, loops, unrelaxed);
+  const auto angle = [&](int a, int b, int c) {
+    const Vec3 u = p.mesh.V.row(b) - p.mesh.V.row(a), v = p.mesh.V.row(c) - p.mesh.V.row(a);
+    return std::atan2(u.cross(v).norm(), u.dot(v));
+  };
+  std::set<int> touching_interior;
+  double largest = 0;
+  for (int f = p.first_patch_face; f < p.mesh.num_faces(); ++f) {
+    const int a = p.mesh.F(f, 0), b = p.mesh.F(f, 1), c = p.mesh.F(f, 2);
+    largest = std::max({largest, angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+    if (a >= hemisphere.num_vertices() || b >= hemisphere.num_vertices() || c >= hemisphere.num_vertices())
+      for (int v : {a, b, c}) touching_interior.insert(v);
+  }
+  for (int v : loops.front()) EXPECT_TRUE(touching_interior.contains(v)) << "border vertex " << v;
+  EXPECT_LT(largest, 160 * std::numbers::pi / 180);
+  EXPECT_LT(p.border_dihedral_angle, 2 * std::numbers::pi / 3);
+}
+
 TEST(Tube, JoinsCoaxialCylindersOfDifferentCountsIntoOneManifold) {
   // z in [-2, 1] and [2, 5]: the facing ends are 1 apart, each cylinder's own ends 3 apart.
   Mesh lower = test::open_cylinder(32, 8, 1.0, 3.0);

@@ -12,8 +12,9 @@
 //      α·|c − v| > σ_c and α·|c − v| > σ_v for each corner v; c gets σ_c;
 //   2. flip: interior edges are flipped to the Delaunay configuration (sum of the two opposite
 //      angles > π), unless the flip would fold the two triangles over each other, duplicate an
-//      edge of the patch or of the mesh around it, or turn a border triangle more than π/2 (and
-//      more than before) against the mesh face across the border, until no edge flips.
+//      edge of the patch or of the mesh around it, or turn a border triangle against the mesh face
+//      across the border more than π/2 and more than before (2π/3 when the flip removes a sliver,
+//      a triangle with an angle above 160°), until no edge flips.
 // Finally interior vertices are relaxed tangentially: moved towards the centroid of their
 // neighbours within the plane of their vertex normal, a few times, each followed by a flip pass.
 // α = √2 gives edges whose mean is within a few percent of σ (measured in tests/test_patch.cpp).

@@ -9,10 +9,12 @@ import numpy as np
 import fairsurf
 
 
-def test_another_thread_runs_during_a_fill(hand):
+def test_another_thread_runs_during_a_fill(data_dir):
     """Between two progress callbacks the main thread is in C++ (a flow step): a Python thread can
-    only tick there if the binding released the GIL. No timing threshold is involved."""
-    V, F = hand
+    only tick there if the binding released the GIL. No timing threshold is involved, but the steps
+    must last long enough for the OS to schedule the other thread on a busy machine: blub_open's
+    hole (about 300 new vertices) takes tens of milliseconds a step, the hand's a few."""
+    V, F = fairsurf.read_mesh(data_dir / "blub_open.obj")
     ticks, callbacks, running = [], [], threading.Event()
     running.set()
 
