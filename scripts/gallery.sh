@@ -202,6 +202,24 @@ else
   note "_Skipped: \`fairsurf fill\` is not in this build._"
 fi
 
+# --- Fig 5b: closing a hemisphere (fairsurf fill) --------------------------------------------------
+begin_figure "Fig 5b: closing a hemisphere" "data/hemisphere.off (pmp-library): the unit sphere above z ≈ 0.1, open along a 120-edge circle, filled with G2 data. H is constant on a sphere, so the G2 steady state of f = H is the rest of it."
+if has_command fill; then
+  run hemi_input "$fs" convert data/hemisphere.off -o "$work/hemi_input.obj" --force
+  if run hemi_fill "$fs" fill "$work/hemi_input.obj" -o "$work/hemi_fill.obj" --quiet; then
+    echo "    $(shown "$(cat "$work/hemi_fill.out")")" >>"$work/commands"
+    end_commands
+    VIEW=left render_row "$images/fig5b_hemisphere.png" -1.5,1.5 "hemisphere and its G2 fill, seen from the side" \
+      hemi_input hemi_fill
+    note "Measured: $(measure sphere "$work/hemi_input.obj" "$work/hemi_fill.obj" --numbers "$numbers") (CGAL 5.5's C2 fill of the same circle stops at z = -0.51 and lies up to 0.56 off the sphere; docs/fill.md)."
+  else
+    end_commands
+    note "**hemi_fill left out:** \`fill\` failed: $(tail -n1 "$work/hemi_fill.err")"
+  fi
+else
+  note "_Skipped: \`fairsurf fill\` is not in this build._"
+fi
+
 # --- Figs 3/4: blending (fairsurf scene + fairsurf blend) -----------------------------------------
 begin_figure "Figs 3/4: G2 blending" "The paper's scenes: a spherical cap above a disk (fig3), two caps of one sphere (fig4)."
 if has_command blend && has_command scene; then

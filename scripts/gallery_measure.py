@@ -10,6 +10,9 @@
   header                 the matching table header
   range C.json [--around-median]
       the colour range a,b: [-q, q] with q = max(|p5|, |p95|) of H, or median -/+ |median|
+  sphere INPUT FILLED [--numbers FILE]
+      how far the vertices FILLED adds after INPUT's lie from the unit sphere: max and mean of
+      | |v| - 1 |, and the lowest z they reach
   stop L.json            the log's stop reason
   time L.json            the time the run reached
   check FILE             exit 1 unless FILE holds at least one number and every one is finite
@@ -118,6 +121,21 @@ def colour_range(args):
         print("%.4g,%.4g" % (-q, q))
 
 
+def sphere(args):
+    numbers = []
+    n = len(read_mesh(args.input)[0])
+    added = read_mesh(args.filled)[0][n:]
+    if not added:
+        sys.exit(f"gallery_measure: {args.filled} adds no vertex to {args.input}")
+    off = [abs(math.hypot(*v) - 1.0) for v in added]
+    print("%d new vertices, | |v| - 1 | max %s, mean %s; lowest z %s" % (
+        len(added), fmt(max(off), numbers), fmt(sum(off) / len(off), numbers),
+        fmt(min(v[2] for v in added), numbers)))
+    if args.numbers:
+        with open(args.numbers, "a") as f:
+            f.writelines("%r\n" % x for x in numbers)
+
+
 def check(args):
     values = [float(l) for l in open(args.file) if l.strip()]
     bad = [v for v in values if not math.isfinite(v)]
@@ -137,6 +155,10 @@ def main():
     p = sub.add_parser("range")
     p.add_argument("curv")
     p.add_argument("--around-median", action="store_true")
+    p = sub.add_parser("sphere")
+    p.add_argument("input")
+    p.add_argument("filled")
+    p.add_argument("--numbers")
     for name in ("stop", "time"):
         sub.add_parser(name).add_argument("log")
     sub.add_parser("check").add_argument("file")
@@ -147,6 +169,8 @@ def main():
         print(HEADER)
     elif args.command == "range":
         colour_range(args)
+    elif args.command == "sphere":
+        sphere(args)
     elif args.command == "stop":
         print(json.load(open(args.log))["stop_reason"])
     elif args.command == "time":
