@@ -201,13 +201,21 @@ std::vector<int> to_local(const Submesh& sub, const std::vector<int>& global) {
   return local;
 }
 
-std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int input_faces) {
+// `F` and `topo`: the patched mesh. When the first crossing is with another connected part of the
+// mesh (two parts whose openings face each other, as in data/cgal_blobby_3cc.off), the reason says
+// that a blend, not a fill, is what joins them.
+std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int input_faces, const Faces& F,
+                            const Topology& topo) {
   const FaceIntersection& c = crossings.front();
   const bool other_new = c.other_face >= input_faces;
-  return "the faired patch crosses the mesh: new face " + std::to_string(c.query_face) + " crosses " +
-         (other_new ? "new" : "input") + " face " + std::to_string(c.other_face) + " (" +
-         std::to_string(crossings.size()) + (crossings.size() >= 10 ? "+" : "") + " crossing" +
-         (crossings.size() == 1 ? "" : "s") + ")";
+  std::string reason = "the faired patch crosses the mesh: new face " + std::to_string(c.query_face) + " crosses " +
+                       (other_new ? "new" : "input") + " face " + std::to_string(c.other_face) + " (" +
+                       std::to_string(crossings.size()) + (crossings.size() >= 10 ? "+" : "") + " crossing" +
+                       (crossings.size() == 1 ? "" : "s") + ")";
+  const Components parts = connected_components(F, topo);
+  if (parts.face_component[c.query_face] != parts.face_component[c.other_face])
+    reason += ", a face of another part of the mesh: openings that face each other are joined by blend";
+  return reason;
 }
 
 // Fills the holes `group` jointly on `mesh`; on success replaces mesh and fills the reports, on
@@ -246,7 +254,7 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
   std::iota(new_faces.begin(), new_faces.end(), patch.first_patch_face);
   if (options.check_intersections) {
     const auto crossings = find_face_intersections(patch.mesh.V, patch.mesh.F, new_faces, 10);
-    if (!crossings.empty()) return crossing_reason(crossings, mesh.num_faces());
+    if (!crossings.empty()) return crossing_reason(crossings, mesh.num_faces(), patch.mesh.F, topo);
   }
 
   const PatchOwnership own = patch_ownership(patch, mesh.num_vertices(), loops, group);

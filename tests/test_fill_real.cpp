@@ -104,3 +104,16 @@ TEST(RealHoleHemisphere, TheG2FillClosesTheSphere) {
   EXPECT_LT(lowest, -0.95);   // down to the south pole
   EXPECT_LT(hole.continuity.max_normal_angle, 5.0 * std::numbers::pi / 180);
 }
+
+// data/cgal_blobby_3cc.off is three parts whose openings face each other across narrow gaps: capping
+// one opening runs into the next part. The fill says so and names the command that joins them.
+TEST(RealHoleParts, ACrossingWithAnotherPartPointsToBlend) {
+  Mesh mesh = read_mesh(test::data_path("cgal_blobby_3cc.off"));
+  const FillReport report = fill_holes(mesh, FillOptions{});
+  int pointed = 0;
+  for (const HoleReport& hole : report.holes)
+    pointed += hole.note.find("crosses input face") != std::string::npos &&
+               hole.note.find("a face of another part of the mesh: openings that face each other are joined by "
+                              "blend") != std::string::npos;
+  EXPECT_GE(pointed, 1);
+}
