@@ -157,11 +157,7 @@ void run_curvature(const CurvatureArgs& args) {
   for (int i = 0; i < mesh.num_vertices(); ++i) status[i] = static_cast<double>(fits.status[i]);
   mesh.vertex_scalars["fit_status"] = std::move(status);
   if (args.flip_sign) flip_sign(mesh);
-  try {
-    write_mesh(args.output, mesh);
-  } catch (const IoError& e) {
-    throw CliError(kOutputError, e.what());
-  }
+  write_mesh_output(args.output, mesh);
 
   if (args.json)
     print_json(args, mesh, fits, repaired);
