@@ -133,3 +133,13 @@ TEST_F(CliAttributes, FillKeepsTheOldFacesAttributesAndSaysWhatTheNewOnesLack) {
   for (std::size_t i = in_faces.size(); i < out_faces.size(); ++i)
     EXPECT_EQ(out_faces[i].find('/'), std::string::npos) << out_faces[i];
 }
+
+TEST_F(CliAttributes, RepairKeepsThemAndInfoSaysWhatTheFileHolds) {
+  const test::CliRun r = run("repair " + q("grid.obj") + " -o " + q("out.obj"));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(lines_starting(test::read_bytes(file("out.obj")), "f "), lines_starting(grid_, "f "));
+  const test::CliRun i = run("info " + q("out.obj"));
+  ASSERT_EQ(i.exit_code, 0) << i.out;
+  EXPECT_NE(i.out.find("\ntexture coordinates: 169 (on 288 of 288 triangles)\nnormals: 12 (on 288 of 288 triangles)\n"
+                       "polygons of 4 or more corners: 144\n"), std::string::npos) << i.out;
+}

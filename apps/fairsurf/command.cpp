@@ -154,10 +154,13 @@ void note_vertex_data_dropped(bool input_had, const Mesh& output, const std::str
               << "vertices have none, so " << command << " drops them all\n";
 }
 
-void write_mesh_output(const std::string& path, const Mesh& mesh, const WriteOptions& options) {
+void write_mesh_output(const std::string& path, const Mesh& mesh, const WriteOptions& options,
+                       std::vector<std::string>* notes) {
   WriteReport report;
   write_output([&] { write_mesh(path, mesh, options, &report); });
-  for (const auto& note : report.notes) std::cerr << "fairsurf: note: " << path << ": " << note << "\n";
+  if (notes) notes->insert(notes->end(), report.notes.begin(), report.notes.end());
+  else
+    for (const auto& note : report.notes) std::cerr << "fairsurf: note: " << path << ": " << note << "\n";
 }
 
 void refresh_normals(Mesh& mesh, const Vertices& before, const std::string& path) {

@@ -95,8 +95,10 @@ void note_vertex_data_dropped(bool input_had, const Mesh& output, const std::str
 Mesh read_input(const std::string& path);
 
 /// Writes `mesh` to `path` as write_output does (exit 5 on failure) and prints each of the writer's
-/// notes, what the format cannot hold, as "fairsurf: note: PATH: ...".
-void write_mesh_output(const std::string& path, const Mesh& mesh, const WriteOptions& options = {});
+/// notes, what the format cannot hold, as "fairsurf: note: PATH: ..."; or, if `notes` is given (a
+/// command whose output is JSON), appends them there instead.
+void write_mesh_output(const std::string& path, const Mesh& mesh, const WriteOptions& options = {},
+                       std::vector<std::string>* notes = nullptr);
 
 /// For commands that move vertices: recomputes the stored normals of the moved vertices
 /// (refresh_moved_normals; `before` the positions they belonged to, empty for none) and says so
