@@ -1,5 +1,5 @@
 // End-to-end tests of what the commands keep (issue #16, "data kept"): texture coordinates, normals
-// and polygon faces of an OBJ through convert, smooth, fair, curvature and fill.
+// and polygon faces of an OBJ through convert, smooth, fair, curvature, fill, blend, repair and info.
 #include <fairsurf/io.h>
 
 #include <gtest/gtest.h>
@@ -142,4 +142,38 @@ TEST_F(CliAttributes, RepairKeepsThemAndInfoSaysWhatTheFileHolds) {
   ASSERT_EQ(i.exit_code, 0) << i.out;
   EXPECT_NE(i.out.find("\ntexture coordinates: 169 (on 288 of 288 triangles)\nnormals: 12 (on 288 of 288 triangles)\n"
                        "polygons of 4 or more corners: 144\n"), std::string::npos) << i.out;
+}
+
+TEST_F(CliAttributes, BlendKeepsTheInputFacesTextureCoordinatesAndSaysWhatTheTubeLacks) {
+  ASSERT_EQ(run("scene fig4 -o " + q("caps.obj")).exit_code, 0);
+  // The two caps with one texture coordinate per vertex: its x and y.
+  std::ostringstream textured, texture_lines, faces;
+  std::istringstream in(test::read_bytes(file("caps.obj")));
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line.substr(2));
+    if (line.rfind("v ", 0) == 0) {
+      std::string x, y;
+      fields >> x >> y;
+      textured << line << '\n';
+      texture_lines << "vt " << x << ' ' << y << '\n';
+    } else if (line.rfind("f ", 0) == 0) {
+      faces << 'f';
+      for (std::string v; fields >> v;) faces << ' ' << v << '/' << v;
+      faces << '\n';
+    }
+  }
+  textured << texture_lines.str() << faces.str();
+  std::ofstream(file("textured.obj")) << textured.str();
+
+  const test::CliRun b = run("blend " + q("textured.obj") + " -o " + q("out.obj") + " --quiet");
+  ASSERT_EQ(b.exit_code, 0) << b.out;
+  const std::vector<std::string> in_faces = lines_starting(faces.str(), "f ");
+  const std::vector<std::string> out_faces = lines_starting(test::read_bytes(file("out.obj")), "f ");
+  ASSERT_GT(out_faces.size(), in_faces.size());
+  const std::string added = std::to_string(out_faces.size() - in_faces.size());
+  EXPECT_NE(b.out.find("textured.obj: the " + added + " faces blend added have no texture coordinates; the "
+                       "input's faces keep theirs"), std::string::npos) << b.out;
+  EXPECT_EQ(std::vector<std::string>(out_faces.begin(), out_faces.begin() + in_faces.size()), in_faces);
+  for (std::size_t i = in_faces.size(); i < out_faces.size(); ++i)
+    EXPECT_EQ(out_faces[i].find('/'), std::string::npos) << out_faces[i];
 }
