@@ -1,6 +1,7 @@
 #include <fairsurf/blend.h>
 #include <fairsurf/errors.h>
 #include <fairsurf/membrane.h>
+#include <fairsurf/mesh_attributes.h>
 #include <fairsurf/topology.h>
 #include <fairsurf/tube.h>
 
@@ -168,6 +169,7 @@ Mesh concatenate_meshes(const Mesh& first, const Mesh& second) {
   }
   if (first.vertex_colors.rows() > 0 && second.vertex_colors.rows() > 0)
     append_rows(out.vertex_colors, first.vertex_colors, second.vertex_colors);
+  concatenate_attributes(first, second, out);
   return out;
 }
 
@@ -201,7 +203,13 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
   report.tube_vertices = patch.mesh.num_vertices() - mesh.num_vertices();
   report.tube_faces = patch.mesh.num_faces() - patch.first_patch_face;
   report.tube_rings = patch.tube.rings;
-  mesh = std::move(patch.mesh);
+  // The input's faces come first, unchanged: they keep their texture coordinates, normals and
+  // polygons, the tube's faces have none; vertex values are dropped, the tube's vertices have none.
+  mesh.V = std::move(patch.mesh.V);
+  mesh.F = std::move(patch.mesh.F);
+  mesh.vertex_scalars.clear();
+  mesh.vertex_colors.resize(0, 3);
+  pad_face_attributes(mesh);
 
   report.fair = fair_tube(mesh, patch.free_vertices, options, observer);
   report.a.border = measure_continuity_at_loop(mesh, loop_a, patch.free_vertices, options.measure_rings);

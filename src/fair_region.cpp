@@ -1,3 +1,4 @@
+#include "flow_failure.h"
 #include "held_out.h"
 
 #include <fairsurf/errors.h>
@@ -69,6 +70,8 @@ void run_flow_with_floor(Submesh& sub, const Region& region, const FairRegionOpt
     report.flow = run_flow(sub.mesh.V, sub.mesh.F, region, flow, observer);
     if (report.flow.stop_reason != FlowStopReason::steady) failure = unsettled_reason(report.flow);
   } catch (const NumericalError& e) {
+    if (const auto* failure = dynamic_cast<const flow_detail::FlowFailure*>(&e))
+      report.flow.well_posedness = failure->well_posedness;  // what the lost report held
     if (!floor) {
       write_back_free(sub, caller);  // the last accepted state: nothing is lost
       throw;

@@ -2,6 +2,7 @@
 #include <fairsurf/errors.h>
 #include <fairsurf/face_intersection.h>
 #include <fairsurf/fill.h>
+#include <fairsurf/mesh_attributes.h>
 #include <fairsurf/submesh.h>
 #include <fairsurf/topology.h>
 #include <fairsurf/validate.h>
@@ -290,6 +291,7 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
   mesh.F = std::move(patch.mesh.F);
   mesh.vertex_scalars.clear();
   mesh.vertex_colors.resize(0, 3);
+  pad_face_attributes(mesh);  // the input's faces keep theirs; the patch's have none
   return "";
 }
 

@@ -1,4 +1,5 @@
 #include "energy_descent.h"
+#include "flow_failure.h"
 #include "flow_step.h"
 
 #include <fairsurf/errors.h>
@@ -536,12 +537,14 @@ FlowReport run_flow(Vertices& V, const Faces& F, const Region& region, const Flo
   try {
     return run.run();
   } catch (const NumericalError& e) {
-    // The report, and with it the well-posedness, is lost with the throw; an f that is not
-    // parabolic on part of the input is a likely cause of the failure, so the error says so.
+    // The report, and with it the well-posedness, is lost with the throw: the error carries it, and
+    // says it when f is not parabolic on part of the input, a likely cause of the failure.
     const WellPosedness& w = run.well_posedness();
-    if (w.violating_vertices == 0) throw;
-    throw NumericalError(std::string(e.what()) + " (f is not parabolic at " + std::to_string(w.violating_vertices) +
-                         " of " + std::to_string(w.vertices) + " vertices of the flow's input, METHOD §4)");
+    if (w.violating_vertices == 0) throw flow_detail::FlowFailure(e.what(), w);
+    throw flow_detail::FlowFailure(std::string(e.what()) + " (f is not parabolic at " +
+                                       std::to_string(w.violating_vertices) + " of " + std::to_string(w.vertices) +
+                                       " vertices of the flow's input, METHOD §4)",
+                                   w);
   }
 }
 

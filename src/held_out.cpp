@@ -1,5 +1,7 @@
 #include "held_out.h"
 
+#include "flow_failure.h"
+
 #include <fairsurf/errors.h>
 #include <fairsurf/topology.h>
 
@@ -43,7 +45,9 @@ double held_out_error(const Mesh& mesh, const std::vector<int>& free, const std:
     const FairRegionReport report = fair_region(trial, free, fairing);
     if (well_posedness) *well_posedness = report.flow.well_posedness;
     if (fairing.method == FairMethod::flow && report.linear) return std::numeric_limits<double>::infinity();
-  } catch (const Error&) {
+  } catch (const Error& e) {
+    if (const auto* failure = dynamic_cast<const flow_detail::FlowFailure*>(&e); failure && well_posedness)
+      *well_posedness = failure->well_posedness;
     return std::numeric_limits<double>::infinity();
   }
   double sum = 0;

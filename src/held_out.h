@@ -13,7 +13,7 @@ namespace fairsurf::fair_detail {
 struct HeldOutErrors {
   double flow = 0;
   double linear = 0;
-  /// Of the flow's trial on the enlarged region (its report's; empty when the flow threw).
+  /// Of the flow's trial on the enlarged region (its report's, or its error's when the flow threw).
   WellPosedness flow_well_posedness;
 };
 

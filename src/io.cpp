@@ -122,6 +122,27 @@ void check_writable(const Mesh& mesh) {
                           std::to_string(n) + " vertices");
 }
 
+// FTC and FN: empty or one row per face, each index a row of its table or -1; face_polygon: empty
+// or one entry per face.
+void check_corner_attributes(const Mesh& mesh) {
+  const auto check = [&](const Faces& FX, Eigen::Index rows, const char* name, const char* table) {
+    if (FX.rows() == 0) return;
+    if (FX.rows() != mesh.F.rows())
+      throw InvalidArgument(std::string("write_mesh: ") + name + " has " + std::to_string(FX.rows()) +
+                            " rows for " + std::to_string(mesh.F.rows()) + " faces");
+    for (Eigen::Index f = 0; f < FX.rows(); ++f)
+      for (int k = 0; k < 3; ++k)
+        if (FX(f, k) < -1 || FX(f, k) >= rows)
+          throw InvalidArgument(std::string("write_mesh: ") + name + " row " + std::to_string(f) + " has index " +
+                                std::to_string(FX(f, k)) + " outside [-1, " + std::to_string(rows) + ") of " + table);
+  };
+  check(mesh.FTC, mesh.TC.rows(), "FTC", "TC");
+  check(mesh.FN, mesh.N.rows(), "FN", "N");
+  if (mesh.face_polygon.size() != 0 && mesh.face_polygon.size() != mesh.F.rows())
+    throw InvalidArgument("write_mesh: face_polygon has " + std::to_string(mesh.face_polygon.size()) +
+                          " entries for " + std::to_string(mesh.F.rows()) + " faces");
+}
+
 }  // namespace
 
 RawMesh read_raw(const std::filesystem::path& path, ReadReport* report) {
@@ -141,8 +162,8 @@ RawMesh read_raw(const std::filesystem::path& path, ReadReport* report) {
 
 namespace {
 
-// Fans every polygon of `raw` from its first corner into `F`; counts the fanned ones in `report`.
-Faces fan_polygons(const RawMesh& raw, ReadReport* report) {
+// Checks the polygons of `raw` and counts the triangles their fans make; notes the fanned ones.
+std::size_t count_fan_triangles(const RawMesh& raw, ReadReport* report, bool& has_polygons) {
   const std::size_t polygons = raw.polygon_offsets.size() - 1;
   std::size_t triangles = 0;
   int fanned = 0;
@@ -154,13 +175,7 @@ Faces fan_polygons(const RawMesh& raw, ReadReport* report) {
     triangles += static_cast<std::size_t>(corners - 2);
     fanned += corners > 3;
   }
-  Faces F(static_cast<Eigen::Index>(triangles), 3);
-  Eigen::Index f = 0;
-  for (std::size_t p = 0; p < polygons; ++p) {
-    const int* corner = raw.polygon_indices.data() + raw.polygon_offsets[p];
-    const int corners = raw.polygon_offsets[p + 1] - raw.polygon_offsets[p];
-    for (int k = 1; k + 1 < corners; ++k) F.row(f++) << corner[0], corner[k], corner[k + 1];
-  }
+  has_polygons = fanned > 0;
   if (report && fanned > 0) {
     const int added = static_cast<int>(triangles - polygons);
     report->polygons_triangulated += fanned;
@@ -168,26 +183,61 @@ Faces fan_polygons(const RawMesh& raw, ReadReport* report) {
     report->notes.push_back("triangulated " + std::to_string(fanned) + " polygons with more than 3 corners "
                             "into fans (" + std::to_string(added) + " extra triangles)");
   }
-  return F;
+  return triangles;
+}
+
+// Fans the per-corner array `corner` (vertex, texture or normal indices) like the polygons of `raw`;
+// entries outside [0, table_rows) become -1 unless table_rows < 0 (vertex indices stay unchecked).
+Faces fan(const RawMesh& raw, const std::vector<int>& corner, std::size_t triangles, Eigen::Index table_rows) {
+  const auto checked = [&](int i) { return table_rows < 0 || (i >= 0 && i < table_rows) ? i : -1; };
+  Faces out(static_cast<Eigen::Index>(triangles), 3);
+  Eigen::Index f = 0;
+  for (std::size_t p = 0; p + 1 < raw.polygon_offsets.size(); ++p) {
+    const int* c = corner.data() + raw.polygon_offsets[p];
+    const int corners = raw.polygon_offsets[p + 1] - raw.polygon_offsets[p];
+    for (int k = 1; k + 1 < corners; ++k) out.row(f++) << checked(c[0]), checked(c[k]), checked(c[k + 1]);
+  }
+  return out;
+}
+
+// Everything of `mesh` that triangulate derives from the polygons: F, FTC, FN, face_polygon.
+void fan_polygons(const RawMesh& raw, ReadReport* report, Mesh& mesh) {
+  bool has_polygons = false;
+  const std::size_t triangles = count_fan_triangles(raw, report, has_polygons);
+  mesh.F = fan(raw, raw.polygon_indices, triangles, -1);
+  if (raw.corner_tc.size() == raw.polygon_indices.size() && !raw.corner_tc.empty())
+    mesh.FTC = fan(raw, raw.corner_tc, triangles, raw.TC.rows());
+  if (raw.corner_n.size() == raw.polygon_indices.size() && !raw.corner_n.empty())
+    mesh.FN = fan(raw, raw.corner_n, triangles, raw.N.rows());
+  if (!has_polygons) return;
+  mesh.face_polygon.resize(static_cast<Eigen::Index>(triangles));
+  Eigen::Index f = 0;
+  for (std::size_t p = 0; p + 1 < raw.polygon_offsets.size(); ++p)
+    for (int k = raw.polygon_offsets[p] + 2; k < raw.polygon_offsets[p + 1]; ++k)
+      mesh.face_polygon[f++] = static_cast<int>(p);
 }
 
 }  // namespace
 
 Mesh triangulate(const RawMesh& raw, ReadReport* report) {
   Mesh mesh;
-  mesh.F = fan_polygons(raw, report);
+  fan_polygons(raw, report, mesh);
   mesh.V = raw.V;
   mesh.vertex_scalars = raw.vertex_scalars;
   mesh.vertex_colors = raw.vertex_colors;
+  if (mesh.FTC.rows() > 0) mesh.TC = raw.TC;
+  if (mesh.FN.rows() > 0) mesh.N = raw.N;
   return mesh;
 }
 
 Mesh triangulate(RawMesh&& raw, ReadReport* report) {
   Mesh mesh;
-  mesh.F = fan_polygons(raw, report);
+  fan_polygons(raw, report, mesh);
   mesh.V = std::move(raw.V);
   mesh.vertex_scalars = std::move(raw.vertex_scalars);
   mesh.vertex_colors = std::move(raw.vertex_colors);
+  if (mesh.FTC.rows() > 0) mesh.TC = std::move(raw.TC);
+  if (mesh.FN.rows() > 0) mesh.N = std::move(raw.N);
   return mesh;
 }
 
@@ -195,17 +245,21 @@ Mesh read_mesh(const std::filesystem::path& path, ReadReport* report) {
   return triangulate(read_raw(path, report), report);
 }
 
-void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const WriteOptions& options) {
+void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const WriteOptions& options,
+                WriteReport* report) {
   const Format format = format_of(path, "write_mesh");
   check_writable(mesh);
+  check_corner_attributes(mesh);
   std::string bytes;
+  std::vector<std::string> notes;
   switch (format) {
-    case Format::kObj: io_detail::write_obj(mesh, bytes); break;
-    case Format::kOff: io_detail::write_off(mesh, bytes); break;
-    case Format::kPly: io_detail::write_ply(mesh, options.binary, bytes); break;
-    case Format::kStl: io_detail::write_stl(mesh, options.binary, bytes); break;
+    case Format::kObj: io_detail::write_obj(mesh, bytes, notes); break;
+    case Format::kOff: io_detail::write_off(mesh, bytes, notes); break;
+    case Format::kPly: io_detail::write_ply(mesh, options.binary, bytes, notes); break;
+    case Format::kStl: io_detail::write_stl(mesh, options.binary, bytes, notes); break;
   }
   write_file_atomically(path, bytes, "write_mesh");
+  if (report) report->notes.insert(report->notes.end(), notes.begin(), notes.end());
 }
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& bytes,

@@ -83,12 +83,37 @@ RawMesh read_stl(const Source& source, ReadReport& report);
 void append_number(std::string& out, double value, int digits = 17);
 void append_number(std::string& out, long long value);
 
-/// Appends one ASCII line "3 i j k" per face: the face lists of OFF and ASCII PLY are the same.
-void append_triangle_lines(const Mesh& mesh, std::string& out);
+/// The faces a writer gives back: the mesh's polygons (face_polygon) where they are intact, its
+/// triangles elsewhere. Corner c of polygon p is offsets[p] + c in the three corner arrays.
+struct OutputPolygons {
+  std::vector<int> offsets{0};
+  std::vector<int> vertex;  ///< vertex index of each corner
+  std::vector<int> tc;      ///< row of TC of each corner, -1: none (all -1 without FTC)
+  std::vector<int> normal;  ///< row of N of each corner, -1: none (all -1 without FN)
 
-void write_obj(const Mesh& mesh, std::string& out);
-void write_off(const Mesh& mesh, std::string& out);
-void write_ply(const Mesh& mesh, bool binary, std::string& out);
-void write_stl(const Mesh& mesh, bool binary, std::string& out);
+  int size() const { return static_cast<int>(offsets.size()) - 1; }
+  int corners(int p) const { return offsets[p + 1] - offsets[p]; }
+};
+
+/// Rebuilds the polygons of face_polygon: a run of consecutive triangles that holds every triangle
+/// of its polygon and forms its fan (or the fan reversed, as orienting flips it), with the same
+/// texture/normal index wherever two of them share a corner, becomes one polygon again; any other
+/// triangle stays a triangle.
+OutputPolygons output_polygons(const Mesh& mesh);
+
+/// Appends one ASCII line "n i j k ..." per polygon: the face lists of OFF and ASCII PLY are the same.
+void append_polygon_lines(const OutputPolygons& polygons, std::string& out);
+
+using Table = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+/// One value per vertex from per-corner indices FX into a table of `rows` rows: `of_vertex[v]` is
+/// the row every corner of v uses (-1 for a vertex of no face). False when a corner of a face has
+/// none, or when two corners of a vertex use rows with different values (a seam, a crease).
+bool per_vertex_rows(const Mesh& mesh, const Faces& FX, const Eigen::Ref<const Table>& table,
+                     std::vector<int>& of_vertex);
+
+void write_obj(const Mesh& mesh, std::string& out, std::vector<std::string>& notes);
+void write_off(const Mesh& mesh, std::string& out, std::vector<std::string>& notes);
+void write_ply(const Mesh& mesh, bool binary, std::string& out, std::vector<std::string>& notes);
+void write_stl(const Mesh& mesh, bool binary, std::string& out, std::vector<std::string>& notes);
 
 }  // namespace fairsurf::io_detail

@@ -117,12 +117,13 @@ class OffReader {
 
 RawMesh read_off(const Source& source, ReadReport& report) { return OffReader(source, report).read(); }
 
-void write_off(const Mesh& mesh, std::string& out) {
-  out.reserve(static_cast<std::size_t>(mesh.V.rows()) * 62 + static_cast<std::size_t>(mesh.F.rows()) * 24 + 32);
+void write_off(const Mesh& mesh, std::string& out, std::vector<std::string>& notes) {
+  const OutputPolygons polygons = output_polygons(mesh);
+  out.reserve(static_cast<std::size_t>(mesh.V.rows()) * 62 + polygons.vertex.size() * 8 + 32);
   out += "OFF\n";
   append_number(out, static_cast<long long>(mesh.V.rows()));
   out += ' ';
-  append_number(out, static_cast<long long>(mesh.F.rows()));
+  append_number(out, static_cast<long long>(polygons.size()));
   out += " 0\n";
   for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
     for (int k = 0; k < 3; ++k) {
@@ -131,7 +132,11 @@ void write_off(const Mesh& mesh, std::string& out) {
     }
     out += '\n';
   }
-  append_triangle_lines(mesh, out);
+  append_polygon_lines(polygons, out);
+  // OFF's vertex lines could carry one normal or texture coordinate per vertex, but few readers
+  // agree on the layout (NOFF, STOFF): OBJ keeps them per corner.
+  if (mesh.FTC.rows() > 0) notes.push_back("texture coordinates not written: OFF has no place for them (OBJ keeps them)");
+  if (mesh.FN.rows() > 0) notes.push_back("normals not written: OFF has no place for them (OBJ keeps them)");
 }
 
 }  // namespace fairsurf::io_detail

@@ -1,5 +1,6 @@
-// Stanford PLY: ascii, binary_little_endian and binary_big_endian. The `vertex` element gives
-// positions (x, y, z), colours (uchar red, green, blue) and extra scalars; the `face` element's
+// Stanford PLY reading (io_ply_write.cpp writes): ascii, binary_little_endian and binary_big_endian. The `vertex` element gives
+// positions (x, y, z), colours (uchar red, green, blue), normals (nx, ny, nz), texture coordinates
+// (u, v or s, t or texture_u, texture_v) and extra scalars; the `face` element's
 // vertex_indices (or vertex_index) list gives polygons; everything else is skipped. One templated
 // reading loop per encoding keeps the binary path a plain sequence of bounded loads.
 #include "io_formats.h"
@@ -251,7 +252,32 @@ class BinaryCursor {
 };
 
 // What a vertex property becomes.
-enum class Role { kX, kY, kZ, kRed, kGreen, kBlue, kScalar, kSkip };
+enum class Role { kX, kY, kZ, kRed, kGreen, kBlue, kU, kV, kNx, kNy, kNz, kScalar, kSkip };
+
+// The names texture coordinates go by in PLY files (MeshLab, Blender, VCG write the first ones).
+constexpr std::pair<const char*, const char*> kTextureNames[] = {
+    {"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
+
+bool has_scalar(const Element& element, std::string_view name) {
+  return std::any_of(element.properties.begin(), element.properties.end(),
+                     [&](const Property& p) { return p.name == name && !p.is_list; });
+}
+
+// The role of a vertex property named `name` among the texture and normal roles, kScalar if none.
+Role attribute_role(const Element& element, const std::string& name) {
+  for (const auto& [u, v] : kTextureNames)
+    if (has_scalar(element, u) && has_scalar(element, v)) {
+      if (name == u) return Role::kU;
+      if (name == v) return Role::kV;
+      break;
+    }
+  if (has_scalar(element, "nx") && has_scalar(element, "ny") && has_scalar(element, "nz")) {
+    if (name == "nx") return Role::kNx;
+    if (name == "ny") return Role::kNy;
+    if (name == "nz") return Role::kNz;
+  }
+  return Role::kScalar;
+}
 
 struct VertexLayout {
   std::vector<Role> roles;
@@ -286,6 +312,9 @@ class PlyReader {
       }
     }
     if (!has_vertices) source_.fail("no 'vertex' element");
+    // Per-vertex values: every corner uses its vertex's row.
+    if (raw_.TC.rows() > 0) raw_.corner_tc = raw_.polygon_indices;
+    if (raw_.N.rows() > 0) raw_.corner_n = raw_.polygon_indices;
     if (!cursor_.only_whitespace_left()) report_.notes.push_back("ignored data after the last element");
     return std::move(raw_);
   }
@@ -309,6 +338,7 @@ class PlyReader {
       else if (has_colors && p.name == "red") role = Role::kRed;
       else if (has_colors && p.name == "green") role = Role::kGreen;
       else if (has_colors && p.name == "blue") role = Role::kBlue;
+      else role = attribute_role(element, p.name);
       if (role <= Role::kZ) has_xyz[static_cast<int>(role)] = true;
       if (role == Role::kSkip) report_.notes.push_back("skipped vertex list property '" + p.name + "'");
       layout.roles.push_back(role);
@@ -329,8 +359,12 @@ class PlyReader {
     const auto rows = static_cast<Eigen::Index>(
         safe_reserve(element.count, cursor_.remaining(), min_record_bytes(element)));
     raw_.V.resize(rows, 3);
-    if (std::find(layout.roles.begin(), layout.roles.end(), Role::kRed) != layout.roles.end())
-      raw_.vertex_colors.resize(rows, 3);
+    const auto has_role = [&](Role role) {
+      return std::find(layout.roles.begin(), layout.roles.end(), role) != layout.roles.end();
+    };
+    if (has_role(Role::kRed)) raw_.vertex_colors.resize(rows, 3);
+    if (has_role(Role::kU)) raw_.TC.resize(rows, 2);
+    if (has_role(Role::kNx)) raw_.N.resize(rows, 3);
     for (Eigen::VectorXd* s : layout.scalars)
       if (s) s->resize(rows);
     const std::size_t n = element.properties.size();
@@ -345,6 +379,10 @@ class PlyReader {
           raw_.V(done, static_cast<int>(role)) = cursor_.scalar(property.type);
         } else if (role == Role::kScalar) {
           (*layout.scalars[p])(done) = cursor_.scalar(property.type);
+        } else if (role == Role::kU || role == Role::kV) {
+          raw_.TC(done, static_cast<int>(role) - static_cast<int>(Role::kU)) = cursor_.scalar(property.type);
+        } else if (role >= Role::kNx) {
+          raw_.N(done, static_cast<int>(role) - static_cast<int>(Role::kNx)) = cursor_.scalar(property.type);
         } else {
           raw_.vertex_colors(done, static_cast<int>(role) - static_cast<int>(Role::kRed)) =
               static_cast<std::uint8_t>(cursor_.integer(property.type));
@@ -412,72 +450,6 @@ RawMesh read_with(const Source& source, const Header& header, ReadReport& report
   return PlyReader<Cursor>(source, header, report).read();
 }
 
-// Little-endian bytes of `value`, whatever the host.
-template <typename T>
-void put(std::string& out, T value) {
-  unsigned char bytes[sizeof(T)];
-  std::memcpy(bytes, &value, sizeof(T));
-  if constexpr (std::endian::native == std::endian::big) std::reverse(bytes, bytes + sizeof(T));
-  out.append(reinterpret_cast<const char*>(bytes), sizeof(T));
-}
-
-bool is_reserved_name(const std::string& name) {
-  return name == "x" || name == "y" || name == "z" || name == "red" || name == "green" || name == "blue";
-}
-
-void write_header(const Mesh& mesh, bool binary, std::string& out) {
-  out += "ply\nformat ";
-  out += binary ? "binary_little_endian" : "ascii";
-  out += " 1.0\ncomment written by fairsurf\nelement vertex " + std::to_string(mesh.V.rows()) +
-         "\nproperty double x\nproperty double y\nproperty double z\n";
-  for (const auto& [name, values] : mesh.vertex_scalars) {
-    if (name.empty() || is_reserved_name(name) ||
-        std::any_of(name.begin(), name.end(), [](unsigned char c) { return c <= ' ' || c >= 127; }))
-      throw InvalidArgument("write_mesh: vertex scalar name '" + name + "' cannot be a PLY property name");
-    out += "property double " + name + "\n";
-  }
-  if (mesh.vertex_colors.rows() > 0) out += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
-  out += "element face " + std::to_string(mesh.F.rows()) +
-         "\nproperty list uchar int vertex_indices\nend_header\n";
-}
-
-void write_binary_body(const Mesh& mesh, std::string& out) {
-  const bool colors = mesh.vertex_colors.rows() > 0;
-  out.reserve(out.size() + static_cast<std::size_t>(mesh.V.rows()) * (24 + 8 * mesh.vertex_scalars.size() + 3) +
-              static_cast<std::size_t>(mesh.F.rows()) * 13);
-  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
-    for (int k = 0; k < 3; ++k) put(out, mesh.V(v, k));
-    for (const auto& entry : mesh.vertex_scalars) put(out, entry.second(v));
-    if (colors)
-      for (int k = 0; k < 3; ++k) put(out, mesh.vertex_colors(v, k));
-  }
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    put(out, std::uint8_t{3});
-    for (int k = 0; k < 3; ++k) put(out, static_cast<std::int32_t>(mesh.F(f, k)));
-  }
-}
-
-void write_ascii_body(const Mesh& mesh, std::string& out) {
-  const bool colors = mesh.vertex_colors.rows() > 0;
-  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
-    for (int k = 0; k < 3; ++k) {
-      if (k) out += ' ';
-      append_number(out, mesh.V(v, k));
-    }
-    for (const auto& entry : mesh.vertex_scalars) {
-      out += ' ';
-      append_number(out, entry.second(v));
-    }
-    if (colors)
-      for (int k = 0; k < 3; ++k) {
-        out += ' ';
-        append_number(out, static_cast<long long>(mesh.vertex_colors(v, k)));
-      }
-    out += '\n';
-  }
-  append_triangle_lines(mesh, out);
-}
-
 }  // namespace
 
 RawMesh read_ply(const Source& source, ReadReport& report) {
@@ -489,12 +461,6 @@ RawMesh read_ply(const Source& source, ReadReport& report) {
     case Encoding::kBigEndian: return read_with<BinaryCursor<kLittleHost>>(source, header, report);
   }
   source.fail("unknown PLY encoding");
-}
-
-void write_ply(const Mesh& mesh, bool binary, std::string& out) {
-  write_header(mesh, binary, out);
-  if (binary) write_binary_body(mesh, out);
-  else write_ascii_body(mesh, out);
 }
 
 }  // namespace fairsurf::io_detail

@@ -236,9 +236,12 @@ RawMesh read_stl(const Source& source, ReadReport& report) {
   return read_binary(source, report);
 }
 
-void write_stl(const Mesh& mesh, bool binary, std::string& out) {
+void write_stl(const Mesh& mesh, bool binary, std::string& out, std::vector<std::string>& notes) {
   if (binary) write_binary(mesh, out);
   else write_ascii(mesh, out);
+  if (mesh.FTC.rows() > 0) notes.push_back("texture coordinates not written: STL has no place for them");
+  if (mesh.FN.rows() > 0) notes.push_back("normals not written: STL stores one normal per triangle, its own");
+  if (mesh.face_polygon.size() > 0) notes.push_back("polygons written as their triangles: STL stores triangles only");
 }
 
 }  // namespace fairsurf::io_detail

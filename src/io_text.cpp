@@ -114,15 +114,4 @@ void append_number(std::string& out, long long value) {
   out.append(buffer, result.ptr);
 }
 
-void append_triangle_lines(const Mesh& mesh, std::string& out) {
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    out += '3';
-    for (int k = 0; k < 3; ++k) {
-      out += ' ';
-      append_number(out, static_cast<long long>(mesh.F(f, k)));
-    }
-    out += '\n';
-  }
-}
-
 }  // namespace fairsurf::io_detail

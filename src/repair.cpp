@@ -1,3 +1,4 @@
+#include <fairsurf/mesh_attributes.h>
 #include <fairsurf/repair.h>
 
 #include "repair_internal.h"
@@ -46,6 +47,7 @@ void store(const Work& work, bool remove_unreferenced, Mesh& mesh, RepairReport&
     out.vertex_colors.resize(kept, 3);
     for (int i = 0; i < kept; ++i) out.vertex_colors.row(i) = mesh.vertex_colors.row(source[i]);
   }
+  carry_face_attributes(mesh, source, out);
   mesh = std::move(out);
 }
 

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "analytic_meshes.h"
 #include "test_support.h"
@@ -144,4 +146,43 @@ TEST(FairRegion, RejectsBadInput) {
   }
   m.F(0, 1) = m.F(0, 0);
   EXPECT_THROW(fair_region(m, std::vector<int>{1}), InvalidMeshError);
+}
+
+// A flow that throws under the linear floor leaves the linear solution, and its report keeps the
+// well-posedness the flow's error carries: f = K is not parabolic where K < 0, all over a saddle.
+TEST(FairRegion, AFailedFlowUnderTheFloorKeepsItsWellPosedness) {
+  Mesh mesh = test::saddle_patch(16, 1.0);
+  std::vector<int> free;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (mesh.V.row(v).head<2>().norm() < 0.35) free.push_back(v);
+  FairRegionOptions options = FairRegionOptions::harmonic_started();
+  options.held_out_rings = 0;
+  options.flow.functions = {"K"};
+  options.flow.step_kind = FlowStepKind::implicit_flow;
+  options.flow.step_control.max_displacement_ratio = 1e-12;  // every step is rejected: the flow throws at once
+  options.flow.step_control.max_consecutive_rejections = 0;
+  const FairRegionReport report = fair_region(mesh, free, options);
+  EXPECT_TRUE(report.linear);
+  EXPECT_NE(report.note.find("flow failed (run_flow"), std::string::npos) << report.note;
+  EXPECT_GT(report.flow.well_posedness.vertices, 0);
+  EXPECT_GT(report.flow.well_posedness.violating_vertices, 0);
+}
+
+// The same failure in the held-out trial (fill's check): the flow that was weighed keeps its figure.
+TEST(FairRegion, AHeldOutTrialThatFailsKeepsItsWellPosedness) {
+  Mesh mesh = test::saddle_patch(16, 1.0);
+  std::vector<int> free;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (mesh.V.row(v).head<2>().norm() < 0.35) free.push_back(v);
+  FairRegionOptions options = FairRegionOptions::harmonic_started();
+  options.held_out_rings = 2;
+  options.flow.functions = {"K"};
+  options.flow.step_kind = FlowStepKind::implicit_flow;
+  options.flow.step_control.max_displacement_ratio = 1e-12;
+  options.flow.step_control.max_consecutive_rejections = 0;
+  const FairRegionReport report = fair_region(mesh, free, options);
+  EXPECT_TRUE(report.linear);
+  EXPECT_NE(report.note.find("re-predicts"), std::string::npos) << report.note;
+  EXPECT_TRUE(std::isinf(report.held_out_flow_error));
+  EXPECT_GT(report.flow.well_posedness.violating_vertices, 0);
 }

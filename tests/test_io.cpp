@@ -96,7 +96,10 @@ TEST_F(IoTest, ReadsBundledFilesWithTheirDocumentedCountsAndOrder) {
   EXPECT_EQ(spot.V(0, 0), 0.348799);
   EXPECT_EQ(spot.V(18, 2), 0.951731);
   EXPECT_EQ(spot_report.polygons_triangulated, 0);
-  EXPECT_FALSE(spot_report.notes.empty());  // vt lines and f v/vt corners are reported
+  EXPECT_TRUE(spot_report.notes.empty());  // its vt lines and v/vt corners are read, not ignored
+  EXPECT_EQ(spot.TC.rows(), 3225);
+  EXPECT_EQ(spot.FTC.rows(), spot.num_faces());
+  EXPECT_EQ(spot.FN.rows(), 0);
 }
 
 TEST_F(IoTest, ExactFormatsRoundTripBitExactly) {
@@ -238,11 +241,12 @@ TEST_F(IoTest, PolygonsAreFannedFromTheirFirstCornerAndCounted) {
   EXPECT_EQ(report.triangles_added, 1 + 2);
   EXPECT_EQ(report.notes, (std::vector<std::string>{
                               "ignored 1 comment lines (first at line 1)",
-                              "ignored 1 'vt' lines (first at line 7)",
-                              "ignored 1 'vn' lines (first at line 8)",
                               "ignored 1 'g' lines (first at line 9)",
-                              "ignored 12 texture/normal indices in 'f' corners (first at line 10)",
                               "triangulated 2 polygons with more than 3 corners into fans (3 extra triangles)"}));
+  // Texture and normal indices follow their corners through the fans; -1 where a corner has none.
+  EXPECT_EQ(m.FTC, (Faces(6, 3) << 0, 0, 0, 0, 0, 0, -1, -1, -1, 0, 0, 0, 0, 0, 0, 0, 0, 0).finished());
+  EXPECT_EQ(m.FN, (Faces(6, 3) << -1, -1, -1, -1, -1, -1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0).finished());
+  EXPECT_EQ(m.face_polygon, (Eigen::VectorXi(6) << 0, 0, 1, 2, 2, 2).finished());
 
   const fs::path off = write_file("poly.off", "COFF\n# comment\n4 1 0\n0 0 0 255 0 0\n1 0 0 1 2 3\n1 1 0\n0 1 0\n"
                                               "4 0 1 2 3 0.5 0.5 0.5 1\n");

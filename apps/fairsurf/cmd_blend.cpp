@@ -66,6 +66,7 @@ void run_blend(const BlendArgs& args) {
   const std::string input_name = args.inputs.size() == 2 ? "the two inputs" : args.inputs[0];
   const bool had_vertex_data = has_vertex_data(mesh);
   const auto repaired = repair_input(mesh, f.repair, input_name);
+  const int input_faces = mesh.num_faces();
 
   FlowCommandRun run("blend", f.log, f.quiet,
                      {{"command", "blend"},
@@ -77,7 +78,8 @@ void run_blend(const BlendArgs& args) {
       run.run([&] { return blend_loops(mesh, options, run.observer()); }, mesh, args.output);
   if (report.fair.method == FairMethod::flow) warn_if_not_parabolic(report.fair.flow);
   note_vertex_data_dropped(had_vertex_data, mesh, input_name, "blend");
-  write_output([&] { write_mesh(args.output, mesh); });
+  note_new_faces(mesh, input_faces, input_name, "blend");
+  write_mesh_output(args.output, mesh);
   run.finish(nlohmann::json{{"loops_found", report.loops_found},
               {"automatic", report.automatic},
               {"loop_distance", report.loop_distance},

@@ -23,7 +23,7 @@ void run_convert(const ConvertArgs& args) {
   const Mesh mesh = read_input(args.input);
   WriteOptions options;
   options.binary = !args.ascii;
-  write_output([&] { write_mesh(args.output, mesh, options); });
+  write_mesh_output(args.output, mesh, options);
   if (lower_extension(args.output) == ".stl")
     std::cout << "wrote " << args.output << ": " << mesh.num_faces()
               << " triangles (STL stores 3 corners per triangle, no shared vertices)\n";

@@ -107,7 +107,7 @@ void print_text(const CurvatureArgs& args, const Mesh& mesh, const QuadraticFits
 }
 
 void print_json(const CurvatureArgs& args, const Mesh& mesh, const QuadraticFits& fits,
-                const std::optional<RepairReport>& repaired) {
+                const std::optional<RepairReport>& repaired, const std::vector<std::string>& write_notes) {
   const std::vector<int> counts = fits.status_counts();
   const int ok = counts[static_cast<int>(FitStatus::kOk)];
   nlohmann::ordered_json j;
@@ -115,6 +115,7 @@ void print_json(const CurvatureArgs& args, const Mesh& mesh, const QuadraticFits
   j["output"] = args.output;
   j["vertices"] = mesh.num_vertices();
   j["repair"] = repair_json(repaired);
+  j["write_notes"] = write_notes;  // what the PLY output could not hold (the text mode prints them)
   j["flip_sign"] = args.flip_sign;
   j["sign_convention"] = args.flip_sign ? "H > 0 on a sphere with outward normals (flipped)"
                                         : "H < 0 on a sphere with outward normals (H = -1/R)";
@@ -157,14 +158,11 @@ void run_curvature(const CurvatureArgs& args) {
   for (int i = 0; i < mesh.num_vertices(); ++i) status[i] = static_cast<double>(fits.status[i]);
   mesh.vertex_scalars["fit_status"] = std::move(status);
   if (args.flip_sign) flip_sign(mesh);
-  try {
-    write_mesh(args.output, mesh);
-  } catch (const IoError& e) {
-    throw CliError(kOutputError, e.what());
-  }
+  std::vector<std::string> write_notes;
+  write_mesh_output(args.output, mesh, {}, args.json ? &write_notes : nullptr);
 
   if (args.json)
-    print_json(args, mesh, fits, repaired);
+    print_json(args, mesh, fits, repaired, write_notes);
   else
     print_text(args, mesh, fits);
 }

@@ -66,7 +66,7 @@ void run_fair(const FairArgs& args) {
   const FairRegionReport report =
       run.run([&] { return fair_region(mesh, region, options, run.observer()); }, mesh, args.output);
   if (report.method == FairMethod::flow) warn_if_not_parabolic(report.flow);
-  write_output([&] { write_mesh(args.output, mesh); });
+  write_mesh_output(args.output, mesh);
   run.finish(to_json(report));
   std::printf("faired %s: %d free vertices, %s; border (%d vertices): max normal angle %s, max H jump "
               "%.3g; %.2f s; wrote %s\n",

@@ -152,8 +152,9 @@ void run_fill(const FillArgs& args) {
   FillReport report = fill_holes(mesh, options, observer);
   if (progress) std::fputc('\n', stderr);
   note_vertex_data_dropped(had_vertex_data, mesh, args.input, "fill");
+  note_new_faces(mesh, report.input_faces, args.input, "fill");
 
-  write_output([&] { write_mesh(args.output, mesh); });
+  write_mesh_output(args.output, mesh);
   if (!args.log.empty()) {
     nlohmann::json log{{"command", "fill"},
                        {"input", args.input},

@@ -38,8 +38,38 @@ std::string genus_text(const MeshSummary& s, const ValidationReport& report) {
   return report.manifold() ? "undefined (non-orientable)" : "undefined (non-manifold)";
 }
 
+// What the file holds beyond positions and triangles: what the commands keep (docs/cli.md).
+struct Held {
+  int texture_coordinates = 0, textured_triangles = 0, normals = 0, normal_triangles = 0, polygons = 0;
+};
+
+Held held(const Mesh& mesh) {
+  Held h;
+  const auto with_all = [](const Faces& FX) {
+    int n = 0;
+    for (Eigen::Index f = 0; f < FX.rows(); ++f) n += FX.row(f).minCoeff() >= 0;
+    return n;
+  };
+  h.texture_coordinates = static_cast<int>(mesh.TC.rows());
+  h.textured_triangles = with_all(mesh.FTC);
+  h.normals = static_cast<int>(mesh.N.rows());
+  h.normal_triangles = with_all(mesh.FN);
+  const Eigen::VectorXi& p = mesh.face_polygon;  // polygons of 4 or more corners: runs of 2+ triangles
+  for (Eigen::Index f = 1; f < p.size(); ++f) h.polygons += p[f] >= 0 && p[f] == p[f - 1] && (f == 1 || p[f - 2] != p[f]);
+  return h;
+}
+
+void print_held(const Held& h, int faces) {
+  if (h.texture_coordinates > 0)
+    std::cout << "texture coordinates: " << h.texture_coordinates << " (on " << h.textured_triangles << " of "
+              << faces << " triangles)\n";
+  if (h.normals > 0)
+    std::cout << "normals: " << h.normals << " (on " << h.normal_triangles << " of " << faces << " triangles)\n";
+  if (h.polygons > 0) std::cout << "polygons of 4 or more corners: " << h.polygons << "\n";
+}
+
 void print_text(const std::string& path, const ReadReport& read, const MeshSummary& s,
-                const ValidationReport& report) {
+                const ValidationReport& report, const Held& h) {
   std::cout << "mesh: " << path << "\n"
             << "vertices: " << s.vertices << " (" << s.referenced_vertices << " referenced)\n"
             << "faces: " << s.faces << "\n"
@@ -58,6 +88,7 @@ void print_text(const std::string& path, const ReadReport& read, const MeshSumma
   std::cout << "mean edge length: " << s.mean_edge_length << "\n"
             << "manifold: " << (report.manifold() ? "yes" : "no") << "\n"
             << "orientable: " << (report.orientable() ? "yes" : "no") << "\n";
+  print_held(h, s.faces);
   if (read.polygons_triangulated > 0)
     std::cout << "read: " << read.polygons_triangulated << " polygons triangulated ("
               << read.triangles_added << " triangles added)\n";
@@ -83,7 +114,7 @@ nlohmann::json examples_json(const Finding& f) {
 }
 
 nlohmann::json to_json(const std::string& path, const ReadReport& read, const MeshSummary& s,
-                       const ValidationReport& report) {
+                       const ValidationReport& report, const Held& h) {
   nlohmann::json j;
   j["file"] = path;
   j["vertices"] = s.vertices;
@@ -115,6 +146,11 @@ nlohmann::json to_json(const std::string& path, const ReadReport& read, const Me
   j["polygons_triangulated"] = read.polygons_triangulated;
   j["triangles_added"] = read.triangles_added;
   j["read_notes"] = read.notes;
+  j["texture_coordinates"] = h.texture_coordinates;
+  j["textured_triangles"] = h.textured_triangles;
+  j["normals"] = h.normals;
+  j["normal_triangles"] = h.normal_triangles;
+  j["polygons"] = h.polygons;
   return j;
 }
 
@@ -123,10 +159,11 @@ void run_info(const InfoArgs& args) {
   const Mesh mesh = read_mesh(args.mesh, &read);
   const ValidationReport report = validate(mesh);
   const MeshSummary summary = summarize(mesh, report);
+  const Held h = held(mesh);
   if (args.json)
-    std::cout << to_json(args.mesh, read, summary, report).dump(2) << "\n";
+    std::cout << to_json(args.mesh, read, summary, report, h).dump(2) << "\n";
   else
-    print_text(args.mesh, read, summary, report);
+    print_text(args.mesh, read, summary, report, h);
   std::cout.flush();
   const int kinds = finding_count(report);
   if (args.strict && kinds > 0)

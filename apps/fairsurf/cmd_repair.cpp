@@ -60,7 +60,7 @@ void run_repair(const RepairArgs& args) {
   if (mesh.num_faces() == 0)
     throw InvalidMeshError("repair: " + args.input + " has no valid face, nothing to write");
   const ValidationReport left = validate(mesh);
-  write_output([&] { write_mesh(args.output, mesh); });
+  write_mesh_output(args.output, mesh);
   if (args.json) {
     nlohmann::json j = to_json(report);
     j["file"] = args.input;

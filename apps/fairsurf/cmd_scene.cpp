@@ -24,7 +24,7 @@ void run_scene(const SceneArgs& args) {
   if (!scene.free_vertices.empty() && lower_extension(args.output) != ".ply")
     throw CliError(kUsage, "scene: " + args.name + " marks its free region with the vertex property 'free', "
                                "which only PLY carries; name the output .ply (got '" + args.output + "')");
-  write_output([&] { write_mesh(args.output, scene.mesh); });
+  write_mesh_output(args.output, scene.mesh);
   std::printf("%s\n", scene.description.c_str());
   if (!scene.free_vertices.empty())
     std::printf("free region: %zu of %d vertices (vertex property 'free'; fairsurf fair %s -o OUT "

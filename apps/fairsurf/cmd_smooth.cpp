@@ -96,7 +96,7 @@ void run_smooth(const SmoothArgs& args) {
                      options.flow.step_kind);
   const FlowReport report = run.run([&] { return smooth(mesh, options, run.observer()); }, mesh, args.output);
   warn_if_not_parabolic(report);
-  write_output([&] { write_mesh(args.output, mesh); });
+  write_mesh_output(args.output, mesh);
   run.finish(to_json(report));
   std::printf("smoothed %s: %s flow, %d steps (%d rejected) to t = %.3g (%s); energy %.4g -> %.4g; "
               "max|V| %.3g -> %.3g; %d free vertices; wrote %s\n",

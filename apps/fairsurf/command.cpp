@@ -1,6 +1,7 @@
 #include "command.h"
 
 #include <fairsurf/io.h>
+#include <fairsurf/mesh_attributes.h>
 
 #include <unistd.h>
 
@@ -151,6 +152,33 @@ void note_vertex_data_dropped(bool input_had, const Mesh& output, const std::str
   if (input_had && !has_vertex_data(output))
     std::cerr << "fairsurf: note: " << path << ": the output has no vertex properties or colours: the new "
               << "vertices have none, so " << command << " drops them all\n";
+}
+
+void write_mesh_output(const std::string& path, const Mesh& mesh, const WriteOptions& options,
+                       std::vector<std::string>* notes) {
+  WriteReport report;
+  write_output([&] { write_mesh(path, mesh, options, &report); });
+  if (notes) notes->insert(notes->end(), report.notes.begin(), report.notes.end());
+  else
+    for (const auto& note : report.notes) std::cerr << "fairsurf: note: " << path << ": " << note << "\n";
+}
+
+void refresh_normals(Mesh& mesh, const Vertices& before, const std::string& path) {
+  if (before.rows() == 0 || mesh.FN.rows() == 0) return;
+  const int recomputed = refresh_moved_normals(mesh, before);
+  if (recomputed > 0)
+    std::cerr << "fairsurf: note: " << path << ": recomputed " << recomputed << " of " << mesh.N.rows()
+              << " normals from the faces around them: their vertices moved\n";
+}
+
+void note_new_faces(const Mesh& mesh, int input_faces, const std::string& path, const std::string& command) {
+  const int added = mesh.num_faces() - input_faces;
+  std::string lacking;
+  if (mesh.FTC.rows() > 0) lacking = "texture coordinates";
+  if (mesh.FN.rows() > 0) lacking += lacking.empty() ? "normals" : " or normals";
+  if (added <= 0 || lacking.empty()) return;
+  std::cerr << "fairsurf: note: " << path << ": the " << added << " faces " << command << " added have no "
+            << lacking << "; the input's faces keep theirs\n";
 }
 
 Mesh read_input(const std::string& path) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fairsurf/errors.h>
+#include <fairsurf/io.h>
 #include <fairsurf/mesh.h>
 
 #include <CLI/CLI.hpp>
@@ -92,5 +93,20 @@ void note_vertex_data_dropped(bool input_had, const Mesh& output, const std::str
 /// Reads a mesh with read_mesh and prints each of the reader's notes to standard error as
 /// "fairsurf: note: PATH: ..." (fanned polygons, ignored lines, welded STL corners).
 Mesh read_input(const std::string& path);
+
+/// Writes `mesh` to `path` as write_output does (exit 5 on failure) and prints each of the writer's
+/// notes, what the format cannot hold, as "fairsurf: note: PATH: ..."; or, if `notes` is given (a
+/// command whose output is JSON), appends them there instead.
+void write_mesh_output(const std::string& path, const Mesh& mesh, const WriteOptions& options = {},
+                       std::vector<std::string>* notes = nullptr);
+
+/// For commands that move vertices: recomputes the stored normals of the moved vertices
+/// (refresh_moved_normals; `before` the positions they belonged to, empty for none) and says so
+/// ("fairsurf: note: PATH: recomputed N of M normals ...").
+void refresh_normals(Mesh& mesh, const Vertices& before, const std::string& path);
+
+/// For fill and blend, whose new faces have no texture coordinates, normals or polygon: says so
+/// when the input's faces (the first `input_faces`) have some.
+void note_new_faces(const Mesh& mesh, int input_faces, const std::string& path, const std::string& command);
 
 }  // namespace fairsurf::cli

@@ -98,7 +98,7 @@ void FlowCommandRun::end_progress() const {
 }
 
 void FlowCommandRun::fail(const NumericalError& e, const Mesh& mesh, const std::string& output) {
-  write_output([&] { write_mesh(output, mesh); });
+  write_mesh_output(output, mesh);
   log_["error"] = e.what();
   log_["steps"] = steps_;
   write_log();

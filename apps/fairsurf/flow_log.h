@@ -6,6 +6,8 @@
 #include <fairsurf/flow.h>
 #include <fairsurf/mesh.h>
 
+#include "command.h"
+
 #include <nlohmann/json.hpp>
 
 #include <deque>
@@ -43,17 +45,21 @@ class FlowCommandRun {
   static constexpr int kStagnationWindow = 100;
   static constexpr double kStagnantProgress = 1e-6;
 
-  /// Runs `flow` and ends the progress line. On NumericalError nothing is lost: `mesh` (the last
-  /// accepted state) is written to `output`, the log gets the error and the steps, and the command
-  /// fails with exit code 4 naming the output.
+  /// Runs `flow` on `mesh`, ends the progress line and recomputes the stored normals of the
+  /// vertices the flow moved (refresh_normals). On NumericalError nothing is lost: `mesh` (the last
+  /// accepted state, its normals recomputed) is written to `output`, the log gets the error and the
+  /// steps, and the command fails with exit code 4 naming the output.
   template <class Flow>
-  auto run(Flow&& flow, const Mesh& mesh, const std::string& output) -> decltype(flow()) {
+  auto run(Flow&& flow, Mesh& mesh, const std::string& output) -> decltype(flow()) {
+    const Vertices before = mesh.FN.rows() > 0 ? mesh.V : Vertices();
     try {
       auto result = flow();
       end_progress();
+      refresh_normals(mesh, before, output);
       return result;
     } catch (const NumericalError& e) {
       end_progress();
+      refresh_normals(mesh, before, output);
       fail(e, mesh, output);
     }
   }
