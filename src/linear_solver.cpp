@@ -65,15 +65,17 @@ const char* to_string(LinearSolverKind kind) {
     case LinearSolverKind::mumps: return "mumps";
     case LinearSolverKind::umfpack: return "umfpack";
     case LinearSolverKind::gmres: return "gmres";
+    case LinearSolverKind::mumps_mpi: return "mumps-mpi";
   }
   return "unknown";
 }
 
 LinearSolverKind parse_linear_solver_kind(const std::string& name) {
-  for (auto kind : {LinearSolverKind::mumps, LinearSolverKind::umfpack, LinearSolverKind::gmres})
+  for (auto kind : {LinearSolverKind::mumps, LinearSolverKind::umfpack, LinearSolverKind::gmres,
+                    LinearSolverKind::mumps_mpi})
     if (name == to_string(kind)) return kind;
   throw InvalidArgument("parse_linear_solver_kind: unknown solver '" + name +
-                        "' (valid: mumps, umfpack, gmres)");
+                        "' (valid: mumps, umfpack, gmres, mumps-mpi)");
 }
 
 LinearSolver::LinearSolver(const LinearSolverOptions& options) : options_(options) {}
@@ -185,6 +187,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& opti
     case LinearSolverKind::mumps: return detail::make_mumps_solver(options);
     case LinearSolverKind::umfpack: return detail::make_umfpack_solver(options);
     case LinearSolverKind::gmres: return detail::make_gmres_solver(options);
+    case LinearSolverKind::mumps_mpi: return detail::make_mumps_mpi_solver(options);
   }
   throw InvalidArgument("make_linear_solver: unknown solver kind");
 }

@@ -337,7 +337,7 @@ TEST(LinearSolver, KindNamesRoundTripAndUnknownNamesAreRejected) {
     FAIL() << "no exception";
   } catch (const InvalidArgument& e) {
     EXPECT_STREQ(e.what(),
-                 "parse_linear_solver_kind: unknown solver 'superlu' (valid: mumps, umfpack, gmres)");
+                 "parse_linear_solver_kind: unknown solver 'superlu' (valid: mumps, umfpack, gmres, mumps-mpi)");
   }
   LinearSolverOptions bad;
   bad.max_refinement_steps = -1;

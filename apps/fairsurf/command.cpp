@@ -1,5 +1,6 @@
 #include "command.h"
 
+#include <fairsurf/distributed.h>
 #include <fairsurf/io.h>
 #include <fairsurf/mesh_attributes.h>
 
@@ -143,6 +144,21 @@ void drop_shape_properties(Mesh& mesh, const std::string& path) {
     std::cerr << "fairsurf: note: " << path << ": dropped the vertex properties " << dropped
               << " (curvatures of the input's shape, stale once vertices move; run `fairsurf curvature` "
                  "on the output)\n";
+}
+
+void add_solver_option(CLI::App* cmd, std::string& solver) {
+  cmd->add_option("--solver", solver,
+                  "Linear solver: mumps (default, also 'lu'), umfpack, gmres, or mumps-mpi (MUMPS with its "
+                  "factors on every rank of `mpirun -n N fairsurf ...`)");
+}
+
+LinearSolverKind solver_kind(const std::string& name) {
+  const LinearSolverKind kind = parse_linear_solver_kind(name == "lu" ? "mumps" : name);
+  if (kind == LinearSolverKind::mumps_mpi && !distributed::built_with_mpi())
+    throw InvalidArgument(
+        "--solver mumps-mpi: this fairsurf was built without MPI (configure with -DFAIRSURF_MPI=ON, with "
+        "openmpi-bin, libopenmpi-dev and libmumps-dev installed); use --solver mumps");
+  return kind;
 }
 
 bool has_vertex_data(const Mesh& mesh) { return !mesh.vertex_scalars.empty() || mesh.vertex_colors.rows() > 0; }

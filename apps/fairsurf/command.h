@@ -4,6 +4,7 @@
 
 #include <fairsurf/errors.h>
 #include <fairsurf/io.h>
+#include <fairsurf/linear_solver.h>
 #include <fairsurf/mesh.h>
 
 #include <CLI/CLI.hpp>
@@ -81,6 +82,13 @@ void write_output(Write&& write) {
     throw CliError(kOutputError, e.what());
   }
 }
+
+/// Adds --solver to `cmd`: mumps (the default; also "lu"), umfpack, gmres, or mumps-mpi (the factors
+/// spread over the ranks of `mpirun -n N fairsurf ...`, docs/solvers.md).
+void add_solver_option(CLI::App* cmd, std::string& solver);
+/// The kind --solver names; InvalidArgument (exit 1) for an unknown one or mumps-mpi in a build
+/// without MPI.
+LinearSolverKind solver_kind(const std::string& name);
 
 /// Whether `mesh` carries PLY vertex properties or colours.
 bool has_vertex_data(const Mesh& mesh);

@@ -1,0 +1,15 @@
+# The distributed solver (`--solver mumps-mpi`, docs/solvers.md): MUMPS's MPI build (Debian's
+# libmumps-dev) over OpenMPI. FAIRSURF_MPI is ON when both are found.
+#
+# Sequential and MPI MUMPS cannot share a process: libdmumps_seq and libdmumps export the same
+# symbols (dmumps_c and ~880 others), and libmpiseq_seq defines MPI_Init, MPI_Comm_rank, ... like
+# libmpi itself. So an MPI build links MPI MUMPS only, and its `mumps` back end is that MUMPS on
+# MPI_COMM_SELF; a build without MPI links the sequential libraries and the fake mpi.h as before.
+include(CMakeDependentOption)
+find_package(MPI COMPONENTS C)
+find_library(DMUMPS_MPI_LIBRARY dmumps)
+find_library(MUMPS_MPI_COMMON_LIBRARY mumps_common)
+find_library(MUMPS_MPI_PORD_LIBRARY pord)
+find_program(MPIEXEC_EXECUTABLE NAMES mpiexec mpirun)
+cmake_dependent_option(FAIRSURF_MPI "Build the distributed solver mumps-mpi (OpenMPI, libmumps-dev)" ON
+  "MPI_C_FOUND;DMUMPS_MPI_LIBRARY;MUMPS_MPI_COMMON_LIBRARY;MUMPS_MPI_PORD_LIBRARY;MPIEXEC_EXECUTABLE" OFF)
