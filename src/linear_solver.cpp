@@ -50,6 +50,12 @@ void check_options(const LinearSolverOptions& o) {
   const auto fail = [](const std::string& what) { throw InvalidArgument("make_linear_solver: " + what); };
   if (!(o.residual_tolerance > 0)) fail("residual tolerance must be positive");
   if (o.max_refinement_steps < 0) fail("max refinement steps must be non-negative");
+  const bool mumps = o.kind == LinearSolverKind::mumps || o.kind == LinearSolverKind::mumps_mpi;
+  if (!mumps && !o.mumps_controls.empty()) fail(std::string("MUMPS controls given to ") + to_string(o.kind));
+  for (const auto& [k, value] : o.mumps_controls)
+    if (k < 1 || k > 60 || k <= 5 || k == 18 || k == 20 || k == 21)
+      fail("ICNTL(" + std::to_string(k) + ") = " + std::to_string(value) +
+           ": not a MUMPS control to pass through (1..60, except 1-5, 18, 20, 21, which the library sets)");
   if (o.kind != LinearSolverKind::gmres) return;
   if (o.gmres_restart <= 0) fail("GMRES restart must be positive");
   if (!(o.gmres_tolerance > 0)) fail("GMRES tolerance must be positive");

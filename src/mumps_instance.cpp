@@ -21,7 +21,8 @@ MumpsSettings mumps_settings(const LinearSolverOptions& options, int communicato
   return {.communicator = communicator,
           .sym = options.symmetric ? 2 : 0,  // general symmetric (LDLᵀ with pivoting), or unsymmetric
           .ordering = options.ordering == FillOrdering::minimum_degree ? 6 : 7,  // QAMD, or MUMPS chooses
-          .name = to_string(options.kind)};
+          .name = to_string(options.kind),
+          .controls = options.mumps_controls};
 }
 
 bool is_workspace_error(int code) {
@@ -57,6 +58,7 @@ MumpsInstance::MumpsInstance(const MumpsSettings& settings) : name_(settings.nam
   icntl(7) = settings.ordering;
   icntl(18) = 0;
   icntl(28) = 1;
+  for (const auto& [k, value] : settings.controls) icntl(k) = value;
 }
 
 MumpsInstance::~MumpsInstance() { call(-2); }

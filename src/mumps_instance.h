@@ -7,6 +7,7 @@
 
 #include <dmumps_c.h>
 
+#include <map>
 #include <string>
 
 namespace fairsurf::detail {
@@ -17,6 +18,7 @@ struct MumpsSettings {
   int sym = 0;           ///< 0: unsymmetric LU; 2: general symmetric LDLᵀ
   int ordering = 7;      ///< ICNTL(7): 7 MUMPS chooses, 6 QAMD
   const char* name = "mumps";  ///< the back end, for messages
+  std::map<int, int> controls{};  ///< LinearSolverOptions::mumps_controls, set after the library's
 };
 
 /// The settings `options` ask for (symmetric: LDLᵀ; minimum_degree: QAMD), named after options.kind.

@@ -29,6 +29,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <map>
 #include <memory>
 #include <string>
 
@@ -70,6 +71,12 @@ struct LinearSolverOptions {
   double residual_tolerance = 1e-12;
   /// Iterative refinement steps allowed after the first solve.
   int max_refinement_steps = 3;
+  /// mumps and mumps-mpi only: MUMPS's own controls passed through, ICNTL(k) = v (MUMPS 5.5 manual),
+  /// set after the library's settings (on rank 0: MUMPS reads controls on its host): e.g. {7, 0} AMD ordering, {14, 50} workspace
+  /// relaxation, {28, 2} parallel analysis with PT-Scotch. The controls the library owns are refused
+  /// (InvalidArgument): 1–4 (output: the library never prints), 5 (matrix format), 18 (where the
+  /// matrix is), 20 and 21 (where the right-hand side and solution are); k must be 1..60.
+  std::map<int, int> mumps_controls{};
   // GMRES + ILUT only.
   int gmres_restart = 50;             ///< Krylov subspace dimension before a restart
   /// GMRES's own (preconditioned) relative residual target; the backward-error check above, with

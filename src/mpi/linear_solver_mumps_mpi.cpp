@@ -38,6 +38,7 @@ std::unique_ptr<LinearSolver> make_mumps_mpi_solver(const LinearSolverOptions& o
   MumpsTeam team{.communicator = MPI_Comm_c2f(MPI_COMM_WORLD)};
   if (cluster().control != MPI_COMM_NULL) {
     const MumpsSettings settings = mumps_settings(options, team.communicator);
+    // MUMPS takes ICNTL from the host at each job, so the pass-through controls stay on rank 0.
     const ServeCommand created{
         .instance = cluster().next_instance++, .sym = settings.sym, .ordering = settings.ordering};
     team.announce = [created](int job, int workspace_relaxation) {

@@ -128,6 +128,18 @@ TEST_F(MpiTest, RankThatDiesEndsTheJob) {
   EXPECT_EQ(rank_exit_code(0), -1) << "rank 0 went on after its partner died";
 }
 
+TEST_F(MpiTest, MumpsControlsPassThroughUnderMpirun) {
+  // A parallel analysis on both ranks (ICNTL(28) = 2 with PT-Scotch, set on rank 0 only: MUMPS
+  // takes its controls from the host) gives the sequential result.
+  const std::string torus = quoted(test::data_path("torus.obj"));
+  EXPECT_LE(two_ranks_against_sequential("smooth " + torus + " --steps 2 --mumps-icntl 28=2 --mumps-icntl 29=1"),
+            1e-10);
+  const std::string cli = quoted(test::cli_path()) + " smooth " + torus + " --steps 1 --quiet --solver mumps-mpi -o ";
+  const Outcome refused = run(mpirun_2(cli + quoted(file("refused.ply")) + " --mumps-icntl 4=2"));
+  EXPECT_EQ(refused.exit_code, 1) << refused.out;
+  EXPECT_NE(refused.out.find("ICNTL(4) = 2: not a MUMPS control to pass through"), std::string::npos) << refused.out;
+}
+
 TEST_F(MpiTest, ServingRankEndsWithRankZero) {
   const std::string cli = quoted(test::cli_path());
   Outcome info = run(mpirun_2(cli + " info " + quoted(test::data_path("torus.obj"))));
