@@ -11,7 +11,7 @@ if ! (cd build && ctest -N -R '^python_bindings$' | grep -q 'Total Tests: 1'); t
 fi
 # Likewise the distributed solver's tests (tests/mpi, 2 ranks under mpirun): they skip without MPI.
 if ! grep -q '^FAIRSURF_MPI:BOOL=ON' build/CMakeCache.txt; then
-  echo "test.sh: FAIRSURF_MPI is off: OpenMPI or libmumps-dev not found (docs/solvers.md)" >&2
+  echo "test.sh: FAIRSURF_MPI is off: OpenMPI or libmumps-ptscotch-dev not found (docs/solvers.md)" >&2
   exit 1
 fi
 (cd build && ctest --output-on-failure -j "$(nproc)" --timeout 900)

@@ -18,7 +18,7 @@ int mumps_self_communicator() {
 std::unique_ptr<LinearSolver> make_mumps_mpi_solver(const LinearSolverOptions&) {
   throw InvalidArgument(
       "make_linear_solver: mumps-mpi: this fairsurf was built without MPI (configure with "
-      "-DFAIRSURF_MPI=ON, with OpenMPI and libmumps-dev installed); use mumps");
+      "-DFAIRSURF_MPI=ON, with OpenMPI and libmumps-ptscotch-dev installed); use mumps");
 }
 
 }  // namespace detail
