@@ -8,13 +8,26 @@ find_package(PNG REQUIRED)
 find_package(OpenMesh REQUIRED)
 find_package(BLAS REQUIRED)
 
-# MUMPS (sequential) and UMFPACK ship no CMake package in Debian: locate them directly.
+# MUMPS and UMFPACK ship no CMake package in Debian: locate them directly. MUMPS is the MPI build
+# with FAIRSURF_MPI, the sequential one otherwise (cmake/Mpi.cmake says why never both).
+include(${CMAKE_CURRENT_LIST_DIR}/Mpi.cmake)
 find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
-find_path(MUMPS_SEQ_MPI_INCLUDE_DIR mpi.h PATHS /usr/include/mumps_seq NO_DEFAULT_PATH REQUIRED)
-find_library(DMUMPS_LIBRARY dmumps_seq REQUIRED)
-find_library(MUMPS_COMMON_LIBRARY mumps_common_seq REQUIRED)
-find_library(MUMPS_PORD_LIBRARY pord_seq REQUIRED)
-find_library(MUMPS_MPISEQ_LIBRARY mpiseq_seq REQUIRED)
+add_library(fairsurf_mumps INTERFACE)
+if(FAIRSURF_MPI)
+  target_link_libraries(fairsurf_mumps INTERFACE
+    ${DMUMPS_MPI_LIBRARY} ${MUMPS_MPI_COMMON_LIBRARY} ${MUMPS_MPI_PORD_LIBRARY} MPI::MPI_C)
+  # The C API from C++ sources: without these, mpi.h pulls in the deprecated C++ bindings' library.
+  target_compile_definitions(fairsurf_mumps INTERFACE OMPI_SKIP_MPICXX MPICH_SKIP_MPICXX)
+else()
+  find_path(MUMPS_SEQ_MPI_INCLUDE_DIR mpi.h PATHS /usr/include/mumps_seq NO_DEFAULT_PATH REQUIRED)
+  find_library(DMUMPS_LIBRARY dmumps_seq REQUIRED)
+  find_library(MUMPS_COMMON_LIBRARY mumps_common_seq REQUIRED)
+  find_library(MUMPS_PORD_LIBRARY pord_seq REQUIRED)
+  find_library(MUMPS_MPISEQ_LIBRARY mpiseq_seq REQUIRED)
+  target_include_directories(fairsurf_mumps SYSTEM INTERFACE ${MUMPS_SEQ_MPI_INCLUDE_DIR})
+  target_link_libraries(fairsurf_mumps INTERFACE
+    ${DMUMPS_LIBRARY} ${MUMPS_COMMON_LIBRARY} ${MUMPS_PORD_LIBRARY} ${MUMPS_MPISEQ_LIBRARY})
+endif()
 find_path(UMFPACK_INCLUDE_DIR umfpack.h PATH_SUFFIXES suitesparse REQUIRED)
 find_library(UMFPACK_LIBRARY umfpack REQUIRED)
 find_library(AMD_LIBRARY amd REQUIRED)
@@ -24,8 +37,8 @@ find_library(METIS_LIBRARY metis REQUIRED)
 # Dependencies used only inside the library's sources: linked privately, never exported.
 add_library(fairsurf_private_deps INTERFACE)
 target_include_directories(fairsurf_private_deps SYSTEM INTERFACE
-  ${MUMPS_INCLUDE_DIR} ${MUMPS_SEQ_MPI_INCLUDE_DIR} ${UMFPACK_INCLUDE_DIR})
+  ${MUMPS_INCLUDE_DIR} ${UMFPACK_INCLUDE_DIR})
 target_link_libraries(fairsurf_private_deps INTERFACE
   OpenMP::OpenMP_CXX nlohmann_json::nlohmann_json muparser::muparser PNG::PNG OpenMeshCore
-  ${DMUMPS_LIBRARY} ${MUMPS_COMMON_LIBRARY} ${MUMPS_PORD_LIBRARY} ${MUMPS_MPISEQ_LIBRARY}
+  fairsurf_mumps
   ${UMFPACK_LIBRARY} ${AMD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY} ${METIS_LIBRARY} BLAS::BLAS)

@@ -8,7 +8,11 @@ packages=(
   libeigen3-dev            # dense + sparse linear algebra, unsupported GMRES/ILUT
   libopenmesh-dev          # halfedge editing for patch construction
   libsuitesparse-dev       # UMFPACK (umfpack_dl) sparse LU
-  libmumps-seq-dev         # sequential MUMPS sparse LU (the default solver)
+  libmumps-seq-dev         # sequential MUMPS sparse LU (the default solver; builds without MPI)
+  # MUMPS's MPI build over OpenMPI: --solver mumps-mpi spreads the factors over the ranks of
+  # `mpirun -n N fairsurf ...` (FAIRSURF_MPI, docs/solvers.md); mpirun runs its tests (tests/mpi).
+  # The PT-Scotch variant, because libmumps-dev's own build has no SCOTCH ordering (cmake/Mpi.cmake)
+  openmpi-bin libopenmpi-dev libmumps-dev libmumps-ptscotch-dev
   libmetis-dev             # fill-reducing ordering for UMFPACK
   libopenblas-dev          # BLAS under MUMPS/UMFPACK (reference BLAS is 4-5x slower)
   libcli11-dev             # command-line parsing

@@ -9,6 +9,11 @@ if ! (cd build && ctest -N -R '^python_bindings$' | grep -q 'Total Tests: 1'); t
   echo "test.sh: the Python tests are not configured (see docs/python.md)" >&2
   exit 1
 fi
+# Likewise the distributed solver's tests (tests/mpi, 2 ranks under mpirun): they skip without MPI.
+if ! grep -q '^FAIRSURF_MPI:BOOL=ON' build/CMakeCache.txt; then
+  echo "test.sh: FAIRSURF_MPI is off: OpenMPI or libmumps-ptscotch-dev not found (docs/solvers.md)" >&2
+  exit 1
+fi
 (cd build && ctest --output-on-failure -j "$(nproc)" --timeout 900)
 # Bounded fuzzing: each libFuzzer harness (readers, repair) for FUZZ_SECONDS (25 s by default), then
 # random mutations of small meshes through every CLI command for 60 s; any crash or hang fails.

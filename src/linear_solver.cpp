@@ -50,6 +50,12 @@ void check_options(const LinearSolverOptions& o) {
   const auto fail = [](const std::string& what) { throw InvalidArgument("make_linear_solver: " + what); };
   if (!(o.residual_tolerance > 0)) fail("residual tolerance must be positive");
   if (o.max_refinement_steps < 0) fail("max refinement steps must be non-negative");
+  const bool mumps = o.kind == LinearSolverKind::mumps || o.kind == LinearSolverKind::mumps_mpi;
+  if (!mumps && !o.mumps_controls.empty()) fail(std::string("MUMPS controls given to ") + to_string(o.kind));
+  for (const auto& [k, value] : o.mumps_controls)
+    if (k < 1 || k > 60 || k <= 5 || k == 18 || k == 20 || k == 21)
+      fail("ICNTL(" + std::to_string(k) + ") = " + std::to_string(value) +
+           ": not a MUMPS control to pass through (1..60, except 1-5, 18, 20, 21, which the library sets)");
   if (o.kind != LinearSolverKind::gmres) return;
   if (o.gmres_restart <= 0) fail("GMRES restart must be positive");
   if (!(o.gmres_tolerance > 0)) fail("GMRES tolerance must be positive");
@@ -65,15 +71,17 @@ const char* to_string(LinearSolverKind kind) {
     case LinearSolverKind::mumps: return "mumps";
     case LinearSolverKind::umfpack: return "umfpack";
     case LinearSolverKind::gmres: return "gmres";
+    case LinearSolverKind::mumps_mpi: return "mumps-mpi";
   }
   return "unknown";
 }
 
 LinearSolverKind parse_linear_solver_kind(const std::string& name) {
-  for (auto kind : {LinearSolverKind::mumps, LinearSolverKind::umfpack, LinearSolverKind::gmres})
+  for (auto kind : {LinearSolverKind::mumps, LinearSolverKind::umfpack, LinearSolverKind::gmres,
+                    LinearSolverKind::mumps_mpi})
     if (name == to_string(kind)) return kind;
   throw InvalidArgument("parse_linear_solver_kind: unknown solver '" + name +
-                        "' (valid: mumps, umfpack, gmres)");
+                        "' (valid: mumps, umfpack, gmres, mumps-mpi)");
 }
 
 LinearSolver::LinearSolver(const LinearSolverOptions& options) : options_(options) {}
@@ -185,6 +193,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& opti
     case LinearSolverKind::mumps: return detail::make_mumps_solver(options);
     case LinearSolverKind::umfpack: return detail::make_umfpack_solver(options);
     case LinearSolverKind::gmres: return detail::make_gmres_solver(options);
+    case LinearSolverKind::mumps_mpi: return detail::make_mumps_mpi_solver(options);
   }
   throw InvalidArgument("make_linear_solver: unknown solver kind");
 }

@@ -330,6 +330,33 @@ TEST(LinearSolver, ResidualAboveToleranceAfterRefinementThrowsWithTheFigures) {
   EXPECT_TRUE(message.ends_with("e-7 above tolerance 1e-10 after 3 refinements")) << message;
 }
 
+TEST(LinearSolver, MumpsControlsArePassedThrough) {
+  const SparseRowMatrix A = test::step_matrix_proxy(16, 1.0);
+  LinearSolverOptions options;
+  options.mumps_controls = {{7, 0}};  // AMD instead of the automatic SCOTCH
+  auto solver = make_linear_solver(options);
+  solver->analyze(A);
+  EXPECT_EQ(solver->report().ordering, "AMD");
+  solver->factorize(A);
+  EXPECT_LE(solver->report().factor_megabytes_busiest_rank, solver->report().factor_megabytes_all_ranks);
+  EXPECT_GT(solver->report().factor_megabytes_busiest_rank, 0);
+}
+
+TEST(LinearSolver, MumpsControlsTheLibraryOwnsAreRefused) {
+  LinearSolverOptions options;
+  options.mumps_controls = {{3, 6}};  // diagnostics on standard output: the library never prints
+  try {
+    make_linear_solver(options);
+    FAIL() << "no exception";
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "make_linear_solver: ICNTL(3) = 6: not a MUMPS control to pass through (1..60, except "
+                           "1-5, 18, 20, 21, which the library sets)");
+  }
+  options.mumps_controls = {{7, 0}};
+  options.kind = LinearSolverKind::umfpack;
+  EXPECT_THROW(make_linear_solver(options), InvalidArgument);
+}
+
 TEST(LinearSolver, KindNamesRoundTripAndUnknownNamesAreRejected) {
   for (auto kind : kAllKinds) EXPECT_EQ(parse_linear_solver_kind(to_string(kind)), kind);
   try {
@@ -337,7 +364,7 @@ TEST(LinearSolver, KindNamesRoundTripAndUnknownNamesAreRejected) {
     FAIL() << "no exception";
   } catch (const InvalidArgument& e) {
     EXPECT_STREQ(e.what(),
-                 "parse_linear_solver_kind: unknown solver 'superlu' (valid: mumps, umfpack, gmres)");
+                 "parse_linear_solver_kind: unknown solver 'superlu' (valid: mumps, umfpack, gmres, mumps-mpi)");
   }
   LinearSolverOptions bad;
   bad.max_refinement_steps = -1;

@@ -28,6 +28,7 @@ BlendOptions blend_options(const BlendArgs& args) {
   BlendOptions o;
   o.fair = region_fairing_options(args.fairing);
   o.patch.relax = !args.no_relax;
+  apply_solver_args(args.fairing.solver, o.patch.membrane.solver);
   o.descent_fallback = !args.no_descent_fallback;
   if (!args.loops.empty()) {
     o.loop_a = args.loops[0];

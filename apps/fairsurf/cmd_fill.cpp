@@ -22,6 +22,7 @@ namespace {
 struct FillArgs {
   std::string input, output, log;
   std::string continuity = "G2", method = "flow";
+  SolverArgs solver;
   std::vector<std::string> functions{"H"};
   std::vector<int> holes;
   int max_hole_edges = 0, max_steps = 0;
@@ -34,6 +35,9 @@ FillOptions fill_options(const FillArgs& args) {
   o.fairing.method = parse_fair_method(args.method);
   o.fairing.flow.functions = args.functions;
   if (args.max_steps > 0) o.fairing.flow.max_steps = args.max_steps;
+  // Every solve of the fill (membrane, harmonic start or floor, flow), each keeping its ordering.
+  for (LinearSolverOptions* solver : {&o.fairing.flow.solver, &o.fairing.harmonic_solver, &o.patch.membrane.solver})
+    apply_solver_args(args.solver, *solver);
   o.holes = args.holes;
   o.max_hole_edges = args.max_hole_edges;
   o.skip_largest = args.skip_largest;
@@ -214,6 +218,7 @@ void setup_fill(CLI::App& app) {
   cmd->add_flag("--skip-largest", args->skip_largest,
                 "Leave the longest loop open (the outer border of an open surface)");
   cmd->add_option("--method", args->method, "flow (default: the flow, or its linear ∆^k floor where that re-predicts the held-out rings better) or harmonic (the re-evaluated cotangent ∆^k alone, labelled C2 (linear))");
+  add_solver_options(cmd, args->solver);
   cmd->add_option("--max-steps", args->max_steps, "Stop each hole's flow after this many accepted steps (>= 1)")
       ->check(whole_number_at_least(1));
   cmd->add_option("--log", args->log, "Write a per-hole JSON report with every flow step here");

@@ -20,7 +20,7 @@ struct SmoothArgs {
   std::string input, output, log, fixed_file;
   std::string flow = "sixth";
   std::vector<std::string> functions{"H"};
-  std::string solver = "mumps";
+  SolverArgs solver;
   double tau = 0, time = 0, steady_tolerance = 1.0;
   int steps = 0, max_steps = 1000, fixed_rings = 3;
   bool steady = false, force = false, quiet = false, repair = false;
@@ -38,7 +38,7 @@ FlowKind flow_kind(const std::string& name) {
 SmoothOptions smooth_options(const SmoothArgs& args, const Mesh& mesh) {
   SmoothOptions o = scan_smoothing_options(mesh, flow_kind(args.flow));
   o.flow.functions = args.functions;
-  o.flow.solver.kind = parse_linear_solver_kind(args.solver == "lu" ? "mumps" : args.solver);
+  apply_solver_args(args.solver, o.flow.solver);
   o.flow.max_steps = args.max_steps;
   o.fixed_rings = args.fixed_rings;
   if (!args.fixed_file.empty())
@@ -143,7 +143,7 @@ void setup_smooth(CLI::App& app) {
   cmd->add_option("--fixed-rings", args->fixed_rings,
                   "Rings held fixed along the mesh border (default 3; 0 frees the border)")
       ->check(whole_number_at_least(0));
-  cmd->add_option("--solver", args->solver, "Linear solver: mumps (default, also 'lu'), umfpack or gmres");
+  add_solver_options(cmd, args->solver);
   cmd->add_option("--log", args->log, "Write a per-step JSON log here");
   add_repair_flag(cmd, args->repair);
   cmd->add_flag("--quiet", args->quiet, "No progress line");

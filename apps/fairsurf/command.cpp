@@ -1,5 +1,6 @@
 #include "command.h"
 
+#include <fairsurf/distributed.h>
 #include <fairsurf/io.h>
 #include <fairsurf/mesh_attributes.h>
 
@@ -143,6 +144,39 @@ void drop_shape_properties(Mesh& mesh, const std::string& path) {
     std::cerr << "fairsurf: note: " << path << ": dropped the vertex properties " << dropped
               << " (curvatures of the input's shape, stale once vertices move; run `fairsurf curvature` "
                  "on the output)\n";
+}
+
+void add_solver_options(CLI::App* cmd, SolverArgs& args) {
+  cmd->add_option("--solver", args.name,
+                  "Linear solver: mumps (default, also 'lu'), umfpack, gmres, or mumps-mpi (MUMPS with its "
+                  "factors on every rank of `mpirun -n N fairsurf ...`)");
+  cmd->add_option("--mumps-icntl", args.mumps_icntl,
+                  "K=V: set MUMPS's control ICNTL(K) to V (mumps, mumps-mpi; repeatable; e.g. 7=0 for AMD, "
+                  "28=2 for a parallel analysis)")
+      ->allow_extra_args(false);
+}
+
+namespace {
+
+// "K=V" as the pair (K, V), both whole numbers.
+std::pair<int, int> mumps_control(const std::string& text) {
+  const auto equals = text.find('=');
+  const auto k = number_in(text.substr(0, equals));
+  const auto v = equals == std::string::npos ? std::nullopt : number_in(text.substr(equals + 1));
+  if (!k || !v || *k != std::floor(*k) || *v != std::floor(*v) || std::abs(*k) > INT_MAX || std::abs(*v) > INT_MAX)
+    throw InvalidArgument("--mumps-icntl: expected K=V with whole numbers, e.g. 7=0 (got '" + text + "')");
+  return {static_cast<int>(*k), static_cast<int>(*v)};
+}
+
+}  // namespace
+
+void apply_solver_args(const SolverArgs& args, LinearSolverOptions& options) {
+  options.kind = parse_linear_solver_kind(args.name == "lu" ? "mumps" : args.name);
+  if (options.kind == LinearSolverKind::mumps_mpi && !distributed::built_with_mpi())
+    throw InvalidArgument(
+        "--solver mumps-mpi: this fairsurf was built without MPI (configure with -DFAIRSURF_MPI=ON, with "
+        "openmpi-bin, libopenmpi-dev and libmumps-ptscotch-dev installed); use --solver mumps");
+  for (const std::string& text : args.mumps_icntl) options.mumps_controls.insert(mumps_control(text));
 }
 
 bool has_vertex_data(const Mesh& mesh) { return !mesh.vertex_scalars.empty() || mesh.vertex_colors.rows() > 0; }

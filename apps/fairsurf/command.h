@@ -4,6 +4,7 @@
 
 #include <fairsurf/errors.h>
 #include <fairsurf/io.h>
+#include <fairsurf/linear_solver.h>
 #include <fairsurf/mesh.h>
 
 #include <CLI/CLI.hpp>
@@ -81,6 +82,19 @@ void write_output(Write&& write) {
     throw CliError(kOutputError, e.what());
   }
 }
+
+/// --solver and --mumps-icntl, shared by the commands that solve.
+struct SolverArgs {
+  std::string name = "mumps";
+  std::vector<std::string> mumps_icntl;  ///< "K=V" each
+};
+/// Adds --solver to `cmd`: mumps (the default; also "lu"), umfpack, gmres, or mumps-mpi (the factors
+/// spread over the ranks of `mpirun -n N fairsurf ...`, docs/solvers.md); and --mumps-icntl K=V,
+/// repeatable, MUMPS's own controls passed through (LinearSolverOptions::mumps_controls).
+void add_solver_options(CLI::App* cmd, SolverArgs& args);
+/// Sets the kind and MUMPS controls of `options` (keeping its ordering). InvalidArgument (exit 1) for
+/// an unknown solver, mumps-mpi in a build without MPI, or a malformed --mumps-icntl.
+void apply_solver_args(const SolverArgs& args, LinearSolverOptions& options);
 
 /// Whether `mesh` carries PLY vertex properties or colours.
 bool has_vertex_data(const Mesh& mesh);

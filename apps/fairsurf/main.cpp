@@ -1,6 +1,9 @@
 // fairsurf — command-line entry point. Parses, runs one subcommand, maps failures to exit codes.
+// Under `mpirun -n N`, rank 0 runs the command and the other ranks serve its mumps-mpi solves
+// (distributed.h); every rank exits with rank 0's code.
 #include "command.h"
 
+#include <fairsurf/distributed.h>
 #include <fairsurf/errors.h>
 
 #include <algorithm>
@@ -47,9 +50,7 @@ void add_help_command(CLI::App& app) {
   });
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   using namespace fairsurf::cli;
   CLI::App app{"fairsurf: fair surfaces on triangle meshes with sixth-order geometric flows"};
   app.set_version_flag("--version", FAIRSURF_VERSION);
@@ -84,4 +85,25 @@ int main(int argc, char** argv) {
     return report(kNumerical, e.what());
   }
   return kOk;
+}
+
+// A rank > 0: serves rank 0's solves and exits with its code. A failure only this rank sees (rank 0
+// waits for it in a collective call) ends the whole job.
+int serve(fairsurf::distributed::Session& session) {
+  try {
+    return session.serve();
+  } catch (const std::exception& e) {
+    std::cerr << "fairsurf: error: rank " << session.rank() << ": " << e.what() << "\n";
+    session.abort(fairsurf::cli::kNumerical);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  fairsurf::distributed::Session session(argc, argv);
+  if (session.is_worker()) return serve(session);
+  const int code = run(argc, argv);
+  session.finish(code);
+  return code;
 }

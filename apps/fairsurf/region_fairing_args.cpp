@@ -19,6 +19,7 @@ void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args) {
   cmd->add_option("--method", args.method,
                   "flow (default: the geometric flow to a steady state) or harmonic (cotangent "
                   "Laplacian^(k+1) x = 0, the linear baseline)");
+  add_solver_options(cmd, args.solver);
   cmd->add_option("--max-steps", args.max_steps, "Stop the flow after this many accepted steps (default 200)")
       ->check(whole_number_at_least(1));
   cmd->add_option("--log", args.log, "Write a JSON report with every flow step here");
@@ -32,6 +33,8 @@ FairRegionOptions region_fairing_options(const RegionFairingArgs& args, FairRegi
   o.method = parse_fair_method(args.method);
   o.flow.functions = args.functions;
   o.flow.max_steps = args.max_steps;
+  apply_solver_args(args.solver, o.flow.solver);
+  apply_solver_args(args.solver, o.harmonic_solver);
   return o;
 }
 

@@ -6,6 +6,8 @@
 #include <fairsurf/fair_region.h>
 
 #include <CLI/CLI.hpp>
+
+#include "command.h"
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -17,15 +19,17 @@ struct RegionFairingArgs {
   std::string continuity = "G2";
   std::vector<std::string> functions{"H"};
   std::string method = "flow";
+  SolverArgs solver;
   int max_steps = FairRegionOptions::default_fair_flow_options().max_steps;
   std::string log;
   bool force = false, quiet = false, repair = false;
 };
 
-/// Adds --continuity, --f, --method, --max-steps, --log, --force, --quiet, --repair to `cmd`.
+/// Adds --continuity, --f, --method, --solver, --mumps-icntl, --max-steps, --log, --force, --quiet, --repair to `cmd`.
 void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args);
 
-/// `base` with what the flags ask for (throws InvalidArgument for a bad name). `fair` starts from
+/// `base` with what the flags ask for (throws InvalidArgument for a bad name); --solver and
+/// --mumps-icntl set the flow's and the harmonic solves' solver, keeping their ordering. `fair` starts from
 /// FairRegionOptions::harmonic_started(), `blend` from the plain defaults (fair_region.h says why).
 FairRegionOptions region_fairing_options(const RegionFairingArgs& args, FairRegionOptions base = {});
 

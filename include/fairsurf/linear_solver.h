@@ -17,6 +17,9 @@
 // Back ends (docs/solvers.md has the measured comparison):
 //   mumps    sequential MUMPS LU (LDLᵀ with options.symmetric), automatic ordering (ICNTL(7) = 7)
 //            or QAMD (options.ordering). The default and the fastest.
+//   mumps-mpi the same MUMPS factorization with its factors distributed over the MPI ranks of a
+//            distributed::Session (distributed.h); rank 0 calls the solver, the others serve it.
+//            Only in builds with FAIRSURF_MPI (make_linear_solver throws InvalidArgument otherwise).
 //   umfpack  UMFPACK LU, 64-bit interface (umfpack_dl_*), METIS ordering, AMD if METIS is missing.
 //   gmres    restarted GMRES preconditioned by incomplete LU with threshold (Eigen's ILUT).
 //            Needs near-complete fill once τ ≫ h⁶ (the defaults: drop 1e-6, fill factor 40).
@@ -26,6 +29,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <map>
 #include <memory>
 #include <string>
 
@@ -34,9 +38,9 @@ namespace fairsurf {
 /// Square sparse matrix in compressed row storage, the layout the operators and the step use.
 using SparseRowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-enum class LinearSolverKind { mumps, umfpack, gmres };
+enum class LinearSolverKind { mumps, umfpack, gmres, mumps_mpi };
 
-/// "mumps", "umfpack" or "gmres".
+/// "mumps", "umfpack", "gmres" or "mumps-mpi".
 const char* to_string(LinearSolverKind kind);
 /// Inverse of to_string; throws InvalidArgument naming the valid kinds.
 LinearSolverKind parse_linear_solver_kind(const std::string& name);
@@ -67,6 +71,12 @@ struct LinearSolverOptions {
   double residual_tolerance = 1e-12;
   /// Iterative refinement steps allowed after the first solve.
   int max_refinement_steps = 3;
+  /// mumps and mumps-mpi only: MUMPS's own controls passed through, ICNTL(k) = v (MUMPS 5.5 manual),
+  /// set after the library's settings (on rank 0: MUMPS reads controls on its host): e.g. {7, 0} AMD ordering, {14, 50} workspace
+  /// relaxation, {28, 2} parallel analysis with PT-Scotch. The controls the library owns are refused
+  /// (InvalidArgument): 1–4 (output: the library never prints), 5 (matrix format), 18 (where the
+  /// matrix is), 20 and 21 (where the right-hand side and solution are); k must be 1..60.
+  std::map<int, int> mumps_controls{};
   // GMRES + ILUT only.
   int gmres_restart = 50;             ///< Krylov subspace dimension before a restart
   /// GMRES's own (preconditioned) relative residual target; the backward-error check above, with
@@ -92,6 +102,10 @@ struct SolveReport {
   double factorize_seconds = 0;
   double solve_seconds = 0;  ///< including residuals and refinement
   std::string ordering;      ///< fill-reducing ordering used ("METIS", "AMD", ...)
+  /// MUMPS only (0 otherwise): memory the last factorization used on its busiest rank and on all
+  /// ranks together, in MB (INFOG(21), INFOG(22)); equal with one process.
+  double factor_megabytes_busiest_rank = 0;
+  double factor_megabytes_all_ranks = 0;
 };
 
 /// Solver of A x = b for a square sparse non-symmetric A. Create with make_linear_solver.
@@ -116,7 +130,7 @@ class LinearSolver {
   /// Figures of the last calls (analyze and factorize times are kept until the next such call).
   const SolveReport& report() const { return report_; }
   const LinearSolverOptions& options() const { return options_; }
-  /// "mumps", "umfpack" or "gmres", as used in error messages.
+  /// "mumps", "umfpack", "gmres" or "mumps-mpi", as used in error messages.
   const char* name() const { return to_string(options_.kind); }
 
  protected:
@@ -124,6 +138,10 @@ class LinearSolver {
   /// The matrix last given to analyze or factorize (compressed); back ends read its values.
   const SparseRowMatrix& matrix() const { return matrix_; }
   void set_ordering(std::string ordering) { report_.ordering = std::move(ordering); }
+  void set_factor_memory(double busiest_rank_megabytes, double all_ranks_megabytes) {
+    report_.factor_megabytes_busiest_rank = busiest_rank_megabytes;
+    report_.factor_megabytes_all_ranks = all_ranks_megabytes;
+  }
 
  private:
   // Back-end steps. analyze_pattern and factorize_values see matrix() already set; apply_inverse
@@ -144,7 +162,8 @@ class LinearSolver {
 };
 
 /// A solver of the kind options.kind. Throws InvalidArgument for invalid options (negative
-/// tolerance or refinement steps, non-positive GMRES restart, iterations or fill factor).
+/// tolerance or refinement steps, non-positive GMRES restart, iterations or fill factor), and for
+/// mumps-mpi in a build without MPI or on an MPI job whose other ranks serve no Session.
 std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options = {});
 
 }  // namespace fairsurf
