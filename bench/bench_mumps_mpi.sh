@@ -3,11 +3,14 @@
 # prints one table row per run: time per step and peak memory per rank, and how MUMPS's factorization
 # memory divides (busiest rank against an even share of all ranks' total); assembled_MB is rank 0's
 # resident memory with the matrix assembled, before the solver exists.
-#   bench/bench_mumps_mpi.sh [BUILD_DIR] [SUBDIVISIONS...]     (default: build, 7 = 164k unknowns)
+#   bench/bench_mumps_mpi.sh [BUILD_DIR] [SUBDIVISIONS...]     (default: build-mpi, 7 = 164k unknowns)
+# BUILD_DIR is a build with -DFAIRSURF_MPI=ON (the default build has no mumps-mpi), e.g.
+#   cmake -S . -B build-mpi -DCMAKE_BUILD_TYPE=Release -DFAIRSURF_MPI=ON -DFAIRSURF_BUILD_BENCH=ON
+#   cmake --build build-mpi -j2 --target bench_mumps_mpi
 # 1 rank runs the sequential path (--solver mumps) with two BLAS threads; N ranks run mumps-mpi with
 # one BLAS thread each, so every run uses the same two cores.
 set -euo pipefail
-build=${1:-build}
+build=${1:-build-mpi}
 shift || true
 sizes=("${@:-7}")
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
