@@ -69,13 +69,20 @@ class ObjReader {
     return value;
   }
 
-  void read_vertex() {
+  // Parses every number left on the line (to catch garbage), appends the first `kept` to `out` and
+  // returns how many there were.
+  int read_numbers(std::vector<double>& out, int kept) {
     int count = 0;
     for (std::string_view token = scanner_.next_on_line(); !token.empty(); token = scanner_.next_on_line()) {
       const double value = number(token);
-      if (count < 3) xyz_.push_back(value);
+      if (count < kept) out.push_back(value);
       ++count;
     }
+    return count;
+  }
+
+  void read_vertex() {
+    const int count = read_numbers(xyz_, 3);
     if (count < 3) fail("'v' needs 3 coordinates, found " + std::to_string(count));
     // Some writers append a w or an RGB colour; both are parsed (to catch garbage) and ignored.
     if (count > 3) ignored_.add("extra values on 'v' lines (w or colour)", line_);
@@ -83,12 +90,7 @@ class ObjReader {
 
   // `vt u [v [w]]`: w is dropped (2D textures), a missing v is 0.
   void read_texture_coordinate() {
-    int count = 0;
-    for (std::string_view token = scanner_.next_on_line(); !token.empty(); token = scanner_.next_on_line()) {
-      const double value = number(token);
-      if (count < 2) uv_.push_back(value);
-      ++count;
-    }
+    const int count = read_numbers(uv_, 2);
     if (count < 1) fail("'vt' needs at least 1 coordinate");
     if (count == 1) uv_.push_back(0.0);
   }
