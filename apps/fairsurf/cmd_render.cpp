@@ -10,8 +10,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <regex>
 #include <sstream>
 
@@ -56,35 +58,28 @@ void parse_size(const std::string& text, RenderOptions& options) {
   options.height = std::stoi(m[2]);
 }
 
-ColorRange parse_range(const std::string& text) {
+// The comma-separated numbers of `text` if there are exactly `count` of them, all finite.
+std::optional<std::vector<double>> finite_numbers(const std::string& text, std::size_t count) {
   const std::vector<std::string> parts = split(text);
-  try {
-    std::size_t used_lo = 0, used_hi = 0;
-    if (parts.size() == 2) {
-      const ColorRange r{std::stod(parts[0], &used_lo), std::stod(parts[1], &used_hi)};
-      if (used_lo == parts[0].size() && used_hi == parts[1].size() && std::isfinite(r.lo) &&
-          std::isfinite(r.hi) && r.lo < r.hi)
-        return r;
-    }
-  } catch (const std::logic_error&) {
+  if (parts.size() != count) return std::nullopt;
+  std::vector<double> values;
+  for (const std::string& part : parts) {
+    const std::optional<double> value = number_in(part);
+    if (!value || !std::isfinite(*value)) return std::nullopt;
+    values.push_back(*value);
   }
+  return values;
+}
+
+ColorRange parse_range(const std::string& text) {
+  const auto ends = finite_numbers(text, 2);
+  if (ends && (*ends)[0] < (*ends)[1]) return {(*ends)[0], (*ends)[1]};
   throw InvalidArgument("render: --range '" + text + "' is not two finite numbers a,b with a < b");
 }
 
 RenderFocus parse_focus(const std::string& text) {
-  const std::vector<std::string> parts = split(text);
-  try {
-    if (parts.size() == 4) {
-      RenderFocus focus;
-      std::size_t used[4] = {};
-      for (int k = 0; k < 3; ++k) focus.centre[k] = std::stod(parts[k], &used[k]);
-      focus.radius = std::stod(parts[3], &used[3]);
-      bool whole = true;
-      for (int k = 0; k < 4; ++k) whole = whole && used[k] == parts[k].size();
-      if (whole && focus.centre.allFinite() && std::isfinite(focus.radius) && focus.radius > 0) return focus;
-    }
-  } catch (const std::logic_error&) {
-  }
+  const auto xyzr = finite_numbers(text, 4);
+  if (xyzr && (*xyzr)[3] > 0) return {Eigen::Vector3d((*xyzr)[0], (*xyzr)[1], (*xyzr)[2]), (*xyzr)[3]};
   throw InvalidArgument("render: --focus '" + text + "' is not x,y,z,r with finite numbers and r > 0");
 }
 

@@ -90,9 +90,6 @@ void check_outputs(const std::string& command, const std::vector<Output>& output
   for (const Output& out : given) check_directory(command, out);
 }
 
-namespace {
-
-// The number in `text` if all of it is one, else nothing.
 std::optional<double> number_in(const std::string& text) {
   try {
     std::size_t used = 0;
@@ -102,8 +99,6 @@ std::optional<double> number_in(const std::string& text) {
   }
   return std::nullopt;
 }
-
-}  // namespace
 
 CLI::Validator whole_number_at_least(int lowest) {
   const std::string range = "a whole number >= " + std::to_string(lowest);

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -60,6 +61,9 @@ void check_outputs(const std::string& command, const std::vector<Output>& output
 
 /// CLI11 checks for numeric options; each names the valid range and the value given, e.g.
 /// "--steps: must be a whole number >= 1 (got 0)".
+/// The number in `text` if all of it is one (std::stod's syntax), else nothing.
+std::optional<double> number_in(const std::string& text);
+
 CLI::Validator whole_number_at_least(int lowest);
 CLI::Validator positive_number();      ///< finite and > 0
 CLI::Validator non_negative_number();  ///< finite and >= 0
