@@ -233,10 +233,11 @@ class Refiner {
     // over; the flow then starts from a crease at the border) — unless it removes a sliver, which
     // may go to kSliverFlipDihedral.
     const double folded = std::max(border_dihedral(ai, di, ci), border_dihedral(di, bi, ci));
-    const bool removes_sliver = std::max(largest_angle(a, b, c), largest_angle(b, a, d)) > kSliverAngle;
-    const double allowed = std::max({removes_sliver ? kSliverFlipDihedral : std::numbers::pi / 2,
-                                     border_dihedral(ai, bi, ci), border_dihedral(bi, ai, di)});
-    if (folded > allowed) return false;
+    const double before = std::max(border_dihedral(ai, bi, ci), border_dihedral(bi, ai, di));
+    if (folded > std::max(std::numbers::pi / 2, before)) {
+      const bool removes_sliver = std::max(largest_angle(a, b, c), largest_angle(b, a, d)) > kSliverAngle;
+      if (!removes_sliver || folded > std::max(kSliverFlipDihedral, before)) return false;
+    }
     if (!mesh_.is_flip_ok(eh)) return false;  // c-d is already an edge; checked last, it walks a fan
     mesh_.flip(eh);
     ++flips_;
