@@ -43,7 +43,10 @@ FlowOptions FairRegionOptions::default_fair_flow_options() {
 
 FairRegionOptions FairRegionOptions::harmonic_started() {
   FairRegionOptions o;
-  o.harmonic_start_iterations = 8;
+  // One solve with the region's own cotangent operator: on a real surface that is the classical
+  // C2 fairing (CGAL's fair), and re-evaluating it drifts from the surface (docs/blend.md,
+  // "Region fairing"). Fill re-evaluates: its patch starts as a membrane (FillOptions).
+  o.harmonic_start_iterations = 1;
   o.flow.tau = 1e-2;
   o.harmonic_solver.ordering = o.flow.solver.ordering = FillOrdering::minimum_degree;
   o.flow.step_kind = FlowStepKind::energy_descent;

@@ -314,7 +314,13 @@ const char* to_string(HoleStatus status) {
   return "unknown";
 }
 
-FairRegionOptions FillOptions::default_fairing() { return FairRegionOptions::harmonic_started(); }
+FairRegionOptions FillOptions::default_fairing() {
+  // A patch starts as a membrane, not a surface estimate: its own operator carries the membrane's
+  // kink along the border, so ∆^k is re-evaluated until it settles (fair_region.h).
+  FairRegionOptions o = FairRegionOptions::harmonic_started();
+  o.harmonic_start_iterations = 8;
+  return o;
+}
 
 FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver& observer) {
   const auto start = Clock::now();

@@ -16,14 +16,6 @@ using namespace fairsurf;
 
 namespace {
 
-// The vertices of `mesh` in the closed ball (centre, radius).
-std::vector<int> ball_vertices(const Mesh& mesh, const Eigen::Vector3d& centre, double radius) {
-  std::vector<int> inside;
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    if ((mesh.V.row(v).transpose() - centre).norm() <= radius) inside.push_back(v);
-  return inside;
-}
-
 void expect_energy_monotone(const FlowReport& report) {
   double previous = report.initial_energy;
   int accepted = 0;
@@ -44,7 +36,7 @@ void expect_energy_monotone(const FlowReport& report) {
 // steps, lowers E at every one and ends steady.
 TEST(EnergyDescent, ARealRegionSettlesWithEveryAcceptedStepLoweringTheEnergy) {
   Mesh mesh = read_mesh(test::data_path("spot.obj"));
-  const std::vector<int> region = ball_vertices(mesh, {0.312594, 0.674309, -0.341185}, 0.190738);
+  const std::vector<int> region = test::ball_vertices(mesh, {0.312594, 0.674309, -0.341185}, 0.190738);
   ASSERT_GT(region.size(), 20u);
   FairRegionOptions options = FairRegionOptions::harmonic_started();
   options.held_out_rings = 0;  // the flow itself, not the held-out choice

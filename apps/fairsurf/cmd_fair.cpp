@@ -92,7 +92,7 @@ void setup_fair(CLI::App& app) {
                     "Per-vertex property (PLY) whose non-zero vertices are free");
   group->require_option(1);
   cmd->add_option("--start", args->start,
-                  "Flow start: harmonic (default: the re-evaluated cotangent Delta^k solution, then the "
+                  "Flow start: harmonic (default: one cotangent Delta^k solve with the region's own operator, then the "
                   "energy descent, that solution kept as the floor) or flat (the region as given, the "
                   "time-stepped flow with tau doubling from 1e-9)")
       ->check(CLI::IsMember({"harmonic", "flat"}));

@@ -61,4 +61,11 @@ Mesh regular_grid(int nx, int ny, double h) {
   return m;
 }
 
+std::vector<int> ball_vertices(const Mesh& mesh, const Eigen::Vector3d& centre, double radius) {
+  std::vector<int> inside;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if ((mesh.V.row(v).transpose() - centre).norm() <= radius) inside.push_back(v);
+  return inside;
+}
+
 }  // namespace fairsurf::test

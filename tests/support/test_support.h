@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace fairsurf::test {
 
@@ -33,5 +34,8 @@ Mesh tetrahedron();
 /// A planar (nx+1) by (ny+1) vertex grid on [0, nx*h] x [0, ny*h], every quad split along the
 /// same diagonal, so that interior vertices have valence 6. Vertex (i, j) has index j*(nx+1)+i.
 Mesh regular_grid(int nx, int ny, double h = 1.0);
+
+/// The vertices of `mesh` in the closed ball (centre, radius), in index order.
+std::vector<int> ball_vertices(const Mesh& mesh, const Eigen::Vector3d& centre, double radius);
 
 }  // namespace fairsurf::test
