@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace fairsurf::bench {
@@ -56,6 +57,8 @@ class SurfaceDistance {
 struct DistanceStats {
   int count = 0;
   double mean = 0, max = 0;  ///< in the units the caller divides by (h)
+  /// Mean distance to a smooth stand-in of the surface (smooth_reference.h), when measured.
+  double smooth_mean = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Distances of rows `rows` of V to the surface, divided by `unit`.
