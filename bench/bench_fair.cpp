@@ -1,4 +1,4 @@
-// Region fairing (METHOD §7, free-form design) against region size: the METHOD §8.6 scene — a unit
+// Region fairing (method.md §7, free-form design) against region size: the method.md §8.6 scene — a unit
 // icosphere whose cap z > 0.5 is freed and flattened — at icosphere levels 4 to 8 (about 640, 2.6k,
 // 10k, 41k and 164k free vertices). Three setups: the G2 sixth-order flow to its steady state started
 // from the re-evaluated ∆³ solution (FairRegionOptions::harmonic_started(), what `fairsurf fair` and

@@ -9,7 +9,7 @@
 // before the case are printed too: on the shared 2-core machine wall times follow the load.
 // Then the scaling exponents of the step time and peak memory (pairwise and a least-squares fit)
 // and their extrapolation to 1M vertices. `bench_flow --million` also runs a 1,024,000-vertex grid
-// (about 13 GB peak, as MUMPS needs about 6 GB at 655k unknowns, METHOD §5): by default it is not
+// (about 13 GB peak, as MUMPS needs about 6 GB at 655k unknowns, method.md §5): by default it is not
 // run, since the machine is shared. Then the 100k case with a frozen Jacobian
 // (FlowOptions::refactor_interval = 2: the second step reuses the first one's factorization). Last,
 // the same 10k step with GMRES + ILUT at the default options and at the smaller fill of the first version, and with UMFPACK.
@@ -57,7 +57,7 @@ Mesh torus(int n, int m) {
 }
 
 // GMRES + ILUT with the smaller fill of the first version's defaults (20, drop 1e-5, GMRES target
-// 1e-12), which stalls near a relative residual of 1e-4 on this step: METHOD §5 says ILU needs
+// 1e-12), which stalls near a relative residual of 1e-4 on this step: method.md §5 says ILU needs
 // near-complete fill on this matrix; the defaults now are fill 40, drop 1e-6, target 1e-8.
 constexpr int kSmallFill = 20;
 constexpr double kSmallFillDrop = 1e-5;

@@ -1,9 +1,9 @@
-// Linear solvers on a proxy of the flow's step matrix (METHOD §5) on the unit icosphere at 5 / 6 / 7
-// subdivisions (10 242 / 40 962 / 163 842 unknowns, the sizes of METHOD's reference timings):
+// Linear solvers on a proxy of the flow's step matrix (method.md §5) on the unit icosphere at 5 / 6 / 7
+// subdivisions (10 242 / 40 962 / 163 842 unknowns, the sizes of method.md §5's reference timings):
 // A = I + (τ/h⁶)(L³ + 0.3 L² D), 37 non-zeros a row, non-symmetric (bench/support/step_matrix_sphere.h),
 // τ = 1e-2 as in the flow on a unit sphere. One analysis per case (analyze_s), then each iteration
 // refactorizes and solves (the per-step cost; factorize_s and solve_s split it).
-// GMRES + ILUT runs at 10k unknowns only: on this matrix it needs near-complete fill (METHOD §5) and
+// GMRES + ILUT runs at 10k unknowns only: on this matrix it needs near-complete fill (method.md §5) and
 // its ILUT alone costs seconds, so larger sizes would only burn minutes to report the same outcome.
 #include <fairsurf/errors.h>
 #include <fairsurf/linear_solver.h>

@@ -1,4 +1,4 @@
-// Fits and operators (METHOD §1–§3) from 11.7k to 1.03M vertices: wall and CPU time per phase,
+// Fits and operators (method.md §1–§3) from 11.7k to 1.03M vertices: wall and CPU time per phase,
 // bytes per vertex, and the scaling exponent.
 //
 // Meshes are made at benchmark time by Loop subdivision (bench/support): spot.obj 1–4 times (11.7k,
@@ -104,7 +104,7 @@ Timing first_touch(double bytes, int threads, int reps) {
 double bytes(const Csr& c) {
   return 4.0 * static_cast<double>(c.offsets.size() + c.indices.size());
 }
-double bytes(const SparseOperator& m) { return 12.0 * m.nonZeros() + 4.0 * (m.rows() + 1); }
+double bytes(const SparseRowMatrix& m) { return 12.0 * m.nonZeros() + 4.0 * (m.rows() + 1); }
 
 double bytes(const QuadraticFits& f) {
   const double n = f.num_vertices();
@@ -161,7 +161,7 @@ Row run_case(const Case& c, int threads) {
     refit_quadratics(fits, moved);
     update_operators(fits, moved, ops);
   });
-  SparseOperator A_H, A_K;
+  SparseRowMatrix A_H, A_K;
   row.normal_weighted = measure(reps, [] {}, [&] {
     normal_weighted(ops.laplace, ops.geometry.normal, A_H);
     normal_weighted(ops.giaquinta, ops.geometry.normal, A_K);

@@ -1,4 +1,4 @@
-// The patch stage (METHOD §7): hole triangulation time against hole size, and refinement and
+// The patch stage (method.md §7): hole triangulation time against hole size, and refinement and
 // membrane relaxation time against the number of new vertices.
 //
 // The hole is the inner loop of an annulus: n vertices on a unit circle lifted by a wave

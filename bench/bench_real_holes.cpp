@@ -6,7 +6,7 @@
 // Usage: bench_real_holes [--section fill|fair|blend|all] [--mesh NAME] [--no-cgal] [--quick]
 //                         [--csv FILE]
 #include <fairsurf/blend.h>
-#include <fairsurf/continuity.h>
+#include <fairsurf/continuity_measure.h>
 #include <fairsurf/errors.h>
 #include <fairsurf/fair_region.h>
 #include <fairsurf/fill.h>

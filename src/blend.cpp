@@ -5,10 +5,11 @@
 #include <fairsurf/topology.h>
 #include <fairsurf/tube.h>
 
+#include "stopwatch.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -35,15 +36,6 @@ LoopPair chosen_pair(const Vertices& V, const std::vector<std::vector<int>>& loo
   if (o.loop_a == o.loop_b)
     throw InvalidArgument("blend_loops: loop " + std::to_string(o.loop_a) + " given twice; two loops are needed");
   return {o.loop_a, o.loop_b, 0.0};
-}
-
-template <class Derived>
-Eigen::Index append_rows(Eigen::PlainObjectBase<Derived>& out, const Eigen::PlainObjectBase<Derived>& a,
-                         const Eigen::PlainObjectBase<Derived>& b) {
-  out.resize(a.rows() + b.rows(), a.cols());
-  out.topRows(a.rows()) = a;
-  out.bottomRows(b.rows()) = b;
-  return a.rows();
 }
 
 // Worst 4√3·area / Σ edge² over faces [first_face, #F) of (V, F).
@@ -155,31 +147,13 @@ FairRegionReport fair_tube(Mesh& mesh, const std::vector<int>& free, const Blend
 
 }  // namespace
 
-Mesh concatenate_meshes(const Mesh& first, const Mesh& second) {
-  Mesh out;
-  append_rows(out.V, first.V, second.V);
-  Faces shifted = second.F.array() + first.num_vertices();
-  append_rows(out.F, first.F, shifted);
-  for (const auto& [name, values] : first.vertex_scalars) {
-    const auto other = second.vertex_scalars.find(name);
-    if (other == second.vertex_scalars.end()) continue;
-    Eigen::VectorXd joined(values.size() + other->second.size());
-    joined << values, other->second;
-    out.vertex_scalars[name] = joined;
-  }
-  if (first.vertex_colors.rows() > 0 && second.vertex_colors.rows() > 0)
-    append_rows(out.vertex_colors, first.vertex_colors, second.vertex_colors);
-  concatenate_attributes(first, second, out);
-  return out;
-}
-
 ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
                                              const std::vector<int>& free_vertices, int rings) {
   return measure_near_loop(mesh, loop, rings, free_vertices, loop);
 }
 
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObserver& observer) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = detail::Clock::now();
   const Topology topo = build_topology(mesh.F, mesh.num_vertices());
   const std::vector<std::vector<int>> loops = boundary_loops(mesh.F, topo);
   const LoopPair pair = chosen_pair(mesh.V, loops, options);
@@ -214,7 +188,7 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
   report.fair = fair_tube(mesh, patch.free_vertices, options, observer);
   report.a.border = measure_continuity_at_loop(mesh, loop_a, patch.free_vertices, options.measure_rings);
   report.b.border = measure_continuity_at_loop(mesh, loop_b, patch.free_vertices, options.measure_rings);
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.seconds = detail::seconds_since(start);
   return report;
 }
 

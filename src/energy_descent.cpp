@@ -29,7 +29,7 @@ void assemble_gauss_newton(const FlowProblem& problem, const FlowState& state, G
   if (problem.functions.empty())
     throw InvalidArgument("assemble_gauss_newton: the energy descent needs the sixth-order energy");
 
-  SparseOperator A_H, A_K;
+  SparseRowMatrix A_H, A_K;
   normal_weighted(ops.laplace, geo.normal, A_H);
   normal_weighted(ops.giaquinta, geo.normal, A_K);
   const ColumnMatrix S = free_columns(region, n);

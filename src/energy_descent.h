@@ -15,7 +15,7 @@ namespace fairsurf::flow_detail {
 ///   E(d) ≈ E + 2 gᵀd + dᵀ N d,  N = Σ_l Σ_c B_lcᵀ diag(w A) B_lc,  g = Σ_l Σ_c B_lcᵀ diag(w A) G_c f_l,
 /// with B_lc = G_c Q_l restricted to the free columns. N is symmetric positive semi-definite and g
 /// is the gradient of E through f — consistent with the discrete energy by construction, where the
-/// fitted EL of METHOD §5 is only consistent with it to the order of the discretization.
+/// fitted EL of method.md §5 is only consistent with it to the order of the discretization.
 struct GaussNewtonModel {
   SparseRowMatrix normal;    ///< N, #F by #F, symmetric, every diagonal entry stored
   Eigen::VectorXd gradient;  ///< g, #F (half the derivative of E in d)

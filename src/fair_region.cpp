@@ -1,5 +1,6 @@
 #include "flow_failure.h"
 #include "held_out.h"
+#include "stopwatch.h"
 
 #include <fairsurf/errors.h>
 #include <fairsurf/fair_region.h>
@@ -8,7 +9,6 @@
 #include <fairsurf/validate.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 
 namespace fairsurf {
@@ -35,7 +35,7 @@ FlowOptions FairRegionOptions::default_fair_flow_options() {
   o.tau = 1e-9;              // unit-diagonal units; the step control doubles it every acceptance
   o.max_steps = 200;
   // Patches start far from steady (a flattened cap: max|V| ~1e8 above the round-off floor) and
-  // their geometry has converged once max|V| has fallen by ~1e-9 (METHOD §8.6 cap: max|r−1| within
+  // their geometry has converged once max|V| has fallen by ~1e-9 (method.md §8.6 cap: max|r−1| within
   // 2% of its final value).
   o.steady_relative_tolerance = 1e-9;
   return o;
@@ -114,7 +114,7 @@ bool linear_predicts_better(const Submesh& sub, const FairRegionOptions& options
 
 FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
                              const FairRegionOptions& options, const FlowObserver& observer) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = detail::Clock::now();
   require_valid(mesh, Requirements{}, "fair_region");
   if (free_vertices.empty()) throw InvalidArgument("fair_region: the free region is empty");
   const Topology topo = build_topology(mesh.F, mesh.num_vertices());
@@ -151,7 +151,7 @@ FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
   }
   write_back_free(sub, mesh.V);
   report.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, sub.free_local);
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.seconds = detail::seconds_since(start);
   return report;
 }
 

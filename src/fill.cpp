@@ -1,4 +1,4 @@
-#include <fairsurf/continuity.h>
+#include <fairsurf/continuity_measure.h>
 #include <fairsurf/errors.h>
 #include <fairsurf/face_intersection.h>
 #include <fairsurf/fill.h>
@@ -8,9 +8,9 @@
 #include <fairsurf/validate.h>
 
 #include "border_pinches.h"
+#include "stopwatch.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -20,11 +20,8 @@
 namespace fairsurf {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using detail::Clock;
+using detail::seconds_since;
 
 // Border edges at each vertex (#V).
 std::vector<int> border_edge_counts(const Topology& topo) {

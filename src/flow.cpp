@@ -1,6 +1,7 @@
 #include "energy_descent.h"
 #include "flow_failure.h"
 #include "flow_step.h"
+#include "stopwatch.h"
 
 #include <fairsurf/errors.h>
 #include <fairsurf/flow.h>
@@ -11,7 +12,6 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -22,11 +22,8 @@ namespace {
 
 using flow_detail::FlowProblem;
 using flow_detail::FlowState;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using detail::Clock;
+using detail::seconds_since;
 
 std::string format(const char* fmt, double a, double b = 0, double c = 0) {
   char buffer[160];
@@ -155,7 +152,7 @@ class FlowRun {
   Eigen::MatrixX3d face_direction_, face_direction_trial_;
   Eigen::MatrixX3d input_face_direction_;  // of the moving faces at the input
   double energy_ = 0;
-  SparseOperator jacobian_, step_matrix_;
+  SparseRowMatrix jacobian_, step_matrix_;
   flow_detail::GaussNewtonModel model_;  // energy_descent's model in place of J
   Eigen::VectorXd damping_;  // what leaves J's diagonal in the step matrix (row_damping)
   bool jacobian_current_ = false;
@@ -297,7 +294,7 @@ void FlowRun::form_matrix(double tau) {
       flow_detail::assemble_gauss_newton(problem_, state_, model_);
     } else {
       flow_detail::assemble_jacobian(problem_, state_, work_, jacobian_);
-      // Without step control the step is the plain (I − τJ) d = τV of METHOD §5.
+      // Without step control the step is the plain (I − τJ) d = τV of method.md §5.
       const auto& control = options_.step_control;
       flow_detail::row_damping(jacobian_,
                                control.enabled ? control.jacobian_dominance
@@ -470,37 +467,6 @@ FlowReport FlowRun::run() {
 
 }  // namespace
 
-const char* to_string(FlowKind kind) {
-  switch (kind) {
-    case FlowKind::sixth_order: return "sixth-order";
-    case FlowKind::willmore: return "willmore";
-    case FlowKind::surface_diffusion: return "surface-diffusion";
-    case FlowKind::mean_curvature: return "mean-curvature";
-  }
-  return "?";
-}
-
-FlowKind parse_flow_kind(const std::string& name) {
-  std::string key = name;
-  std::replace(key.begin(), key.end(), '_', '-');
-  for (FlowKind k : {FlowKind::sixth_order, FlowKind::willmore, FlowKind::surface_diffusion,
-                     FlowKind::mean_curvature})
-    if (key == to_string(k)) return k;
-  throw InvalidArgument("parse_flow_kind: '" + name +
-                        "' is not a flow (expected sixth-order, willmore, surface-diffusion or "
-                        "mean-curvature)");
-}
-
-int flow_order(FlowKind kind) {
-  switch (kind) {
-    case FlowKind::sixth_order: return 6;
-    case FlowKind::willmore:
-    case FlowKind::surface_diffusion: return 4;
-    case FlowKind::mean_curvature: return 2;
-  }
-  return 0;
-}
-
 const char* to_string(StepRejection reason) {
   switch (reason) {
     case StepRejection::none: return "none";
@@ -543,7 +509,7 @@ FlowReport run_flow(Vertices& V, const Faces& F, const Region& region, const Flo
     if (w.violating_vertices == 0) throw flow_detail::FlowFailure(e.what(), w);
     throw flow_detail::FlowFailure(std::string(e.what()) + " (f is not parabolic at " +
                                        std::to_string(w.violating_vertices) + " of " + std::to_string(w.vertices) +
-                                       " vertices of the flow's input, METHOD §4)",
+                                       " vertices of the flow's input, method.md §4)",
                                    w);
   }
 }

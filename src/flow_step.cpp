@@ -16,7 +16,7 @@ namespace {
 // out gets L's pattern (copied only if its size differs) and out(i, j) = value(i, j, p) at L's p-th
 // stored entry. Every operator shares L∆'s pattern, so p indexes them all.
 template <class Value>
-void fill_like(const SparseOperator& L, SparseOperator& out, Value value) {
+void fill_like(const SparseRowMatrix& L, SparseRowMatrix& out, Value value) {
   if (out.rows() != L.rows() || out.nonZeros() != L.nonZeros() || !out.isCompressed()) out = L;
   const int n = static_cast<int>(L.rows());
   const int* outer = L.outerIndexPtr();
@@ -29,7 +29,7 @@ void fill_like(const SparseOperator& L, SparseOperator& out, Value value) {
 
 // Appends to `inner` the columns of P's row at vertex i (P = R L∆ − W: L∆'s 2-ring, which holds its
 // 1-ring; P = L∆: its 1-ring; P = I: i), sorted. `mark` (#V) remembers the row that last took a column.
-void append_left_row(FlowKind kind, const SparseOperator& L, int i, int row, std::vector<int>& mark,
+void append_left_row(FlowKind kind, const SparseRowMatrix& L, int i, int row, std::vector<int>& mark,
                      std::vector<int>& inner) {
   const int* outer = L.outerIndexPtr();
   const int* column = L.innerIndexPtr();
@@ -49,8 +49,8 @@ void append_left_row(FlowKind kind, const SparseOperator& L, int i, int row, std
 
 // Symbolic phase: the patterns of P's free rows and of J_FF (free columns k ∈ L∆ row of some column
 // of P's row, and the diagonal, which the step matrix needs), and the scratch of the value loop.
-void build_pattern(FlowKind kind, const SparseOperator& L, const Region& region, JacobianWorkspace& work,
-                   SparseOperator& jacobian) {
+void build_pattern(FlowKind kind, const SparseRowMatrix& L, const Region& region, JacobianWorkspace& work,
+                   SparseRowMatrix& jacobian) {
   const int n = static_cast<int>(L.rows());
   const int num_free = region.num_free();
   work.left_outer.assign(1, 0);
@@ -74,7 +74,7 @@ void build_pattern(FlowKind kind, const SparseOperator& L, const Region& region,
     outer.push_back(static_cast<int>(inner.size()));
   }
   std::vector<double> zeros(inner.size(), 0.0);
-  jacobian = Eigen::Map<const SparseOperator>(num_free, num_free, static_cast<Eigen::Index>(inner.size()),
+  jacobian = Eigen::Map<const SparseRowMatrix>(num_free, num_free, static_cast<Eigen::Index>(inner.size()),
                                               outer.data(), inner.data(), zeros.data());
   work.kind = kind;
   work.free_vertices = region.free_vertices;
@@ -85,8 +85,8 @@ void build_pattern(FlowKind kind, const SparseOperator& L, const Region& region,
   work.column_slot.assign(static_cast<std::size_t>(work.threads) * num_free, 0);
 }
 
-bool pattern_current(FlowKind kind, const SparseOperator& L, const Region& region,
-                     const JacobianWorkspace& work, const SparseOperator& jacobian) {
+bool pattern_current(FlowKind kind, const SparseRowMatrix& L, const Region& region,
+                     const JacobianWorkspace& work, const SparseRowMatrix& jacobian) {
   return work.kind == kind && work.operator_nonzeros == L.nonZeros() &&
          work.free_vertices == region.free_vertices && jacobian.rows() == region.num_free() &&
          jacobian.nonZeros() == work.jacobian_nonzeros && jacobian.isCompressed();
@@ -96,8 +96,8 @@ bool pattern_current(FlowKind kind, const SparseOperator& L, const Region& regio
 // i into the dense `row` (#V, zero on entry; only columns of P's pattern). Parallel over J's rows,
 // allocation-free: each thread has its own dense row and column slots.
 template <class LeftRow>
-void add_product(const Region& region, const SparseOperator& L, const double* right, double alpha,
-                 LeftRow left_row, JacobianWorkspace& work, SparseOperator& jacobian) {
+void add_product(const Region& region, const SparseRowMatrix& L, const double* right, double alpha,
+                 LeftRow left_row, JacobianWorkspace& work, SparseRowMatrix& jacobian) {
   const int n = static_cast<int>(L.rows());
   const int num_free = region.num_free();
   const int* outer = L.outerIndexPtr();
@@ -130,7 +130,7 @@ void add_product(const Region& region, const SparseOperator& L, const double* ri
 // J += Σ_l P′_l Q_l (free rows and columns), P′ = R L∆ − Σ_c diag(w_c) G_c,
 // R = L∆ diag(f_H) + 2 L□ diag(f_K) + diag(c), w = 2H∇f − 2◇f, Q = ½ diag(f_H) A_H + diag(f_K) A_K.
 void add_sixth_order(const FlowState& state, const Region& region, const EnergyTerms& t,
-                     JacobianWorkspace& work, SparseOperator& jacobian) {
+                     JacobianWorkspace& work, SparseRowMatrix& jacobian) {
   const SurfaceOperators& ops = state.ops;
   const double* lap = ops.laplace.valuePtr();
   const double* gia = ops.giaquinta.valuePtr();
@@ -218,7 +218,7 @@ void evaluate_flow_terms(const FlowProblem& problem, FlowState& state) {
 }
 
 void assemble_jacobian(const FlowProblem& problem, const FlowState& state, JacobianWorkspace& work,
-                       SparseOperator& jacobian) {
+                       SparseRowMatrix& jacobian) {
   const SurfaceOperators& ops = state.ops;
   const Region& region = *problem.region;
   if (!pattern_current(problem.kind, ops.laplace, region, work, jacobian))
@@ -246,7 +246,7 @@ void assemble_jacobian(const FlowProblem& problem, const FlowState& state, Jacob
   }
 }
 
-void row_damping(const SparseOperator& jacobian, double dominance, Eigen::VectorXd& damping) {
+void row_damping(const SparseRowMatrix& jacobian, double dominance, Eigen::VectorXd& damping) {
   const int n = static_cast<int>(jacobian.rows());
   damping.resize(n);
   const int* outer = jacobian.outerIndexPtr();
@@ -261,8 +261,8 @@ void row_damping(const SparseOperator& jacobian, double dominance, Eigen::Vector
   }
 }
 
-void form_step_matrix(const SparseOperator& jacobian, const Eigen::VectorXd& damping, double tau,
-                      SparseOperator& step) {
+void form_step_matrix(const SparseRowMatrix& jacobian, const Eigen::VectorXd& damping, double tau,
+                      SparseRowMatrix& step) {
   if (step.rows() != jacobian.rows() || step.nonZeros() != jacobian.nonZeros() || !step.isCompressed())
     step = jacobian;
   const int n = static_cast<int>(jacobian.rows());

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <fairsurf/energy.h>
-#include <fairsurf/flow.h>
+#include <fairsurf/flow_kind.h>
 #include <fairsurf/operators.h>
 #include <fairsurf/quadratic_fit.h>
 #include <fairsurf/region.h>
@@ -51,8 +51,8 @@ void evaluate_flow_terms(const FlowProblem& problem, FlowState& state);
 /// each step then only computes values, in place: J's pattern is identical between steps, so the
 /// linear solver keeps its analysis.
 struct JacobianWorkspace {
-  SparseOperator A_H, A_K;  ///< L∆ ∘ (n_i·n_j), L□ ∘ (n_i·n_j)
-  SparseOperator R, W, Q;   ///< the factors of P′ = R L∆ − W and Q (flow.h), L∆'s pattern
+  SparseRowMatrix A_H, A_K;  ///< L∆ ∘ (n_i·n_j), L□ ∘ (n_i·n_j)
+  SparseRowMatrix R, W, Q;   ///< the factors of P′ = R L∆ − W and Q (flow.h), L∆'s pattern
 
   // Symbolic phase, and what it was built for.
   FlowKind kind = FlowKind::sixth_order;
@@ -69,15 +69,15 @@ struct JacobianWorkspace {
 
 /// J_FF (#F by #F, row-major, compressed) of the flow at `state`.
 void assemble_jacobian(const FlowProblem& problem, const FlowState& state, JacobianWorkspace& work,
-                       SparseOperator& jacobian);
+                       SparseRowMatrix& jacobian);
 
 /// damping_i = max(0, J_ii + dominance · Σ_{j≠i} |J_ij|) (#F): what must leave row i's diagonal
 /// so that J_ii ≤ −dominance · Σ_{j≠i} |J_ij|.
-void row_damping(const SparseOperator& jacobian, double dominance, Eigen::VectorXd& damping);
+void row_damping(const SparseRowMatrix& jacobian, double dominance, Eigen::VectorXd& damping);
 
 /// step = I − τ (J − diag(damping)), J's pattern (which holds the diagonal). Keeps step's storage
 /// when the pattern matches.
-void form_step_matrix(const SparseOperator& jacobian, const Eigen::VectorXd& damping, double tau,
-                      SparseOperator& step);
+void form_step_matrix(const SparseRowMatrix& jacobian, const Eigen::VectorXd& damping, double tau,
+                      SparseRowMatrix& step);
 
 }  // namespace fairsurf::flow_detail

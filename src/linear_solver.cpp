@@ -5,9 +5,9 @@
 #include <fairsurf/errors.h>
 
 #include "linear_solver_backends.h"
+#include "stopwatch.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -34,11 +34,8 @@ namespace {
 
 using detail::short_scientific;
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using detail::Clock;
+using detail::seconds_since;
 
 bool same_pattern(const SparseRowMatrix& a, const SparseRowMatrix& b) {
   if (a.rows() != b.rows() || a.cols() != b.cols() || a.nonZeros() != b.nonZeros()) return false;

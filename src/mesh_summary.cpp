@@ -41,15 +41,7 @@ MeshSummary summarize(const Mesh& mesh, const ValidationReport& report) {
   s.euler_characteristic = s.referenced_vertices - s.edges + static_cast<int>(F.rows());
   if (report.manifold() && report.orientable()) s.genus = total_genus(topo, components, loops);
 
-  double length_sum = 0;
-  int measured = 0;
-  for (int e = 0; e < topo.edges.rows(); ++e) {
-    const Eigen::Vector3d d = mesh.V.row(topo.edges(e, 1)) - mesh.V.row(topo.edges(e, 0));
-    if (!d.allFinite()) continue;
-    length_sum += d.norm();
-    ++measured;
-  }
-  s.mean_edge_length = measured > 0 ? length_sum / measured : 0.0;
+  s.mean_edge_length = mean_edge_length(mesh.V, topo);
   return s;
 }
 

@@ -17,7 +17,7 @@ namespace {
 using Vector5d = Eigen::Matrix<double, 5, 1>;
 
 // The fitted surface's differential geometry at one vertex, and the functionals λ that turn a
-// column of C_i into stencil weights (METHOD §3.4).
+// column of C_i into stencil weights (method.md §3.4).
 struct LocalGeometry {
   Eigen::Vector3d t1, t2, n;
   double H = 0, K = 0;
@@ -138,7 +138,7 @@ std::vector<int> pattern_offsets(const QuadraticFits& fits) {
 }
 
 // Every operator of `ops`, in a fixed order: L∆, L□, G_x, G_y, G_z, D_x, D_y, D_z.
-std::array<SparseOperator*, 8> all_operators(SurfaceOperators& ops) {
+std::array<SparseRowMatrix*, 8> all_operators(SurfaceOperators& ops) {
   return {&ops.laplace,         &ops.giaquinta,       &ops.gradient[0],        &ops.gradient[1],
           &ops.gradient[2],     &ops.second_gradient[0], &ops.second_gradient[1],
           &ops.second_gradient[2]};
@@ -151,17 +151,17 @@ void build_patterns(const QuadraticFits& fits, SurfaceOperators& ops) {
   const int n = fits.num_vertices();
   const std::vector<int> outer = pattern_offsets(fits);
   const auto matrices = all_operators(ops);
-  for (SparseOperator* m : matrices) {
+  for (SparseRowMatrix* m : matrices) {
     m->resize(n, n);
     m->resizeNonZeros(outer.back());
   }
 #pragma omp parallel for if (detail::worth_parallel(n)) schedule(dynamic, 512)
   for (int i = 0; i < n; ++i) {
-    for (SparseOperator* m : matrices) m->outerIndexPtr()[i + 1] = outer[i + 1];
+    for (SparseRowMatrix* m : matrices) m->outerIndexPtr()[i + 1] = outer[i + 1];
     if (outer[i] == outer[i + 1]) continue;
     const auto row = fits.neighbours.row(i);
     const auto split = std::lower_bound(row.begin(), row.end(), i);
-    for (SparseOperator* m : matrices) {
+    for (SparseRowMatrix* m : matrices) {
       int* inner = m->innerIndexPtr() + outer[i];
       inner = std::copy(row.begin(), split, inner);
       *inner++ = i;
@@ -174,13 +174,13 @@ void build_patterns(const QuadraticFits& fits, SurfaceOperators& ops) {
 bool has_pattern(const QuadraticFits& fits, SurfaceOperators& ops) {
   const int n = fits.num_vertices();
   const auto matrices = all_operators(ops);
-  for (const SparseOperator* m : matrices)
+  for (const SparseRowMatrix* m : matrices)
     if (m->rows() != n || m->cols() != n || !m->isCompressed()) return false;
   bool same = true;
 #pragma omp parallel for if (detail::worth_parallel(n)) schedule(static) reduction(&& : same)
   for (int i = 0; i < n; ++i) {
     const int length = pattern_row_length(fits, i);
-    for (const SparseOperator* m : matrices)
+    for (const SparseRowMatrix* m : matrices)
       same = same && m->outerIndexPtr()[i + 1] - m->outerIndexPtr()[i] == length;
   }
   return same;
@@ -246,7 +246,7 @@ SurfaceGeometry compute_geometry(const QuadraticFits& fits, const Vertices& V) {
   return geometry;
 }
 
-void normal_weighted(const SparseOperator& L, const Vertices& normal, SparseOperator& out) {
+void normal_weighted(const SparseRowMatrix& L, const Vertices& normal, SparseRowMatrix& out) {
   if (normal.rows() != L.rows() || L.rows() != L.cols())
     throw InvalidArgument("normal_weighted: " + std::to_string(normal.rows()) +
                           " normals for a " + std::to_string(L.rows()) + " by " +

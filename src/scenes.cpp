@@ -1,5 +1,5 @@
-#include <fairsurf/blend.h>
 #include <fairsurf/errors.h>
+#include <fairsurf/mesh_operations.h>
 #include <fairsurf/scenes.h>
 #include <fairsurf/topology.h>
 
@@ -196,7 +196,7 @@ Mesh icosphere(int level, double radius) {
 
 Scene sphere_cap_scene(int level, double z_cut) {
   Scene s{"sphere-cap",
-          "METHOD §8.6: the unit icosphere with its cap z > 0.5 flattened and free; G2 fairing recovers "
+          "method.md §8.6: the unit icosphere with its cap z > 0.5 flattened and free; G2 fairing recovers "
           "the sphere",
           icosphere(level), {}, {}};
   for (int v = 0; v < s.mesh.num_vertices(); ++v)

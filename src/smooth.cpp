@@ -14,13 +14,10 @@ double default_smoothing_time(const Mesh& mesh, FlowKind kind) {
   // no bounding box to take).
   require_valid(mesh, Requirements{false, false, false, false}, "default_smoothing_time");
   const Topology topo = build_topology(mesh.F, mesh.num_vertices());
-  double total = 0;
-  for (int e = 0; e < topo.edges.rows(); ++e)
-    total += (mesh.V.row(topo.edges(e, 0)) - mesh.V.row(topo.edges(e, 1))).norm();
   const double diagonal = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
   if (topo.edges.rows() == 0 || !(diagonal > 0))
     throw InvalidMeshError("default_smoothing_time: the mesh has no extent");
-  const double h = total / static_cast<double>(topo.edges.rows()) / diagonal;
+  const double h = mean_edge_length(mesh.V, topo) / diagonal;
   return std::pow(2 * h, flow_order(kind));
 }
 

@@ -120,7 +120,7 @@ TEST_F(CliLabels, BlendSaysItDropsVertexProperties) {
   EXPECT_TRUE(read_mesh(file("b.ply")).vertex_scalars.empty());
 }
 
-// f = K is ill-posed where K <= 0 (METHOD §4): blend says so as smooth does.
+// f = K is ill-posed where K <= 0 (method.md §4): blend says so as smooth does.
 TEST_F(CliLabels, BlendWarnsWhenFIsNotParabolic) {
   ASSERT_EQ(test::run_cli("scene fig3 -o " + path("fig3.ply") + " --edge-length 0.3").exit_code, 0);
   const auto run =

@@ -1,4 +1,4 @@
-// The discrete energy and its Euler–Lagrange expression (METHOD §4, §8.4): EL must be the first
+// The discrete energy and its Euler–Lagrange expression (method.md §4, §8.4): EL must be the first
 // variation of the discrete energy, δE = Σ_i A_i EL_i ϕ_i, to O(h²) on regular torus grids, and its
 // sign must make −EL n a descent direction.
 #include "flow_meshes.h"
@@ -59,7 +59,7 @@ double first_variation_gap(int n, int m, const std::string& function) {
   return gap;
 }
 
-// METHOD §8.4 [16k-vertex torus: 1.5% for f = H, 0.09% for f = K, 0.6% for |H|H, with the reference
+// method.md §8.4 [16k-vertex torus: 1.5% for f = H, 0.09% for f = K, 0.6% for |H|H, with the reference
 // prototype's own bump]: the gap at the 4k and 16k grids, and its decrease (O(h²) divides it by 4).
 // Measured with this bump: H 36% → 7.9%, K 0.57% → 0.14%, |H|H 1.7% → 0.43% (ratios 4.5, 4.1, 4.0);
 // for f = H the variation is small against its terms (dE/dε ≈ −1.2), hence the larger relative gap.

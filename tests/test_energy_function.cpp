@@ -225,7 +225,7 @@ TEST(EnergyFunction, CurvatureScaleIsTheMeanRmsPrincipalCurvature) {
 namespace {
 
 /// H and K of the torus with radii R > r at 360 equally spaced angles v around the tube (outward
-/// normal, METHOD §1 signs): K = cos v / (r (R + r cos v)), H = −(R + 2 r cos v) / (2 r (R + r cos v)).
+/// normal, method.md §1 signs): K = cos v / (r (R + r cos v)), H = −(R + 2 r cos v) / (2 r (R + r cos v)).
 void torus_curvatures(double R, double r, Eigen::VectorXd& H, Eigen::VectorXd& K) {
   const int n = 360;
   H.resize(n);

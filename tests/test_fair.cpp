@@ -27,7 +27,7 @@ class CliFair : public test::ScratchDirTest {
 
 }  // namespace
 
-// METHOD §8.6 through the CLI: the flattened cap of the 642-vertex icosphere comes back to the sphere.
+// method.md §8.6 through the CLI: the flattened cap of the 642-vertex icosphere comes back to the sphere.
 TEST_F(CliFair, SphereCapSceneIsFairedBackToTheSphere) {
   const std::string scene = path("cap.ply"), out = path("cap_out.ply"), log = path("cap.json");
   const CliRun made = run_cli("scene sphere-cap -o '" + scene + "'");
@@ -39,7 +39,7 @@ TEST_F(CliFair, SphereCapSceneIsFairedBackToTheSphere) {
     for (int v = 0; v < m.num_vertices(); ++v) worst = std::max(worst, std::abs(m.V.row(v).norm() - 1.0));
     return worst;
   };
-  // --start flat: the flattened cap as given, METHOD §8.6's run (1.4e-4 at 642 vertices).
+  // --start flat: the flattened cap as given, method.md §8.6's run (1.4e-4 at 642 vertices).
   const std::string flat = path("cap_flat.ply");
   const CliRun from_flat = run_cli("fair '" + scene + "' -o '" + flat + "' --region-property free --start flat --quiet");
   ASSERT_EQ(from_flat.exit_code, 0) << from_flat.out;

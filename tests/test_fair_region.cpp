@@ -1,4 +1,4 @@
-#include <fairsurf/continuity.h>
+#include <fairsurf/continuity_measure.h>
 #include <fairsurf/errors.h>
 #include <fairsurf/fair_region.h>
 #include <fairsurf/io.h>
@@ -16,7 +16,7 @@ using namespace fairsurf;
 
 namespace {
 
-// The METHOD §8.6 scene: a unit icosphere whose cap z > 0.5 is freed and flattened.
+// The method.md §8.6 scene: a unit icosphere whose cap z > 0.5 is freed and flattened.
 struct FlattenedCap {
   Mesh mesh;
   std::vector<int> cap;
@@ -78,7 +78,7 @@ TEST(FairRegion, G2FlowRecoversTheSphereCapAndBeatsG1G0AndTheHarmonicBaseline) {
   EXPECT_EQ(r1.flow_kind, FlowKind::willmore);
   EXPECT_EQ(r0.flow_kind, FlowKind::mean_curvature);
   EXPECT_EQ(r2.flow.stop_reason, FlowStopReason::steady);
-  EXPECT_LT(g2.max_radius_error(), 1e-3);  // METHOD §8.6: 1.4e-4 at 642 vertices
+  EXPECT_LT(g2.max_radius_error(), 1e-3);  // method.md §8.6: 1.4e-4 at 642 vertices
   EXPECT_LT(g2.max_radius_error(), g1.max_radius_error());
   EXPECT_LT(g1.max_radius_error(), g0.max_radius_error());
   EXPECT_LT(10 * g2.max_radius_error(), harmonic.max_radius_error());
@@ -96,7 +96,7 @@ TEST(FairRegion, G2FlowRecoversTheSphereCapAndBeatsG1G0AndTheHarmonicBaseline) {
 // The fill's start: the re-evaluated ∆³ solution, then Newton-like steps (τ = 1e-2), settles in a
 // fraction of the steps the flow needs from the flattened cap with τ doubling from 1e-9. The steady
 // shape differs a little: ∆³ also moves vertices tangentially, and the discrete steady state depends
-// on the vertex distribution (METHOD §5); flattening z alone keeps the icosphere's own distribution,
+// on the vertex distribution (method.md §5); flattening z alone keeps the icosphere's own distribution,
 // the best one for the sphere (3.4e-4 against 1.4e-3; stopping at 1e-13 instead of 1e-9 relative
 // does not change the latter). On Liepa-refined patches the ∆³ start is the better one (fill tests).
 TEST(FairRegion, HarmonicStartSettlesInFewerSteps) {

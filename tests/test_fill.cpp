@@ -112,7 +112,7 @@ TEST(FillSphere, G2CapConvergesToTheSphereAndBeatsTheHarmonicBaseline) {
 
 // A sphere is stationary for f = H and for Willmore flow alike, so on the cap G2 and G1 both reach
 // the sphere (G1 slightly closer on the refined patch: 1.2e-3 vs 1.3e-3 here) while G0 stays flat.
-// A cylinder separates them: stationary for f = H, inflated by Willmore flow (METHOD §8.5).
+// A cylinder separates them: stationary for f = H, inflated by Willmore flow (method.md §8.5).
 TEST(FillOrdering, G2BeatsG1BeatsG0) {
   const SphereFill g2 = fill_sphere_cap(3, options_for(Continuity::G2));
   const SphereFill g1 = fill_sphere_cap(3, options_for(Continuity::G1));

@@ -1,4 +1,4 @@
-// The geometric flows (METHOD §5–§8): energy decrease, the sign of the sixth-order flow,
+// The geometric flows (method.md §5–§8): energy decrease, the sign of the sixth-order flow,
 // stationarity of spheres and cylinders against the baselines, denoising, and failure handling.
 // Every test prints its figures; docs/flow.md quotes them beside the reference prototype's.
 #include "flow_meshes.h"
@@ -70,13 +70,13 @@ void expect_energy_decreases(const Mesh& input, const std::string& what) {
   EXPECT_GE(tested, 5) << "too few functions were well posed on the " << what;
 }
 
-// METHOD §8.3.
+// method.md §8.3.
 TEST(FlowEnergy, DecreasesOnNoisySphere) { expect_energy_decreases(test::noisy_sphere(3, 1.0, 0.12), "noisy sphere"); }
 TEST(FlowEnergy, DecreasesOnNoisyTorus) {
   expect_energy_decreases(test::noisy_torus(48, 16, 1.0, 0.4, 0.12), "noisy torus");
 }
 
-// METHOD §8.3's reference run: f = H on a noisy unit sphere, two steps of τ = 1e-3 in the sphere's
+// method.md §8.3's reference run: f = H on a noisy unit sphere, two steps of τ = 1e-3 in the sphere's
 // own units [3.1e3 → 0.055 → 2.5e-4].
 TEST(FlowEnergy, NoisyUnitSphereTwoSteps) {
   const Mesh m = test::noisy_sphere(4, 1.0, 0.12);
@@ -116,7 +116,7 @@ TEST(FlowSign, FirstStepDescends) {
 
 double max_displacement(const Vertices& a, const Vertices& b) { return (a - b).rowwise().norm().maxCoeff(); }
 
-// METHOD §8.5: a unit sphere under f = H for T = 0.1 (its own units) [moves 8e-6]; mean curvature
+// method.md §8.5: a unit sphere under f = H for T = 0.1 (its own units) [moves 8e-6]; mean curvature
 // flow shrinks it [mean radius change −0.217].
 TEST(FlowStationarity, Sphere) {
   const Mesh m = test::icosphere(4);
@@ -159,7 +159,7 @@ CylinderRun flow_cylinder(const Mesh& m, FlowKind kind) {
   return {change.cwiseAbs().maxCoeff(), sum / region.num_free()};
 }
 
-// METHOD §8.5: an open unit cylinder with three fixed rings at each end, T = 0.1 [f = H stays within
+// method.md §8.5: an open unit cylinder with three fixed rings at each end, T = 0.1 [f = H stays within
 // 2e-16 (regular) and 2e-4 (jittered); mean curvature flow shrinks it by −7.5e-2 (mean), Willmore
 // flow inflates it by +5.4e-3].
 TEST(FlowStationarity, Cylinder) {
@@ -202,7 +202,7 @@ TEST(FlowDenoising, Sphere) {
   o.tau = 1e-3;
   o.end_time = 1e3;
   // max|EL| stalls near 1.5 (unit-diagonal units; 3e-3 of H⁵) on this icosphere, the discretization
-  // floor of the composed operators at its valence-5 vertices (METHOD §3): steady above it.
+  // floor of the composed operators at its valence-5 vertices (method.md §3): steady above it.
   o.steady_tolerance = 3.0;
   const FlowReport steady = run_flow(V, noisy.F, o);
   const Deviation steady_dev = deviation(test::sphere_distances(V, 1.0));

@@ -1,4 +1,4 @@
-// The frozen Jacobian (FlowOptions::refactor_interval, METHOD §5: "reusing a factorization for
+// The frozen Jacobian (FlowOptions::refactor_interval, method.md §5: "reusing a factorization for
 // several steps ... must show the same steady states (§8)"): the §8.3 noisy unit sphere and the §8.6
 // G2 cap reach the same states with one factorization every 4 steps as with one every step.
 #include "flow_meshes.h"

@@ -24,8 +24,8 @@ using flow_detail::FlowProblem;
 using flow_detail::FlowState;
 using flow_detail::JacobianWorkspace;
 
-SparseOperator diagonal(const Eigen::VectorXd& values) {
-  SparseOperator D(values.size(), values.size());
+SparseRowMatrix diagonal(const Eigen::VectorXd& values) {
+  SparseRowMatrix D(values.size(), values.size());
   std::vector<Eigen::Triplet<double>> entries;
   for (Eigen::Index i = 0; i < values.size(); ++i) entries.emplace_back(i, i, values[i]);
   D.setFromTriplets(entries.begin(), entries.end());
@@ -33,8 +33,8 @@ SparseOperator diagonal(const Eigen::VectorXd& values) {
 }
 
 // #F by #V: row k picks free vertex k.
-SparseOperator selection(const Region& region, int num_vertices) {
-  SparseOperator S(region.num_free(), num_vertices);
+SparseRowMatrix selection(const Region& region, int num_vertices) {
+  SparseRowMatrix S(region.num_free(), num_vertices);
   std::vector<Eigen::Triplet<double>> entries;
   for (int k = 0; k < region.num_free(); ++k) entries.emplace_back(k, region.free_vertices[k], 1.0);
   S.setFromTriplets(entries.begin(), entries.end());
@@ -44,35 +44,35 @@ SparseOperator selection(const Region& region, int num_vertices) {
 // J_FF by the formulas of flow.h, one Eigen sparse product at a time.
 Eigen::MatrixXd reference_jacobian(const FlowProblem& problem, const FlowState& state) {
   const SurfaceOperators& ops = state.ops;
-  const SparseOperator& L = ops.laplace;
+  const SparseRowMatrix& L = ops.laplace;
   const int n = static_cast<int>(L.rows());
-  const SparseOperator S = selection(*problem.region, n);
-  const SparseOperator St = S.transpose();
-  SparseOperator A_H, A_K;
+  const SparseRowMatrix S = selection(*problem.region, n);
+  const SparseRowMatrix St = S.transpose();
+  SparseRowMatrix A_H, A_K;
   normal_weighted(L, ops.geometry.normal, A_H);
   normal_weighted(ops.giaquinta, ops.geometry.normal, A_K);
-  SparseOperator J(S.rows(), S.rows());
+  SparseRowMatrix J(S.rows(), S.rows());
   switch (problem.kind) {
     case FlowKind::sixth_order:
       for (const EnergyTerms& t : state.evaluation.terms) {
-        const SparseOperator R = SparseOperator(L * diagonal(t.values.f_H)) +
-                                 2.0 * SparseOperator(ops.giaquinta * diagonal(t.values.f_K)) +
+        const SparseRowMatrix R = SparseRowMatrix(L * diagonal(t.values.f_H)) +
+                                 2.0 * SparseRowMatrix(ops.giaquinta * diagonal(t.values.f_K)) +
                                  diagonal(euler_lagrange_factor(ops.geometry, t.values));
-        SparseOperator W(n, n);
+        SparseRowMatrix W(n, n);
         for (int k = 0; k < 3; ++k) {
           const Eigen::VectorXd w = 2.0 * ops.geometry.H.cwiseProduct(t.gradient_f.col(k)) -
                                     2.0 * t.second_gradient_f.col(k);
-          W += SparseOperator(diagonal(w) * ops.gradient[k]);
+          W += SparseRowMatrix(diagonal(w) * ops.gradient[k]);
         }
-        const SparseOperator P = SparseOperator(R * L) - W;
-        const SparseOperator Q = SparseOperator(0.5 * diagonal(t.values.f_H) * A_H) +
-                                 SparseOperator(diagonal(t.values.f_K) * A_K);
-        J += SparseOperator(SparseOperator(S * P) * SparseOperator(Q * St));
+        const SparseRowMatrix P = SparseRowMatrix(R * L) - W;
+        const SparseRowMatrix Q = SparseRowMatrix(0.5 * diagonal(t.values.f_H) * A_H) +
+                                 SparseRowMatrix(diagonal(t.values.f_K) * A_K);
+        J += SparseRowMatrix(SparseRowMatrix(S * P) * SparseRowMatrix(Q * St));
       }
       break;
-    case FlowKind::mean_curvature: J = SparseOperator(S * A_H) * St; break;
+    case FlowKind::mean_curvature: J = SparseRowMatrix(S * A_H) * St; break;
     case FlowKind::surface_diffusion:
-    case FlowKind::willmore: J = -0.5 * SparseOperator(S * L) * SparseOperator(A_H * St); break;
+    case FlowKind::willmore: J = -0.5 * SparseRowMatrix(S * L) * SparseRowMatrix(A_H * St); break;
   }
   return Eigen::MatrixXd(J);
 }
@@ -100,7 +100,7 @@ void prepare(Case& s, FlowKind kind, const std::vector<int>& free) {
 }
 
 // max |J − J_ref| / max |J_ref| of the in-place assembly.
-double relative_gap(const SparseOperator& J, const Eigen::MatrixXd& reference) {
+double relative_gap(const SparseRowMatrix& J, const Eigen::MatrixXd& reference) {
   return (Eigen::MatrixXd(J) - reference).cwiseAbs().maxCoeff() / reference.cwiseAbs().maxCoeff();
 }
 
@@ -116,7 +116,7 @@ TEST_P(JacobianAssembly, MatchesSparseProductsAndKeepsPatternBetweenSteps) {
   prepare(s, kind, free);
 
   JacobianWorkspace work;
-  SparseOperator J;
+  SparseRowMatrix J;
   flow_detail::assemble_jacobian(s.problem, s.state, work, J);
   const double gap = relative_gap(J, reference_jacobian(s.problem, s.state));
   ASSERT_EQ(J.rows(), s.region.num_free());
@@ -170,7 +170,7 @@ TEST(JacobianAssembly, RingStencilOnRegularTorus) {
     for (int v = 0; v < static_cast<int>(all.size()); ++v) all[v] = v;
     prepare(s, kind, all);
     JacobianWorkspace work;
-    SparseOperator J;
+    SparseRowMatrix J;
     flow_detail::assemble_jacobian(s.problem, s.state, work, J);
     int smallest = static_cast<int>(J.cols()), largest = 0;
     for (int i = 0; i < J.rows(); ++i) {

@@ -77,7 +77,7 @@ TEST(CotangentLaplacian, SymmetricZeroRowSumsAndMeanCurvatureNormal) {
   EXPECT_LT((Eigen::SparseMatrix<double>(L.transpose()) - L).norm(), 1e-12 * L.norm());
   const Eigen::VectorXd row_sums = L * Eigen::VectorXd::Ones(m.num_vertices());
   EXPECT_LT(row_sums.cwiseAbs().maxCoeff(), 1e-12);
-  // M⁻¹L x ≈ 2Hn = −n on a sphere of radius 2 (METHOD §1 sign convention): accurate in the
+  // M⁻¹L x ≈ 2Hn = −n on a sphere of radius 2 (method.md §1 sign convention): accurate in the
   // area-weighted mean, not pointwise (barycentric areas are inconsistent at valence-5 vertices).
   const Eigen::VectorXd areas = vertex_areas(m.V, m.F);
   const Eigen::MatrixXd LX = L * Eigen::MatrixXd(m.V);
@@ -118,7 +118,7 @@ TEST(HarmonicFair, SphereCapDeviationShrinksWithOrderButStaysFarFromTheSphere) {
             << "max|r-1| = " << d1 << " (k=1), " << d2 << " (k=2), " << d3 << " (k=3)\n";
   EXPECT_GT(d1, d2);
   EXPECT_GT(d2, d3);
-  // The linear baseline does not recover the sphere: METHOD §8.6 measured 4.2e-2 for k = 3.
+  // The linear baseline does not recover the sphere: method.md §8.6 measured 4.2e-2 for k = 3.
   EXPECT_GT(d3, 1e-2);
   EXPECT_LT(d3, 0.1);
 }

@@ -1,4 +1,4 @@
-// METHOD §8.1–8.2 for the operators: exact discrete identities, signs, convergence orders against
+// method.md §8.1–8.2 for the operators: exact discrete identities, signs, convergence orders against
 // analytic values, the normal-weighted matrices of §5, and in-place re-evaluation.
 #include <fairsurf/errors.h>
 #include <fairsurf/io.h>
@@ -36,23 +36,16 @@ Evaluated evaluate(const Mesh& m) {
   return e;
 }
 
-double mean_edge_length(const Mesh& m, const Topology& topo) {
-  double sum = 0.0;
-  for (int e = 0; e < topo.edges.rows(); ++e)
-    sum += (m.V.row(topo.edges(e, 0)) - m.V.row(topo.edges(e, 1))).norm();
-  return sum / static_cast<double>(topo.edges.rows());
-}
-
 // max_i ‖(L x)_i − 2 c_i n_i‖ relative to max_i |2 c_i| (at least `scale`), over the vertices
 // with a fit. (L x)_i is evaluated in stencil form, Σ_j w_ij (x_j − x_i): the product L * V would add
 // a cancellation error of order ε·|x|/h², which has nothing to do with the identity.
-double identity_defect(const SparseOperator& L, const Eigen::VectorXd& c, const Evaluated& e,
+double identity_defect(const SparseRowMatrix& L, const Eigen::VectorXd& c, const Evaluated& e,
                        const Vertices& V, double scale) {
   double worst = 0.0;
   for (int i = 0; i < V.rows(); ++i) {
     if (e.fits.status[i] != FitStatus::kOk) continue;
     Eigen::RowVector3d stencil = Eigen::RowVector3d::Zero();
-    for (SparseOperator::InnerIterator it(L, i); it; ++it)
+    for (SparseRowMatrix::InnerIterator it(L, i); it; ++it)
       if (it.index() != i) stencil += it.value() * (V.row(it.index()) - V.row(i));
     const Eigen::RowVector3d expected = 2.0 * c[i] * e.ops.geometry.normal.row(i);
     worst = std::max(worst, (stencil - expected).norm());
@@ -147,7 +140,7 @@ struct CurvatureErrors {
 CurvatureErrors curvature_errors(const Mesh& m, const std::function<double(int)>& exact_H,
                                  const std::function<double(int)>& exact_K) {
   const Evaluated e = evaluate(m);
-  CurvatureErrors out{mean_edge_length(m, e.topo), 0.0, 0.0, m.num_vertices()};
+  CurvatureErrors out{mean_edge_length(m.V, e.topo), 0.0, 0.0, m.num_vertices()};
   for (int i = 0; i < m.num_vertices(); ++i) {
     out.H = std::max(out.H, std::abs(e.ops.geometry.H[i] - exact_H(i)));
     out.K = std::max(out.K, std::abs(e.ops.geometry.K[i] - exact_K(i)));
@@ -179,7 +172,7 @@ TEST(Operators, CurvaturesConvergeAtSecondOrderOnSpheres) {
   auto sphere_K = [](const Mesh&, int) { return 1.0; };
   expect_second_order_curvatures("icosphere", {test::icosphere(3), test::icosphere(4), test::icosphere(5)},
                                  sphere_H, sphere_K);
-  // METHOD §8.2 reference: H error 4.3e-4 on the 10k icosphere.
+  // method.md §8.2 reference: H error 4.3e-4 on the 10k icosphere.
   const auto e = curvature_errors(test::icosphere(5), [](int) { return -1.0; }, [](int) { return 1.0; });
   EXPECT_LT(e.H, 1e-3);
   expect_second_order_curvatures(
@@ -200,7 +193,7 @@ TEST(Operators, CurvaturesConvergeAtSecondOrderOnAnEllipsoid) {
 
 namespace {
 
-// A smooth function on the torus of radii R, r and its exact ∆, □, ∇ and ◇ (METHOD §2 in the
+// A smooth function on the torus of radii R, r and its exact ∆, □, ∇ and ◇ (method.md §2 in the
 // (u, v) parametrization: g = diag(ρ², r²), b = diag(−ρ cos v, −r), ρ = R + r cos v).
 struct TorusFunction {
   double R, r;
@@ -259,7 +252,7 @@ OperatorErrors torus_operator_errors(int n, int m, double jitter, bool rms) {
   }
   const Eigen::RowVector4d summary = rms ? Eigen::RowVector4d(err.colwise().norm() / std::sqrt(nv))
                                          : Eigen::RowVector4d(err.cwiseAbs().colwise().maxCoeff());
-  return {mean_edge_length(torus.mesh, e.topo), summary[0], summary[1], summary[2], summary[3], nv};
+  return {mean_edge_length(torus.mesh.V, e.topo), summary[0], summary[1], summary[2], summary[3], nv};
 }
 
 struct OperatorOrders {
@@ -301,7 +294,7 @@ TEST(Operators, SingleOperatorsConvergeAtLeastAtFirstOrderOnJitteredTori) {
 }
 
 TEST(Operators, NormalWeightedMatricesLinearizeHAndKWithFrozenStencils) {
-  // METHOD §5: for x' = x + d n with the stencils frozen, ½ n_i·(L∆x')_i = H_i + ½(A_H d)_i and
+  // method.md §5: for x' = x + d n with the stencils frozen, ½ n_i·(L∆x')_i = H_i + ½(A_H d)_i and
   // ½ n_i·(L□x')_i = K_i + ½(A_K d)_i, exactly (the stencils are linear in the positions).
   const auto torus = test::torus_grid(40, 20, 1.0, 0.4, 0.2);
   const Mesh& m = torus.mesh;
@@ -310,7 +303,7 @@ TEST(Operators, NormalWeightedMatricesLinearizeHAndKWithFrozenStencils) {
   Eigen::VectorXd d(m.num_vertices());
   for (int i = 0; i < d.size(); ++i) d[i] = 0.01 * std::sin(torus.uv(i, 0)) * std::cos(2 * torus.uv(i, 1));
   const Vertices moved = m.V + d.asDiagonal() * n;
-  SparseOperator A_H, A_K;
+  SparseRowMatrix A_H, A_K;
   normal_weighted(e.ops.laplace, n, A_H);
   normal_weighted(e.ops.giaquinta, n, A_K);
   ASSERT_EQ(A_H.nonZeros(), e.ops.laplace.nonZeros());
@@ -370,7 +363,7 @@ TEST(Operators, StencilRowsAnnihilateConstantsAndHaveTheNeighbourhoodPattern) {
     std::vector<int> expected(e.fits.neighbours.row(i).begin(), e.fits.neighbours.row(i).end());
     expected.insert(std::lower_bound(expected.begin(), expected.end(), i), i);
     std::vector<int> actual;
-    for (SparseOperator::InnerIterator it(e.ops.gradient[1], i); it; ++it) actual.push_back(it.index());
+    for (SparseRowMatrix::InnerIterator it(e.ops.gradient[1], i); it; ++it) actual.push_back(it.index());
     ASSERT_EQ(actual, expected) << i;
   }
 }
@@ -392,12 +385,12 @@ TEST(Operators, DiscreteIdentitiesHoldToRoundOffOnBundledMeshes) {
 }
 
 TEST(Operators, FrozenStencilLinearizationMissesTheMetricTermOfTheFirstVariation) {
-  // With refitted stencils, δH = (2H² − K)d + ½∆d (METHOD §1), while the frozen-stencil ½A_H d is
+  // With refitted stencils, δH = (2H² − K)d + ½∆d (method.md §1), while the frozen-stencil ½A_H d is
   // ½∆d − (2H² − K)d (the stencil's metric does not see the normal motion, and n·∆n = −(4H² − 2K)).
   // Measured here so that the flow can rely on the difference: δH − ½A_H d = 2(2H² − K)d + O(h²).
   const Mesh m = test::icosphere(4, 1.0);
   Evaluated e = evaluate(m);
-  SparseOperator A_H;
+  SparseRowMatrix A_H;
   normal_weighted(e.ops.laplace, e.ops.geometry.normal, A_H);
   Eigen::VectorXd d(m.num_vertices());
   for (int i = 0; i < d.size(); ++i) d[i] = 1.0 + 0.5 * m.V(i, 2);

@@ -1,4 +1,4 @@
-// METHOD §3 for the fits: neighbourhood choice with its reason, exactness on quadratics, the
+// method.md §3 for the fits: neighbourhood choice with its reason, exactness on quadratics, the
 // reported ill-posed cases (too few neighbours, collinear neighbours, a fold, an ill-conditioned
 // 1-ring), subsets, and re-fitting into the same buffers.
 #include <fairsurf/errors.h>

@@ -69,7 +69,7 @@ TEST(Region, InteriorVerticesLeaveFixedRingsAlongTheBorder) {
 TEST(Region, ParsesContinuityAndRejectsBadInput) {
   EXPECT_EQ(parse_continuity("g1"), Continuity::G1);
   EXPECT_EQ(rings_needed(Continuity::G2), 3);
-  EXPECT_EQ(to_string(Continuity::G0), "G0");
+  EXPECT_STREQ(to_string(Continuity::G0), "G0");
   try {
     parse_continuity("C2");
     FAIL();

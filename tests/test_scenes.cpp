@@ -1,5 +1,5 @@
 // The paper's scenes (scenes.h) and what the flows do to them: Figs 7-8 in measured radii
-// (METHOD §8.5: mean curvature flow shrinks, Willmore inflates, the sixth-order flow with f = H keeps).
+// (method.md §8.5: mean curvature flow shrinks, Willmore inflates, the sixth-order flow with f = H keeps).
 #include <fairsurf/errors.h>
 #include <fairsurf/fair_region.h>
 #include <fairsurf/operators.h>
@@ -78,7 +78,7 @@ struct RadiusRun {
   double mean, max;
 };
 
-// The band flowed for T = 0.1 in scene units (normalize off), as METHOD §8.5's cylinder.
+// The band flowed for T = 0.1 in scene units (normalize off), as method.md §8.5's cylinder.
 RadiusRun flow_band(const Scene& s, Continuity c) {
   Mesh m = s.mesh;
   FairRegionOptions o;

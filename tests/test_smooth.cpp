@@ -154,7 +154,7 @@ TEST_F(CliSmooth, FailedFlowExitsFourWithTheLastAcceptedStateAndTheLog) {
   EXPECT_EQ(run.exit_code, 4) << run.out;
   EXPECT_NE(run.out.find("fairsurf: error: run_flow: step "), std::string::npos) << run.out;
   EXPECT_NE(run.out.find(": 13 consecutive rejected steps; the last: "), std::string::npos) << run.out;
-  // K is not parabolic on the noisy torus (METHOD §4): the failure says so, as a report would have.
+  // K is not parabolic on the noisy torus (method.md §4): the failure says so, as a report would have.
   EXPECT_NE(run.out.find("(f is not parabolic at "), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("(the last accepted state was written to " + out + ")"), std::string::npos) << run.out;
 

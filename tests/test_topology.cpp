@@ -81,7 +81,7 @@ TEST(Topology, KRingSizesOnRegularGrid) {
 }
 
 TEST(Topology, ThreeRingsAroundARegion) {
-  // The three fixed rings of METHOD §6 around a free row of the grid.
+  // The three fixed rings of method.md §6 around a free row of the grid.
   const int n = 10;
   const Mesh m = test::regular_grid(n, n);
   const Topology t = build_topology(m.F, m.num_vertices());

@@ -1,5 +1,5 @@
 // `fairsurf curvature MESH -o OUT.ply [--json] [--flip-sign] [--force]`: per-vertex mean, Gaussian
-// and principal curvatures from the local quadratic fits (METHOD §1–§3), written as PLY vertex
+// and principal curvatures from the local quadratic fits (method.md §1–§3), written as PLY vertex
 // properties H, K, k1, k2 (and fit_status), with their statistics printed as text or JSON.
 #include "command.h"
 #include "repair_report.h"

@@ -14,6 +14,7 @@
 
 #include "command.h"
 #include "flow_log.h"
+#include "region_fairing_args.h"
 #include "repair_report.h"
 
 namespace fairsurf::cli {
@@ -103,8 +104,8 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"filled_with", r.filled_with},
                    {"vertices_added", r.vertices_added},
                    {"faces_added", r.faces_added},
-                   {"requested_continuity", std::string(to_string(r.requested))},
-                   {"supported_continuity", std::string(to_string(r.supported))},
+                   {"requested_continuity", to_string(r.requested)},
+                   {"supported_continuity", to_string(r.supported)},
                    {"delivered", delivered_label(r.supported, r.linear)},
                    {"linear", r.linear},
                    {"held_out_flow_error", r.held_out_flow_error},
@@ -117,12 +118,7 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"well_posedness",
                     {{"vertices", r.well_posedness.vertices},
                      {"violating_vertices", r.well_posedness.violating_vertices}}},
-                   {"continuity",
-                    {{"border_vertices", r.continuity.border_vertices},
-                     {"max_normal_angle", r.continuity.max_normal_angle},
-                     {"mean_normal_angle", r.continuity.mean_normal_angle},
-                     {"max_mean_curvature_jump", r.continuity.max_mean_curvature_jump},
-                     {"mean_mean_curvature_jump", r.continuity.mean_mean_curvature_jump}}}};
+                   {"continuity", to_json(r.continuity)}};
   return j;
 }
 

@@ -46,7 +46,7 @@ nlohmann::json to_json(const FlowReport& report) {
           {"length_scale", report.length_scale},
           {"curvature_scale", report.curvature_scale},
           {"free_vertices", report.free_vertices},
-          {"supported_continuity", std::string(to_string(report.supported))},
+          {"supported_continuity", to_string(report.supported)},
           {"well_posedness",
            {{"vertices", report.well_posedness.vertices},
             {"violating_vertices", report.well_posedness.violating_vertices}}},
@@ -56,7 +56,7 @@ nlohmann::json to_json(const FlowReport& report) {
 void warn_if_not_parabolic(const WellPosedness& w, const std::string& where) {
   if (w.violating_vertices > 0)
     std::fprintf(stderr, "fairsurf: warning: %sthe chosen f is not parabolic at %d of %d vertices of the flow's "
-                 "input (METHOD §4); the step control kept the flow stable\n", where.c_str(), w.violating_vertices,
+                 "input (method.md §4); the step control kept the flow stable\n", where.c_str(), w.violating_vertices,
                  w.vertices);
 }
 

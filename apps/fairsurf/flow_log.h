@@ -21,7 +21,7 @@ nlohmann::json to_json(const StepRecord& record);
 nlohmann::json to_json(const FlowReport& report);
 
 /// Prints "fairsurf: warning: the chosen f is not parabolic at N of M vertices ..." when the
-/// sixth-order flow of `report` was ill-posed on part of its input (METHOD §4); nothing otherwise.
+/// sixth-order flow of `report` was ill-posed on part of its input (method.md §4); nothing otherwise.
 void warn_if_not_parabolic(const FlowReport& report);
 /// The same with a prefix naming where (fill: "hole N: ").
 void warn_if_not_parabolic(const WellPosedness& w, const std::string& where);

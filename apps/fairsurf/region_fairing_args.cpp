@@ -49,8 +49,8 @@ nlohmann::json to_json(const ContinuityMeasure& m) {
 nlohmann::json to_json(const FairRegionReport& r) {
   nlohmann::json j{{"free_vertices", r.free_vertices},
                    {"method", to_string(r.method)},
-                   {"continuity_requested", std::string(to_string(r.requested))},
-                   {"continuity_supported", std::string(to_string(r.supported))},
+                   {"continuity_requested", to_string(r.requested)},
+                   {"continuity_supported", to_string(r.supported)},
                    {"delivered", delivered_label(r.supported, r.linear)},
                    {"note", r.note},
                    {"continuity_measured", to_json(r.continuity)},
@@ -75,7 +75,7 @@ std::string summary(const FairRegionReport& r) {
     if (r.harmonic.iterations > 0)
       start.append("harmonic start (").append(std::to_string(r.harmonic.iterations)).append(" solves), ");
     std::snprintf(text, sizeof text, "%s (%s flow, %s%d steps, %s, max|V| %.3g)",
-                  std::string(to_string(r.supported)).c_str(), to_string(r.flow_kind), start.c_str(),
+                  to_string(r.supported), to_string(r.flow_kind), start.c_str(),
                   r.flow.accepted_steps, to_string(r.flow.stop_reason), r.flow.final_max_velocity);
   }
   std::string out = text;

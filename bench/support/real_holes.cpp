@@ -13,11 +13,7 @@
 namespace fairsurf::bench {
 
 double mean_edge_length(const Mesh& mesh) {
-  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
-  double sum = 0;
-  for (int e = 0; e < topo.edges.rows(); ++e)
-    sum += (mesh.V.row(topo.edges(e, 0)) - mesh.V.row(topo.edges(e, 1))).norm();
-  return topo.edges.rows() > 0 ? sum / static_cast<double>(topo.edges.rows()) : 0.0;
+  return fairsurf::mean_edge_length(mesh.V, build_topology(mesh.F, mesh.num_vertices()));
 }
 
 int euler_characteristic(const Mesh& mesh) {

@@ -48,10 +48,7 @@ Mesh icosphere(int subdivisions) {
 SparseRowMatrix sphere_step_matrix_proxy(int subdivisions, double tau, double beta) {
   const Mesh mesh = icosphere(subdivisions);
   const Topology topo = build_topology(mesh.F, mesh.num_vertices());
-  double edge_sum = 0;
-  for (Eigen::Index e = 0; e < topo.edges.rows(); ++e)
-    edge_sum += (mesh.V.row(topo.edges(e, 0)) - mesh.V.row(topo.edges(e, 1))).norm();
-  const double h = edge_sum / static_cast<double>(topo.edges.rows());
+  const double h = mean_edge_length(mesh.V, topo);
   std::vector<Eigen::Triplet<double>> laplacian, difference;
   for (int i = 0; i < topo.num_vertices; ++i) {
     laplacian.emplace_back(i, i, topo.vertex_vertices.size(i));

@@ -1,4 +1,4 @@
-// A stand-in for the flow's step matrix (METHOD §5) on the unit icosphere, the mesh of METHOD's
+// A stand-in for the flow's step matrix (method.md §5) on the unit icosphere, the mesh of method.md §5's
 // reference timings (10 242 / 40 962 / 163 842 vertices at 5 / 6 / 7 subdivisions):
 // A = I + (τ/h⁶)(L³ + β L² D), L the uniform graph Laplacian (valence minus adjacency), D the
 // antisymmetric 1-ring difference D_ij = (z_j − z_i)/h, h the mean edge length. Same 3-ring stencil

@@ -1,4 +1,4 @@
-// fairsurf — blending two boundary loops with a fair G2 tube (METHOD §7, the paper's Figs 3–4).
+// fairsurf — blending two boundary loops with a fair G2 tube (method.md §7, the paper's Figs 3–4).
 //
 // Two boundary loops of one mesh — or of two meshes concatenated first (concatenate_meshes) — are
 // joined by an initial tube (patch.h's tube_patch: loops aligned, Hermite rings, zipper strips,
@@ -12,19 +12,16 @@
 // two pieces of one consistently oriented mesh.
 #pragma once
 
-#include <fairsurf/continuity.h>
+#include <fairsurf/continuity_measure.h>
 #include <fairsurf/fair_region.h>
 #include <fairsurf/flow.h>
 #include <fairsurf/mesh.h>
+#include <fairsurf/mesh_operations.h>
 #include <fairsurf/patch.h>
 
 #include <vector>
 
 namespace fairsurf {
-
-/// `first`'s vertices and faces, then `second`'s with indices shifted by first's #V. Per-vertex
-/// scalars and colours are kept when both meshes have them (same names), dropped otherwise.
-Mesh concatenate_meshes(const Mesh& first, const Mesh& second);
 
 struct BlendOptions {
   /// Indices of the two loops to join, into boundary_loops(mesh); both −1: the closest pair
@@ -58,7 +55,7 @@ struct BlendOptions {
 struct BlendLoop {
   int index = -1;            ///< into boundary_loops of the input
   int length = 0;            ///< vertices
-  ContinuityMeasure border;  ///< measured at this loop after fairing (one-sided fits, continuity.h)
+  ContinuityMeasure border;  ///< measured at this loop after fairing (one-sided fits, continuity_measure.h)
   /// The same measurement on the untouched input, across the line of vertices reference_ring rings
   /// from the loop: what one-sided fits read where the surface is smooth by construction, i.e. the
   /// floor of `border` on this mesh (0 on a flat disk; on a coarse curved scan it is not small).
@@ -89,7 +86,7 @@ struct BlendReport {
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options = {}, const FlowObserver& observer = {});
 
 /// Measures continuity at the vertices of `loop` only: on the faces within `rings` rings of it,
-/// with the free vertices among them (continuity.h's measure_continuity).
+/// with the free vertices among them (continuity_measure.h's measure_continuity).
 ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
                                              const std::vector<int>& free_vertices, int rings = 4);
 

@@ -1,30 +1,26 @@
-// fairsurf — measuring the continuity reached across the border of a faired region (METHOD §6, §8).
-//
-// At every border vertex (a fixed vertex with a free neighbour) two one-sided fits are compared: one
-// on the faces that touch the free region, one on the faces that do not. Each side sees the vertex
-// as a mesh-border vertex and fits its 2-ring (METHOD §3.1), so the two normals and mean curvatures
-// are the surface's one-sided limits. G1 shows as a small normal angle, G2 as a small jump in H too.
+// fairsurf — the continuity a fairing reaches across the border of its free region: G0 positions,
+// G1 tangent planes, G2 curvatures (region.h: the fixed rings each needs; continuity_measure.h: how
+// it is measured on a result).
 #pragma once
 
-#include <fairsurf/mesh.h>
-
-#include <span>
+#include <string>
+#include <string_view>
 
 namespace fairsurf {
 
-struct ContinuityMeasure {
-  int border_vertices = 0;         ///< fixed vertices adjacent to the free region that were measured
-  double max_normal_angle = 0;     ///< radians, between the one-sided normals
-  double mean_normal_angle = 0;    ///< radians
-  double max_mean_curvature_jump = 0;   ///< |H_inside − H_outside|, 1/length
-  double mean_mean_curvature_jump = 0;  ///< 1/length
-};
+/// Continuity across the border of a free region: position, tangent plane, curvature.
+enum class Continuity { G0 = 0, G1 = 1, G2 = 2 };
 
-/// Measures the one-sided normals and mean curvatures at the border of `free_vertices` on (V, F):
-/// at every border vertex, or only at those listed in `at` when it is not empty (one border of a
-/// region that has several, e.g. one loop of a blend). Border vertices where either side's fit is
-/// ill-posed are skipped (not counted). Throws InvalidArgument for a vertex of `at` out of range.
-ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F, std::span<const int> free_vertices,
-                                     std::span<const int> at = {});
+/// Fixed rings a flow of the given continuity needs (G0: 1, G1: 2, G2: 3).
+constexpr int rings_needed(Continuity c) { return static_cast<int>(c) + 1; }
+
+/// "G0", "G1", "G2".
+const char* to_string(Continuity c);
+/// What a fairing delivers: "G2" (a flow with three fixed rings) or, for the linear cotangent ∆^k
+/// solution on the same rings, "C2 (linear)" — curvature continuous only to the order of the
+/// linear operator, not geometrically.
+std::string delivered_label(Continuity continuity, bool linear);
+/// Parses "G0"/"G1"/"G2" (case-insensitive); throws InvalidArgument otherwise.
+Continuity parse_continuity(std::string_view text);
 
 }  // namespace fairsurf

@@ -1,5 +1,5 @@
 // fairsurf — the discrete energy E = Σ_l ∫ ‖∇f_l‖² dA and its Euler–Lagrange expression
-// (METHOD §4–§5), evaluated from the surface operators at the current positions.
+// (method.md §4–§5), evaluated from the surface operators at the current positions.
 //
 //   density_i = Σ_l ‖∇f_l(x_i)‖²,  E = Σ_i A_i density_i,  A_i = one third of the incident triangle
 //   areas (SurfaceGeometry::area), ∇f = (G_x f, G_y f, G_z f).

@@ -1,10 +1,10 @@
-// fairsurf — the functions f(H, K) of the energies E = Σ_l ∫ ‖∇f_l‖² dA (METHOD §4).
+// fairsurf — the functions f(H, K) of the energies E = Σ_l ∫ ‖∇f_l‖² dA (method.md §4).
 //
 // A function is named by a string (docs/energies.md has the catalogue):
 //   built-ins, with exact f, f_H, f_K:  H  K  H2  absHpH:p  4absHH+2K  k1  k2
 //   anything else is parsed as a formula in H and K (muparser syntax: H^3+0.5*K, exp(H)*K, ...), whose
 //   f_H and f_K are central differences (see below). A formula may also use `eps`, the regularization ε.
-// Signs follow METHOD §1: H = ½ trace of the shape operator with the outward normal, so H = −1/R and
+// Signs follow method.md §1: H = ½ trace of the shape operator with the outward normal, so H = −1/R and
 // K = 1/R² on a sphere of radius R; k1,2 = H ± √(H² − K), k1 ≥ k2.
 //
 // Regularization: singular built-ins replace |H| by √(H² + ε²) and √(H² − K) by √(H² − K + ε²), where
@@ -32,7 +32,7 @@ struct EnergyScale {
 };
 
 /// κ = mean over vertices of √max(2H² − K, 0) = √((k1² + k2²)/2): 1 on a unit sphere. #V vectors H,
-/// K. Returns 1 when the surface is flat (κ = 0), which in METHOD §7's units (unit bounding-box
+/// K. Returns 1 when the surface is flat (κ = 0), which in method.md §7's units (unit bounding-box
 /// diagonal) is the curvature of a sphere about the size of the mesh.
 double curvature_scale(const Eigen::VectorXd& H, const Eigen::VectorXd& K);
 
@@ -92,10 +92,10 @@ EnergyFunctions parse_energy_functions(const std::vector<std::string>& specs);
 /// The built-in names, for help texts: "H, K, H2, absHpH:p, 4absHH+2K, k1, k2".
 const char* builtin_energy_function_names();
 
-/// Where the flow of an energy is parabolic (METHOD §4). The principal part of the flow of one f is
+/// Where the flow of an energy is parabolic (method.md §4). The principal part of the flow of one f is
 /// −2|ξ|²σ(ξ)² with σ(ξ) = (½f_H + f_K k2)ξ1² + (½f_H + f_K k1)ξ2² in the principal frame, so the flow
 /// is parabolic where the two coefficients are non-zero with the same sign (|f_K k_i| < f_H/2 is the
-/// sufficient form METHOD §4 states; f = K is ill-posed exactly where K ≤ 0). For a sum of functions
+/// sufficient form method.md §4 states; f = K is ill-posed exactly where K ≤ 0). For a sum of functions
 /// it is parabolic unless one direction ξ makes every σ_l vanish. A coefficient below 1e-4 of the
 /// larger one counts as zero, so f = k1 alone (degenerate but for the regularization) is flagged.
 struct WellPosedness {

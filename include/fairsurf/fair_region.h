@@ -10,7 +10,7 @@
 // cotangent ∆^(k+1) x = 0 instead.
 #pragma once
 
-#include <fairsurf/continuity.h>
+#include <fairsurf/continuity_measure.h>
 #include <fairsurf/flow.h>
 #include <fairsurf/harmonic.h>
 #include <fairsurf/mesh.h>
@@ -69,11 +69,9 @@ struct FairRegionOptions {
   /// sixth-order flow descends the energy (FlowStepKind::energy_descent, steady once a step lowers E
   /// by less than 1e-5 of itself, 30 rejections in a row allowed), keeps the ∆³ solution as its
   /// floor (linear_floor) and delivers it where it re-predicts 2 held-out rings better
-  /// (held_out_rings); and both
-  /// linear solvers use the minimum-degree ordering (patch-sized systems analyze ~30x faster than
-  /// with nested dissection). From a flattened cap the plain defaults need 160–300 trial steps and
-  /// do not settle beyond ~1k free vertices (bench_fair: max|r − 1| 0.20 and 0.54 at 2.6k and 10k
-  /// free vertices against 6e-5 and 2e-5 with these). Used by fill_holes and `fairsurf fair`; not
+  /// (held_out_rings); and both linear solvers use the minimum-degree ordering, whose analysis
+  /// is far cheaper on patch-sized systems. From a flattened cap the plain defaults do not settle
+  /// beyond about a thousand free vertices (docs/blend.md). Used by fill_holes and `fairsurf fair`; not
   /// by blend, whose tubes' ∆³ re-evaluation can fold a tube around a corner (fairing_cross).
   static FairRegionOptions harmonic_started();
 };

@@ -1,4 +1,4 @@
-// fairsurf — N-sided hole filling with G2 boundary data (METHOD §7), end to end.
+// fairsurf — N-sided hole filling with G2 boundary data (method.md §7), end to end.
 //
 // Pipeline, per hole: the boundary loop (topology.h boundary_loops, in its order: loop i is hole i)
 // is triangulated, refined to the surrounding edge length and relaxed to a G0 membrane (patch.h
@@ -68,9 +68,9 @@ struct FillOptions {
   /// fair_region's defaults, except that the flow starts from the re-evaluated cotangent ∆^k
   /// solution (harmonic_start_iterations = 8) with a Newton-like first step (τ = 1e-2: the step
   /// control quarters it on rejection): a membrane patch is far from the G2 steady state, and from
-  /// there the flow needed ~100–300 steps with τ doubling from 1e-9; from ∆³ it needs ~10.
-  /// Both linear solvers use the minimum-degree ordering (LinearSolverOptions::ordering): on
-  /// patch-sized systems its analysis is ~10–30× cheaper than nested dissection's.
+  /// there the flow needs hundreds of steps with τ growing from 1e-9, from ∆³ a few (docs/fill.md).
+  /// Both linear solvers use the minimum-degree ordering (LinearSolverOptions::ordering), whose
+  /// analysis is far cheaper than nested dissection's on patch-sized systems.
   static FairRegionOptions default_fairing();
 };
 
@@ -111,7 +111,7 @@ struct HoleReport {
   /// max|V| on the free vertices at the end, in the flow's units (flow.h; |EL| for the sixth-order
   /// flow); NaN for the harmonic method or a patch without interior vertices.
   double final_max_velocity = 0;
-  /// Where the sixth-order flow's f is not parabolic on its input (METHOD §4; energy_function.h):
+  /// Where the sixth-order flow's f is not parabolic on its input (method.md §4; energy_function.h):
   /// of the flow that ran or was weighed (FairRegionReport::flow); zero when none reported it.
   WellPosedness well_posedness;
   /// Normal angle and mean-curvature jump across this hole's border, measured after fairing

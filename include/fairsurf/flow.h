@@ -1,5 +1,5 @@
 // fairsurf — geometric flows of triangle meshes: the sixth-order flow of E = Σ_l ∫ ‖∇f_l‖² dA and
-// three baselines, by semi-implicit normal steps with step control (METHOD §4–§7).
+// three baselines, by semi-implicit normal steps with step control (method.md §4–§7).
 //
 // Every flow moves the free vertices along their fitted normals n (operators.h; outward on a closed
 // counter-clockwise mesh, H = −1/R on a sphere) with a normal velocity V:
@@ -7,7 +7,7 @@
 //   mean_curvature     V = 2H                (a sphere shrinks)
 //   surface_diffusion  V = −∆H
 //   willmore           V = −(∆H + 2H(H² − K)) (descends ∫ H² dA; a cylinder inflates)
-// The step (METHOD §5). Freeze fits, stencils, n, f_H, f_K, c and w at x^k, linearize
+// The step (method.md §5). Freeze fits, stencils, n, f_H, f_K, c and w at x^k, linearize
 // V^{k+1} ≈ V^k + J d and solve for the normal displacement d of the free vertices F:
 //   (I − τ J_FF) d_F = τ V_F,  d = 0 on fixed vertices,  x^{k+1} = x^k + d ∘ n^k, with
 //   sixth_order        J = Σ_l P′_l Q_l,  P′ = R L∆ − Σ_c diag(w_c) G_c,
@@ -24,7 +24,7 @@
 // and its values are computed in place every step, so the solver analyzes it once and refactors
 // every step.
 //
-// Units (METHOD §7). With FlowOptions::normalize (the default) the engine translates and scales the
+// Units (method.md §7). With FlowOptions::normalize (the default) the engine translates and scales the
 // mesh to unit bounding-box diagonal, flows, and scales back: τ, end_time, tau_max and
 // steady_tolerance are in those units. Time scales like length⁶ for the sixth-order flow, length⁴
 // for surface diffusion and Willmore, length² for mean curvature flow: a unit sphere (diagonal 2√3)
@@ -32,7 +32,7 @@
 // sixth-order flow. |V| (= |EL| for the sixth-order flow) is in 1/length⁵ (f = H), 1/length
 // (mean curvature), 1/length³ (surface diffusion, Willmore).
 //
-// Step control (METHOD §5). A trial step is rejected if max_i |d_i| exceeds max_displacement_ratio
+// Step control (method.md §5). A trial step is rejected if max_i |d_i| exceeds max_displacement_ratio
 // times the mean length of the edges at vertex i, if the flow's energy more than doubles
 // (E' > max_energy_growth·E + round-off floor), or if it produces a non-finite value, an inverted face
 // (a face normal turned by more than 90° against its orientation at x^k) or a failed linear solve;
@@ -59,6 +59,7 @@
 #pragma once
 
 #include <fairsurf/energy_function.h>
+#include <fairsurf/flow_kind.h>
 #include <fairsurf/linear_solver.h>
 #include <fairsurf/mesh.h>
 #include <fairsurf/quadratic_fit.h>
@@ -71,10 +72,8 @@
 
 namespace fairsurf {
 
-enum class FlowKind { sixth_order, willmore, surface_diffusion, mean_curvature };
-
 /// How a trial step is computed and judged (docs/flow.md).
-///   implicit_flow   the semi-implicit time step of METHOD §5 with the step control below: follows
+///   implicit_flow   the semi-implicit time step of method.md §5 with the step control below: follows
 ///                   the flow in time (`fairsurf smooth`).
 ///   energy_descent  the sixth-order flow (the others step in time regardless): minimizes the discrete energy E directly (Levenberg–Marquardt
 ///                   on its Gauss–Newton model, energy_descent.h): (N + diag(A_F)/(2τ)) d_F = −g, a
@@ -85,17 +84,9 @@ enum class FlowKind { sixth_order, willmore, surface_diffusion, mean_curvature }
 ///                   steady_energy_tolerance, or max_consecutive_rejections rejections in a row: no
 ///                   descent is left to round-off). For fill, fair and blend, which need the steady
 ///                   state only: on real meshes the fitted EL is not the gradient of the discrete E
-///                   (METHOD §3: composed operators are inconsistent on irregular meshes), so its
+///                   (method.md §3: composed operators are inconsistent on irregular meshes), so its
 ///                   Newton steps can raise E and its small steps stall above zero.
 enum class FlowStepKind { implicit_flow, energy_descent };
-
-/// "sixth-order", "willmore", "surface-diffusion", "mean-curvature".
-const char* to_string(FlowKind kind);
-/// Inverse of to_string ('_' accepted for '-'); throws InvalidArgument naming the valid kinds.
-FlowKind parse_flow_kind(const std::string& name);
-/// The order of the flow's PDE: 6, 4, 4, 2. The flow reaches continuity G(order/2 − 1) across the
-/// border of the free region when order/2 fixed rings surround it (region.h).
-int flow_order(FlowKind kind);
 
 struct StepControlOptions {
   bool enabled = true;
@@ -162,7 +153,7 @@ struct FlowOptions {
   /// Fixed rings along the mesh border when run_flow is given no region (smoothing an open mesh).
   int border_fixed_rings = 3;
 
-  /// Frozen Jacobian (METHOD §5): one assembly and factorization of I − τJ serves up to this many
+  /// Frozen Jacobian (method.md §5): one assembly and factorization of I − τJ serves up to this many
   /// accepted steps while τ is unchanged (at tau_max, or with a fixed τ); every step still solves
   /// with the current velocity V, so steady states are those of the exact step. 1: J is assembled
   /// and factorized at every step.
@@ -222,7 +213,7 @@ struct FlowReport {
   /// Length of the mesh in the flow's units: 1/diagonal when normalized, else 1.
   double length_scale = 1;
   double curvature_scale = 1;      ///< κ used for ε, in the flow's units
-  /// Sixth order: where the chosen functions are not parabolic on the input (METHOD §4). The flow
+  /// Sixth order: where the chosen functions are not parabolic on the input (method.md §4). The flow
   /// still runs; callers should warn when violating_vertices > 0.
   WellPosedness well_posedness;
   int free_vertices = 0;
@@ -239,7 +230,7 @@ using FlowObserver = std::function<void(const StepRecord&)>;
 /// (if set) after each trial step. V (#V by 3) is replaced only by accepted states. Throws
 /// InvalidArgument for invalid options or a region/mesh mismatch, InvalidMeshError for non-finite
 /// input, NumericalError as the header says; when f is not parabolic on part of the input, that
-/// error's message ends with "(f is not parabolic at N of M vertices of the flow's input, METHOD §4)".
+/// error's message ends with "(f is not parabolic at N of M vertices of the flow's input, method.md §4)".
 FlowReport run_flow(Vertices& V, const Faces& F, const Region& region, const FlowOptions& options = {},
                     const FlowObserver& observer = {});
 

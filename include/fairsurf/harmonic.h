@@ -19,7 +19,7 @@ namespace fairsurf {
 
 /// #V by #V cotangent Laplacian: L(i,j) = ½(cot α_ij + cot β_ij), L(i,i) = −Σ_j L(i,j).
 /// Symmetric, negative semi-definite, rows sum to zero. With M = diag(vertex_areas), M⁻¹L x ≈ 2Hn in
-/// METHOD §1's convention — in the mean: with barycentric areas the pointwise error does not vanish
+/// method.md §1's convention — in the mean: with barycentric areas the pointwise error does not vanish
 /// on irregular meshes (15% at valence-5 vertices of an icosphere), which is one reason the flows use
 /// quadratic fits instead. Border edges carry their single cotangent.
 Eigen::SparseMatrix<double> cotangent_laplacian(const Vertices& V, const Faces& F);

@@ -1,4 +1,4 @@
-// fairsurf — minimum-weight triangulation of a hole's boundary polygon (Liepa 2003; METHOD §7).
+// fairsurf — minimum-weight triangulation of a hole's boundary polygon (Liepa 2003; method.md §7).
 //
 // A hole is a boundary loop as topology.h's boundary_loops returns it: an ordered vertex cycle with
 // the surface on its left (walking it seen from the side the normals point to), so the mesh face
@@ -32,8 +32,7 @@
 // (face_intersection.h, the same test as fill's); while it crosses, the programme is solved again
 // with the crossing diagonals (an edge through a face) or triangles (a face's edge through them)
 // forbidden, up to `max_crossing_rounds` times, and the triangulation with the fewest crossings is
-// kept. On cgal_mech_holes_shark's 80-edge hole 3 that takes 30 rounds (0.23 s) and removes the 5
-// crossings that fairing then turned into a crossing patch. CGAL avoids them by restricting the
+// kept (docs/patch.md: the corner of cgal_mech_holes_shark's hole 3). CGAL avoids them by restricting the
 // search to a 3D Delaunay triangulation of the loop, which we do not have.
 //
 // A triangle is admissible only if its three vertices are distinct and none of its diagonals is
@@ -55,8 +54,8 @@ inline constexpr double kAngleTie = 1e-9;
 
 struct HoleTriangulationOptions {
   /// Loops with at most this many edges are triangulated by the O(n³) dynamic programme; larger
-  /// ones are cut into pieces of at most this size first. At 200 the programme takes 17 ms, at
-  /// 800 1.2 s (bench_patch).
+  /// ones are cut into pieces of at most this size first, which bounds the cubic cost (timings in
+  /// docs/patch.md).
   int max_dynamic_programming_size = 200;
   /// A triangulation whose faces cross the mesh (face_intersection.h) is solved again with the
   /// crossing triangles forbidden, at most this many times; the one with the fewest crossings is

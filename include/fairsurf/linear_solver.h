@@ -1,6 +1,6 @@
 // fairsurf — sparse linear systems A x = b (non-symmetric in general): one interface, three back ends.
 //
-// Made for the flow's step matrix (I − τ (P′Q)_FF) of METHOD §5: non-symmetric, a 3-ring stencil
+// Made for the flow's step matrix (I − τ (P′Q)_FF) of method.md §5: non-symmetric, a 3-ring stencil
 // (≈ 37 non-zeros a row), entries growing like τ/h⁶, the sparsity pattern fixed while the mesh
 // connectivity is. So the work is split the way the flow uses it:
 //   analyze(A)    once per sparsity pattern (ordering, symbolic factorization),
@@ -26,6 +26,8 @@
 // A solver object is not thread-safe; use one per thread.
 #pragma once
 
+#include <fairsurf/sparse.h>
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -34,9 +36,6 @@
 #include <string>
 
 namespace fairsurf {
-
-/// Square sparse matrix in compressed row storage, the layout the operators and the step use.
-using SparseRowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 enum class LinearSolverKind { mumps, umfpack, gmres, mumps_mpi };
 
@@ -54,9 +53,9 @@ enum class ResidualMeasure {
 /// The fill-reducing ordering of the direct back ends' analysis (GMRES ignores it).
 enum class FillOrdering {
   automatic,  ///< MUMPS chooses (ICNTL(7) = 7: nested dissection on large systems); UMFPACK: METIS
-  /// Approximate minimum degree (MUMPS QAMD, UMFPACK AMD). On a hole patch's systems (~10k unknowns,
-  /// ∆³ or the step matrix) the analysis is ~30× cheaper than nested dissection's and the
-  /// factorization no slower (docs/fill.md, benchmark); on very large systems prefer automatic.
+  /// Approximate minimum degree (MUMPS QAMD, UMFPACK AMD). On a hole patch's systems (∆³ or the
+  /// step matrix) its analysis is far cheaper than nested dissection's and the factorization no
+  /// slower (docs/fill.md, benchmark); on very large systems prefer automatic.
   minimum_degree,
 };
 
@@ -84,7 +83,7 @@ struct LinearSolverOptions {
   double gmres_tolerance = 1e-8;
   int gmres_max_iterations = 1000;    ///< per GMRES call (each refinement step is one call)
   /// ILUT drops entries below this times the row norm; with the fill factor below, the smallest
-  /// preconditioner with which GMRES converges on the sixth-order step (METHOD §5: ILU needs
+  /// preconditioner with which GMRES converges on the sixth-order step (method.md §5: ILU needs
   /// near-complete fill there; drop 1e-5 and fill 20 stall near a relative residual of 1e-4).
   double ilut_drop_tolerance = 1e-6;
   int ilut_fill_factor = 40;  ///< ILUT keeps at most this times the row's non-zeros

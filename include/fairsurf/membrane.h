@@ -8,7 +8,7 @@
 // iteration with linear_solver.h. Repeating the solve with weights recomputed on the new positions
 // is Pinkall–Polthier's minimal-surface iteration (a mean-curvature-like flow with infinite step);
 // it normally lowers the area of the free region (the report has the areas). This is the initial state the sixth-order
-// flow starts from in hole filling and blending (METHOD §7).
+// flow starts from in hole filling and blending (method.md §7).
 #pragma once
 
 #include <fairsurf/linear_solver.h>

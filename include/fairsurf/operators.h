@@ -1,14 +1,14 @@
 // fairsurf — discrete differential operators and curvatures from the local quadratic fits
-// (METHOD §1–§3).
+// (method.md §1–§3).
 //
-// Sign conventions (METHOD §1): n is the fitted normal t₁×t₂/‖t₁×t₂‖, oriented like the fit's frame
+// Sign conventions (method.md §1): n is the fitted normal t₁×t₂/‖t₁×t₂‖, oriented like the fit's frame
 // normal N0 (the area-weighted face normal, outward on a closed counter-clockwise mesh).
 // H = ½ g^αβ b_αβ and K = b/g with b_αβ = n·t_αβ, so that ∆x = 2Hn and □x = 2Kn: a sphere of radius R
 // with outward normals has H = −1/R, K = 1/R²; a cylinder H = −1/(2R), K = 0. Principal curvatures
 // k1 = H + √(H² − K) ≥ k2 = H − √(H² − K) (the radicand clamped at 0). Units: H, k1, k2 in 1/length,
 // K in 1/length², areas in length²; each operator's units are listed below.
 //
-// Every operator is a stencil over N(i) (METHOD §3.4): (Op f)_i = Σ_{j∈N(i)} w_ij (f_j − f_i). It is
+// Every operator is a stencil over N(i) (method.md §3.4): (Op f)_i = Σ_{j∈N(i)} w_ij (f_j − f_i). It is
 // stored as a #V by #V row-major sparse matrix with the pattern N(i) ∪ {i}, columns ascending, the
 // diagonal holding −Σ_j w_ij, so that (Op f) = Op * f for any #V vector f. The matrices are not
 // symmetric. Rows of vertices that were not fitted are empty; rows of vertices whose fit status is
@@ -25,6 +25,7 @@
 
 #include <fairsurf/mesh.h>
 #include <fairsurf/quadratic_fit.h>
+#include <fairsurf/sparse.h>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -32,9 +33,6 @@
 #include <array>
 
 namespace fairsurf {
-
-/// Row-major sparse matrix, #V by #V, as every operator is stored.
-using SparseOperator = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 /// Per-vertex geometry of the fitted surface. Vertices that are not fitted, or whose fit has status
 /// kTooFewNeighbours or kDegenerate, get n = N0 (zero if undefined) and H = K = k1 = k2 = 0; their
@@ -48,12 +46,12 @@ struct SurfaceGeometry {
   Eigen::VectorXd area;  ///< #V vertex areas: one third of the incident triangle areas
 };
 
-/// The operators of METHOD §3.4 plus the geometry they come with.
+/// The operators of method.md §3.4 plus the geometry they come with.
 struct SurfaceOperators {
-  SparseOperator laplace;                        ///< L∆
-  SparseOperator giaquinta;                      ///< L□ (Giaquinta–Hildebrandt)
-  std::array<SparseOperator, 3> gradient;        ///< G_x, G_y, G_z
-  std::array<SparseOperator, 3> second_gradient; ///< D_x, D_y, D_z
+  SparseRowMatrix laplace;                        ///< L∆
+  SparseRowMatrix giaquinta;                      ///< L□ (Giaquinta–Hildebrandt)
+  std::array<SparseRowMatrix, 3> gradient;        ///< G_x, G_y, G_z
+  std::array<SparseRowMatrix, 3> second_gradient; ///< D_x, D_y, D_z
   SurfaceGeometry geometry;
 };
 
@@ -68,12 +66,12 @@ void update_operators(const QuadraticFits& fits, const Vertices& V, SurfaceOpera
 /// Geometry only (no matrices), for curvature output and rendering.
 SurfaceGeometry compute_geometry(const QuadraticFits& fits, const Vertices& V);
 
-/// The normal-weighted operator A = L ∘ (n_i·n_j) of METHOD §5: A(i,j) = L(i,j) n_i·n_j off the
+/// The normal-weighted operator A = L ∘ (n_i·n_j) of method.md §5: A(i,j) = L(i,j) n_i·n_j off the
 /// diagonal and A(i,i) = L(i,i) = −Σ_j w_ij (n_i·n_i = 1), so that for a normal displacement
 /// x_j → x_j + d_j n_j and frozen stencils, ½ n_i·(L∆(x + d n))_i = H_i + ½ (A_H d)_i exactly
 /// (A_H from L∆), and ½ n_i·(L□(x + d n))_i = K_i + ½ (A_K d)_i (A_K from L□; the flow uses
-/// K^{k+1} = K^k + A_K d, METHOD §5). `normal` is #V by 3. `out` keeps its storage when it already
+/// K^{k+1} = K^k + A_K d, method.md §5). `normal` is #V by 3. `out` keeps its storage when it already
 /// has L's pattern (same size and non-zero count), so calling this every step does not allocate.
-void normal_weighted(const SparseOperator& L, const Vertices& normal, SparseOperator& out);
+void normal_weighted(const SparseRowMatrix& L, const Vertices& normal, SparseRowMatrix& out);
 
 }  // namespace fairsurf

@@ -1,4 +1,4 @@
-// fairsurf — the initial patch of hole filling and blending (METHOD §7): the surface a flow fairs.
+// fairsurf — the initial patch of hole filling and blending (method.md §7): the surface a flow fairs.
 //
 // hole_patch:  every given hole is triangulated (hole_triangulation.h), all patches are refined
 //              together to the surrounding edge length (patch_refinement.h) and relaxed to a G0

@@ -6,7 +6,7 @@
 // the edge length wanted around it: on border vertices, the mean length of their (two) border
 // edges, which are edges of the surrounding mesh; on interior vertices of the input patch (tube
 // rings), the mean length of their patch edges. σ thus interpolates the border's edge lengths, as
-// METHOD §7 asks ("edge lengths match the surrounding mesh"), and follows a grading along it.
+// method.md §7 asks ("edge lengths match the surrounding mesh"), and follows a grading along it.
 // Refinement then repeats, until no triangle is split (Liepa's density control, factor α):
 //   1. split: a triangle with centroid c and σ_c = mean σ of its corners is split 1→3 at c when
 //      α·|c − v| > σ_c and α·|c − v| > σ_v for each corner v; c gets σ_c;

@@ -1,4 +1,4 @@
-// fairsurf — per-vertex local quadratic fits (METHOD §3), the numerical heart every operator uses.
+// fairsurf — per-vertex local quadratic fits (method.md §3), the numerical heart every operator uses.
 //
 // At vertex i a quadratic x(u,v) = x_i + a1 u + a2 v + a3 u² + a4 uv + a5 v² is fitted by weighted
 // least squares to the neighbours j ∈ N(i), in a local frame (N0, e1, e2):
@@ -13,7 +13,7 @@
 // scaled weighted least-squares problem, estimated as sqrt(κ₁(M)) = sqrt(‖M‖₁‖M⁻¹‖₁) (within a
 // factor √5 of the 2-norm condition of W^½Bₛ).
 //
-// Neighbourhoods (METHOD §3.1): the 1-ring for an interior vertex of valence ≥ 5 whose 1-ring fit
+// Neighbourhoods (method.md §3.1): the 1-ring for an interior vertex of valence ≥ 5 whose 1-ring fit
 // has condition ≤ FitOptions::max_one_ring_condition; otherwise the 2-ring (1- and 2-ring vertices).
 // The choice is made once, by `fit_quadratics`, from the positions it is given; `refit_quadratics`
 // keeps it (the sparsity pattern of every operator depends on it) and reports the new statuses.
@@ -61,7 +61,7 @@ const char* to_string(Neighbourhood reason);
 const char* to_string(FitStatus status);
 
 struct FitOptions {
-  /// A 1-ring fit whose condition number exceeds this uses the 2-ring instead (METHOD §3.1).
+  /// A 1-ring fit whose condition number exceeds this uses the 2-ring instead (method.md §3.1).
   double max_one_ring_condition = 1e3;
   /// A fit whose condition number exceeds this is flagged kIllConditioned.
   double max_condition = 1e5;

@@ -1,4 +1,4 @@
-// fairsurf — free and fixed vertices, and the fixed rings that carry boundary data (METHOD §6).
+// fairsurf — free and fixed vertices, and the fixed rings that carry boundary data (method.md §6).
 //
 // A flow moves the free vertices only. A flow of order 2(c+1) reaches continuity Gc across the border
 // of the free region when c+1 rings of fixed vertices surround it: the second-order flow needs one
@@ -8,29 +8,14 @@
 // region records how many rings the data supports and the continuity that follows.
 #pragma once
 
+#include <fairsurf/continuity.h>
 #include <fairsurf/topology.h>
 
 #include <span>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace fairsurf {
-
-/// Continuity across the border of a free region: position, tangent plane, curvature.
-enum class Continuity { G0 = 0, G1 = 1, G2 = 2 };
-
-/// Fixed rings a flow of the given continuity needs (G0: 1, G1: 2, G2: 3).
-constexpr int rings_needed(Continuity c) { return static_cast<int>(c) + 1; }
-
-/// "G0", "G1", "G2".
-std::string_view to_string(Continuity c);
-/// What a fairing delivers: "G2" (a flow with three fixed rings) or, for the linear cotangent ∆^k
-/// solution on the same rings, "C2 (linear)" — curvature continuous only to the order of the
-/// linear operator, not geometrically.
-std::string delivered_label(Continuity continuity, bool linear);
-/// Parses "G0"/"G1"/"G2" (case-insensitive); throws InvalidArgument otherwise.
-Continuity parse_continuity(std::string_view text);
 
 /// A partition of the vertices into free and fixed, with the fixed rings around the free ones.
 struct Region {

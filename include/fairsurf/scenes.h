@@ -1,4 +1,4 @@
-// fairsurf — the paper's scenes (Liu & Xu, Figs 3, 4, 7, 8) and METHOD §8.6's sphere cap, generated
+// fairsurf — the paper's scenes (Liu & Xu, Figs 3, 4, 7, 8) and method.md §8.6's sphere cap, generated
 // by code so that they serve as regression tests and as documentation figures (docs/blend.md).
 //
 // Every scene is a triangle mesh, counter-clockwise seen from outside (normals away from the axis
@@ -25,7 +25,7 @@
 //               0.55], free for |z| < 0.25 with the two circles z = ±0.25 as the border of the free
 //               region. The paper shows mean curvature plots only; this reading (a cylindrical ring,
 //               whose constant H makes it stationary under f = H) is ours. Same comparison as fig7.
-//   sphere-cap  METHOD §8.6: the unit icosphere whose cap z > 0.5 is free and flattened onto the
+//   sphere-cap  method.md §8.6: the unit icosphere whose cap z > 0.5 is free and flattened onto the
 //               plane z = 0.5; G2 fairing must bring it back to the sphere.
 #pragma once
 
@@ -61,7 +61,7 @@ Scene make_scene(const std::string& name, const SceneOptions& options = {});
 /// negative level.
 Mesh icosphere(int level, double radius = 1.0);
 
-/// METHOD §8.6's scene at a given icosphere level: vertices with z > z_cut flattened onto z = z_cut
+/// method.md §8.6's scene at a given icosphere level: vertices with z > z_cut flattened onto z = z_cut
 /// and free.
 Scene sphere_cap_scene(int level, double z_cut = 0.5);
 

@@ -1,4 +1,4 @@
-// fairsurf — smoothing and denoising (METHOD §7): a geometric flow run for a short time on every
+// fairsurf — smoothing and denoising (method.md §7): a geometric flow run for a short time on every
 // vertex except the fixed rings along the mesh border.
 //
 // Time is in units of the mesh scaled to unit bounding-box diagonal (flow.h). A feature of size L

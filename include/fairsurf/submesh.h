@@ -3,7 +3,7 @@
 // A flow that moves a small region of a large mesh (a hole fill, a marked region) only needs the
 // region and enough rings around it for every fit and stencil its equations reach. Extracting them
 // makes each step cost in proportion to the region instead of the whole mesh. Operator stencils
-// reach one ring (interior vertices of valence ≥ 5) or two (METHOD §3.1), and the sixth-order EL
+// reach one ring (interior vertices of valence ≥ 5) or two (method.md §3.1), and the sixth-order EL
 // nests three of them, so the default keeps six rings: the equations at the free vertices then see
 // exactly what they would see in the whole mesh.
 #pragma once

@@ -1,5 +1,5 @@
 // fairsurf — tangential relaxation: moving vertices within their tangent planes towards better
-// shaped triangles, the standard stabiliser of curvature flows on irregular meshes (METHOD §5 allows
+// shaped triangles, the standard stabiliser of curvature flows on irregular meshes (method.md §5 allows
 // it: normal motion fixes the shape, not the vertex distribution).
 //
 // A vertex v moves a fraction `weight` of the way towards the mean of its neighbours (the uniform

@@ -76,7 +76,11 @@ std::vector<int> k_ring(const Topology& topo, std::span<const int> seeds, int k)
 void face_normals_and_areas(const Vertices& V, const Faces& F, Eigen::MatrixX3d& normals,
                             Eigen::VectorXd& areas);
 
-/// #V vertex areas: one third of the areas of the incident triangles (METHOD §4).
+/// Mean length of the edges of `topo` whose two ends are finite in V (#V by 3); 0 if there are
+/// none. The mesh's scale h, in which fills, smoothing times and benchmarks are measured.
+double mean_edge_length(const Vertices& V, const Topology& topo);
+
+/// #V vertex areas: one third of the areas of the incident triangles (method.md §4).
 Eigen::VectorXd vertex_areas(const Vertices& V, const Faces& F);
 
 }  // namespace fairsurf

@@ -1,4 +1,4 @@
-// fairsurf — the initial tube that joins two boundary loops before a blend is faired (METHOD §7).
+// fairsurf — the initial tube that joins two boundary loops before a blend is faired (method.md §7).
 //
 // Both loops are in topology.h's boundary_loops order (surface on the left). For the tube to be
 // oriented consistently with both surfaces, its faces contain b→a across every loop edge a→b; that

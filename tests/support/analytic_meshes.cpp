@@ -1,6 +1,7 @@
 #include "analytic_meshes.h"
 
 #include <fairsurf/scenes.h>
+#include <fairsurf/topology.h>
 
 #include <Eigen/Geometry>
 
@@ -32,10 +33,7 @@ Faces grid_faces(int nu, int nv, bool periodic_u, bool periodic_v) {
 }  // namespace
 
 double mean_edge_length(const Mesh& m) {
-  double sum = 0.0;
-  for (int f = 0; f < m.F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) sum += (m.V.row(m.F(f, k)) - m.V.row(m.F(f, (k + 1) % 3))).norm();
-  return sum / (3.0 * static_cast<double>(m.F.rows()));
+  return fairsurf::mean_edge_length(m.V, build_topology(m.F, m.num_vertices()));
 }
 
 Mesh icosphere(int level, double radius) { return fairsurf::icosphere(level, radius); }

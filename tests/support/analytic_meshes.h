@@ -1,4 +1,4 @@
-// Analytic-surface meshes for the numerical tests (METHOD §8): spheres, an ellipsoid, an open
+// Analytic-surface meshes for the numerical tests (method.md §8): spheres, an ellipsoid, an open
 // cylinder, torus grids and a saddle patch. Every mesh is counter-clockwise with the normal outward
 // (closed surfaces) or along +z / away from the axis (patches), and every vertex lies exactly on its
 // surface, so that analytic curvatures and test functions can be evaluated at the vertices.
@@ -10,7 +10,7 @@
 
 namespace fairsurf::test {
 
-/// Mean length of the face edges (interior edges counted twice).
+/// fairsurf::mean_edge_length over the mesh's own topology: each edge once.
 double mean_edge_length(const Mesh& m);
 
 /// Icosahedron subdivided `level` times (each triangle into four), projected on the sphere of

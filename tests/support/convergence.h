@@ -1,4 +1,4 @@
-// Observed convergence orders for the numerical tests (METHOD §8.2).
+// Observed convergence orders for the numerical tests (method.md §8.2).
 #pragma once
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Noisy and jittered analytic meshes, and distances to the analytic surfaces, for the flow tests
-// (METHOD §8.3–§8.5).
+// (method.md §8.3–§8.5).
 #pragma once
 
 #include "analytic_meshes.h"

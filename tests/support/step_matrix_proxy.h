@@ -1,4 +1,4 @@
-// A stand-in for the flow's step matrix (METHOD §5) with its structure and its scaling, for the tests
+// A stand-in for the flow's step matrix (method.md §5) with its structure and its scaling, for the tests
 // of the linear solvers: A = I + (τ/h⁶)(L³ + β L² D) on an n by n periodic grid of
 // triangles (a flat torus, valence 6, h = 1/n). L is the uniform graph Laplacian (degree minus
 // adjacency, positive semi-definite) and D the antisymmetric difference along the grid's first axis,
