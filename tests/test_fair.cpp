@@ -65,14 +65,25 @@ TEST_F(CliFair, SphereCapSceneIsFairedBackToTheSphere) {
 // flow failing (an infinite error) and keeps the linear solution (FairRegionOptions::held_out_rings;
 // the floor itself: test_fill's AFlowWithoutSteadyStateKeepsTheLinearFloorAndSaysSo).
 TEST_F(CliFair, AFlowStoppedAtItsStepLimitKeepsTheLinearSolutionAndSaysSo) {
-  const std::string scene = path("cap.ply"), out = path("cap_out.ply");
+  const std::string scene = path("cap.ply"), out = path("cap_out.ply"), log = path("cap.json");
   ASSERT_EQ(run_cli("scene sphere-cap -o '" + scene + "'").exit_code, 0);
-  const CliRun cut = run_cli("fair '" + scene + "' -o '" + out + "' --region-property free --max-steps 2 --quiet");
+  const CliRun cut = run_cli("fair '" + scene + "' -o '" + out + "' --region-property free --max-steps 2 --quiet --log '" +
+                             log + "'");
   ASSERT_EQ(cut.exit_code, 0) << cut.out;
   EXPECT_NE(cut.out.find("C2 (linear) (cotangent ∆^3, "), std::string::npos) << cut.out;
   EXPECT_NE(cut.out.find("re-predicts the 2 rings around the region better than the sixth-order flow"),
             std::string::npos) << cut.out;
   EXPECT_NE(cut.out.find(" against inf mean edges off the input"), std::string::npos) << cut.out;
+  // The log describes the region and the linear solve, not an empty flow report: no flow ran on
+  // the region, so there is no stop reason, and the free count is the region's.
+  std::ifstream in(log);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["free_vertices"], 161);
+  EXPECT_EQ(j["delivered"], "C2 (linear)");
+  EXPECT_FALSE(j.contains("stop_reason")) << j.dump(2);
+  EXPECT_EQ(j["harmonic"]["order"], 3);
+  EXPECT_TRUE(j["held_out_flow_error"].is_null());  // ∞: the two-step flow failed
+  EXPECT_GT(j["held_out_linear_error"].get<double>(), 0.0);
   // Without the floor (--start flat) the unsettled state is delivered and flagged.
   const CliRun flat = run_cli("fair '" + scene + "' -o '" + out +
                               "' --region-property free --start flat --max-steps 2 --quiet --force");

@@ -58,9 +58,16 @@ nlohmann::json to_json(const FairRegionReport& r) {
   if (r.method == FairMethod::flow) {
     j["flow"] = to_string(r.flow_kind);
     j["harmonic_start_solves"] = r.harmonic.iterations;  // 0: the flow started from the input
+    j["held_out_flow_error"] = r.held_out_flow_error;      // NaN, ∞ (a failed fairing) -> null
+    j["held_out_linear_error"] = r.held_out_linear_error;
+  }
+  if (r.has_flow_report()) {
     j.update(to_json(r.flow));
   } else {
     j["harmonic"] = {{"order", r.harmonic.order}, {"backward_error", r.harmonic.backward_error}};
+    if (r.method == FairMethod::flow)  // of the flow that was weighed or tried
+      j["well_posedness"] = {{"vertices", r.flow.well_posedness.vertices},
+                             {"violating_vertices", r.flow.well_posedness.violating_vertices}};
   }
   return j;
 }

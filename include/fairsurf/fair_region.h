@@ -97,6 +97,11 @@ struct FairRegionReport {
   double held_out_linear_error = std::numeric_limits<double>::quiet_NaN();
   ContinuityMeasure continuity;                ///< measured after fairing
   double seconds = 0;                          ///< wall time of the whole call
+
+  /// The flow ran on the region and `flow` holds its report. False for method harmonic, where
+  /// held_out_rings chose the linear solution before any flow on the region, and where the flow
+  /// threw and the floor was kept (`note` says so).
+  bool has_flow_report() const { return method == FairMethod::flow && flow.free_vertices > 0; }
 };
 
 /// The flow that reaches continuity `c` from c+1 fixed rings: mean curvature (G0), Willmore (G1),

@@ -52,6 +52,10 @@ py::dict to_dict(const FairRegionReport& r) {
   if (r.method == FairMethod::flow) {
     d["flow"] = to_string(r.flow_kind);
     d["harmonic_start_solves"] = r.harmonic.iterations;
+    d["held_out_flow_error"] = r.held_out_flow_error;
+    d["held_out_linear_error"] = r.held_out_linear_error;
+  }
+  if (r.has_flow_report()) {
     for (const auto item : to_dict(r.flow)) d[item.first] = item.second;
   } else {
     d["harmonic"] = py::dict("order"_a = r.harmonic.order, "backward_error"_a = r.harmonic.backward_error);
