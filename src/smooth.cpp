@@ -5,6 +5,7 @@
 #include <fairsurf/validate.h>
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
 
 namespace fairsurf {
@@ -21,11 +22,19 @@ double default_smoothing_time(const Mesh& mesh, FlowKind kind) {
   return std::pow(2 * h, flow_order(kind));
 }
 
+namespace {
+
+// A timed run's first τ: 1/64 of its time, which the control (τ doubling) reaches in about seven
+// accepted steps.
+double first_timed_tau(const FlowOptions& flow) { return std::min(flow.end_time / 64, flow.tau_max); }
+
+}  // namespace
+
 SmoothOptions scan_smoothing_options(const Mesh& mesh, FlowKind kind) {
   SmoothOptions o;
   o.flow.kind = kind;
   o.flow.end_time = default_smoothing_time(mesh, kind);
-  o.flow.tau = o.flow.end_time / 64;
+  o.flow.tau = first_timed_tau(o.flow);
   // Raw scans ask for steps of about an edge length at their noise spikes whatever τ is (flow.h):
   // clip those rather than reject every step, and damp the rows that are not dissipative. Needle
   // triangles shear over under the normal motion: relax the vertices tangentially, and hold back the
@@ -44,6 +53,26 @@ void steady_smoothing(FlowOptions& flow, double velocity_tolerance) {
   flow.step_kind = FlowStepKind::energy_descent;
   flow.steady_energy_tolerance = 1e-7;
   flow.step_control.max_consecutive_rejections = 30;
+}
+
+void set_smoothing_end(SmoothOptions& options, const SmoothingEnd& end) {
+  if (int(end.steps > 0) + int(end.steady) + int(end.time > 0) > 1)
+    throw InvalidArgument("set_smoothing_end: give at most one of steps, steady and time");
+  FlowOptions& flow = options.flow;
+  if (end.steps > 0 || end.steady) {
+    flow.end_time = std::numeric_limits<double>::infinity();
+    flow.tau = FlowOptions{}.tau;
+    options.default_time = false;
+  }
+  if (end.steps > 0) {
+    flow.max_steps = end.steps;
+  } else if (end.steady) {
+    steady_smoothing(flow, end.steady_tolerance);
+  } else if (end.time > 0) {
+    flow.end_time = end.time;
+    flow.tau = first_timed_tau(flow);
+  }
+  if (end.tau > 0) flow.tau = end.tau;
 }
 
 FlowReport smooth(Mesh& mesh, const SmoothOptions& options, const FlowObserver& observer) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -38,6 +39,38 @@ TEST(Smooth, DefaultTimeIsTwiceTheEdgeLengthToTheOrder) {
   const double h = (220 * 0.1 + 100 * 0.1 * std::sqrt(2.0)) / 320 / std::sqrt(2.0);
   EXPECT_NEAR(default_smoothing_time(m, FlowKind::sixth_order), std::pow(2 * h, 6), 1e-15);
   EXPECT_NEAR(default_smoothing_time(m, FlowKind::mean_curvature), std::pow(2 * h, 2), 1e-15);
+}
+
+// One τ policy for the CLI and Python: timed runs start at 1/64 of their time (at most tau_max),
+// runs without an end time at the flow's default τ; an explicit τ wins; two ends are refused.
+TEST(Smooth, RunEndsAndTheFirstTauFollowOnePolicy) {
+  const Mesh sphere = test::icosphere(2);
+  const SmoothOptions scan = scan_smoothing_options(sphere);
+  EXPECT_DOUBLE_EQ(scan.flow.tau, scan.flow.end_time / 64);
+
+  SmoothOptions timed = scan;
+  set_smoothing_end(timed, {.time = 0.32});
+  EXPECT_DOUBLE_EQ(timed.flow.end_time, 0.32);
+  EXPECT_DOUBLE_EQ(timed.flow.tau, 0.005);
+  SmoothOptions long_run = scan;
+  set_smoothing_end(long_run, {.time = 64 * 2 * long_run.flow.tau_max});
+  EXPECT_DOUBLE_EQ(long_run.flow.tau, long_run.flow.tau_max);
+
+  SmoothOptions counted = scan;
+  set_smoothing_end(counted, {.steps = 5, .tau = 1e-3});
+  EXPECT_EQ(counted.flow.max_steps, 5);
+  EXPECT_TRUE(std::isinf(counted.flow.end_time));
+  EXPECT_FALSE(counted.default_time);
+  EXPECT_DOUBLE_EQ(counted.flow.tau, 1e-3);
+
+  SmoothOptions steady = scan;
+  set_smoothing_end(steady, {.steady = true, .steady_tolerance = 0.5});
+  EXPECT_DOUBLE_EQ(steady.flow.tau, FlowOptions{}.tau);
+  EXPECT_EQ(steady.flow.step_kind, FlowStepKind::energy_descent);
+  EXPECT_DOUBLE_EQ(steady.flow.steady_tolerance, 0.5);
+
+  SmoothOptions both = scan;
+  EXPECT_THROW(set_smoothing_end(both, {.steps = 3, .time = 0.1}), InvalidArgument);
 }
 
 TEST(Smooth, KeepsBorderRingsAndRemovesNoise) {

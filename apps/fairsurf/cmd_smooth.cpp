@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <limits>
 #include <map>
 #include <memory>
 
@@ -43,22 +42,7 @@ SmoothOptions smooth_options(const SmoothArgs& args, const Mesh& mesh) {
   o.fixed_rings = args.fixed_rings;
   if (!args.fixed_file.empty())
     o.fixed_vertices = read_vertex_indices(args.fixed_file, mesh.num_vertices());
-  // Runs without an end time start from the library's τ; timed runs from 1/64 of their time, which
-  // the control reaches in about seven accepted steps.
-  if (args.steps > 0 || args.steady) {
-    o.flow.end_time = std::numeric_limits<double>::infinity();
-    o.flow.tau = FlowOptions{}.tau;
-    o.default_time = false;
-  }
-  if (args.steps > 0) {
-    o.flow.max_steps = args.steps;
-  } else if (args.steady) {
-    steady_smoothing(o.flow, args.steady_tolerance);
-  } else if (args.time > 0) {
-    o.flow.end_time = args.time;
-    o.flow.tau = std::min(args.time / 64, o.flow.tau_max);
-  }
-  if (args.tau > 0) o.flow.tau = args.tau;
+  set_smoothing_end(o, {args.steps, args.steady, args.steady_tolerance, args.time, args.tau});
   return o;
 }
 

@@ -46,6 +46,23 @@ SmoothOptions scan_smoothing_options(const Mesh& mesh, FlowKind kind = FlowKind:
 /// and τ grew without bound) — docs/flow.md. No end time.
 void steady_smoothing(FlowOptions& flow, double velocity_tolerance);
 
+/// How a smoothing run ends, as `fairsurf smooth` and Python's `smooth` take it: after `steps`
+/// accepted steps, at a steady state (steady_smoothing with `steady_tolerance`), or at `time`; at
+/// most one of the three; none keeps the options' own end (scan_smoothing_options: the default time).
+struct SmoothingEnd {
+  int steps = 0;             ///< > 0: this many accepted steps
+  bool steady = false;       ///< run to a steady state
+  double steady_tolerance = 1.0;
+  double time = 0;           ///< > 0: this end time, unit-diagonal units
+  double tau = 0;            ///< > 0: the first τ, overriding the policy below
+};
+
+/// Sets `options`' end as `end` says, and τ by the one policy of the library: a timed run starts at
+/// 1/64 of its time (at most tau_max), which the control reaches in about seven accepted steps; runs
+/// without an end time start at FlowOptions{}.tau. Throws InvalidArgument when more than one end is
+/// given.
+void set_smoothing_end(SmoothOptions& options, const SmoothingEnd& end);
+
 /// Smooths `mesh.V` in place. Requires a manifold, consistently oriented mesh without degenerate
 /// faces (InvalidMeshError naming the problem otherwise); throws InvalidArgument if no vertex is
 /// left free, and NumericalError as run_flow does — with mesh.V at the last accepted state.

@@ -14,7 +14,6 @@
 
 #include <pybind11/stl.h>
 
-#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -64,7 +63,7 @@ struct SmoothArgs {
 };
 
 // As `fairsurf smooth`: the scan defaults to the default time, or `steps` steps, a steady state, or
-// `time`; timed runs start at τ = time / 64.
+// `time` (set_smoothing_end).
 SmoothOptions smooth_options(const SmoothArgs& a, const Mesh& mesh) {
   SmoothOptions o = scan_smoothing_options(mesh, flow_kind(a.flow));
   o.flow.functions = a.f;
@@ -72,26 +71,16 @@ SmoothOptions smooth_options(const SmoothArgs& a, const Mesh& mesh) {
   o.flow.max_steps = a.max_steps;
   o.fixed_rings = a.fixed_rings;
   if (a.fixed) o.fixed_vertices = to_indices(*a.fixed, "fixed");
-  if (a.steps || a.steady) {
-    o.flow.end_time = std::numeric_limits<double>::infinity();
-    o.flow.tau = FlowOptions{}.tau;
-    o.default_time = false;
-  }
-  if (a.steps) {
-    o.flow.max_steps = *a.steps;
-  } else if (a.steady) {
-    steady_smoothing(o.flow, a.steady_tolerance);
-  } else if (a.time) {
-    o.flow.end_time = *a.time;
-    o.flow.tau = *a.time / 64;
-  }
-  if (a.tau) o.flow.tau = *a.tau;
+  set_smoothing_end(o, {a.steps.value_or(0), a.steady, a.steady_tolerance, a.time.value_or(0), a.tau.value_or(0)});
   return o;
 }
 
 py::tuple smooth_binding(const py::handle& V, const py::handle& F, const SmoothArgs& args, py::object callback) {
   if (int(args.steps.has_value()) + int(args.time.has_value()) + int(args.steady) > 1)
     throw InvalidArgument("smooth: give at most one of steps, time and steady");
+  if (args.steps && *args.steps < 1) throw InvalidArgument("smooth: steps must be >= 1");
+  if ((args.time && !(*args.time > 0)) || (args.tau && !(*args.tau > 0)))
+    throw InvalidArgument("smooth: time and tau must be positive");
   Mesh mesh = to_mesh(V, F);
   SmoothOptions options = smooth_options(args, mesh);
   Progress progress(std::move(callback));
