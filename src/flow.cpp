@@ -45,7 +45,6 @@ void check_options(const FlowOptions& o) {
   else if (!(o.runaway_energy_factor > 1)) problem = "runaway_energy_factor must exceed 1";
   else if (!(o.tangential_relaxation >= 0 && o.tangential_relaxation <= 1))
     problem = "tangential_relaxation must lie in [0, 1]";
-  else if (o.border_fixed_rings < 0) problem = "border_fixed_rings must be non-negative";
   else if (o.refactor_interval < 1) problem = "refactor_interval must be at least 1";
   else if (!(o.steady_energy_tolerance >= 0)) problem = "steady_energy_tolerance must be non-negative";
   else if (!(c.max_displacement_ratio > 0)) problem = "step_control.max_displacement_ratio must be positive";
@@ -518,10 +517,10 @@ FlowReport run_flow(Vertices& V, const Faces& F, const FlowOptions& options,
                     const FlowObserver& observer) {
   check_options(options);
   const Topology topo = build_topology(F, static_cast<int>(V.rows()));
-  const std::vector<int> free = interior_vertices(topo, options.border_fixed_rings);
+  const int rings = rings_needed(Continuity::G2);
+  const std::vector<int> free = interior_vertices(topo, rings);
   if (free.empty())
-    throw InvalidArgument("run_flow: no vertex is farther than " +
-                          std::to_string(options.border_fixed_rings) +
+    throw InvalidArgument("run_flow: no vertex is farther than " + std::to_string(rings) +
                           " rings from the mesh border; nothing can move");
   const Region region = make_region(topo, free, Continuity::G2);
   return run_flow(V, F, region, options, observer);

@@ -150,8 +150,6 @@ struct FlowOptions {
   double tangential_relaxation = 0;
   /// An accepted state with energy above this times the initial energy stops the flow.
   double runaway_energy_factor = 1e6;
-  /// Fixed rings along the mesh border when run_flow is given no region (smoothing an open mesh).
-  int border_fixed_rings = 3;
 
   /// Frozen Jacobian (method.md §5): one assembly and factorization of I − τJ serves up to this many
   /// accepted steps while τ is unchanged (at tau_max, or with a fixed τ); every step still solves
@@ -234,8 +232,9 @@ using FlowObserver = std::function<void(const StepRecord&)>;
 FlowReport run_flow(Vertices& V, const Faces& F, const Region& region, const FlowOptions& options = {},
                     const FlowObserver& observer = {});
 
-/// The same with every vertex free except options.border_fixed_rings rings along the mesh border
-/// (region.h interior_vertices; every vertex on a closed mesh).
+/// The same with every vertex free except the three rings along the mesh border that carry G2 data
+/// (region.h interior_vertices; every vertex on a closed mesh). smooth() takes another ring count
+/// (SmoothOptions::fixed_rings).
 FlowReport run_flow(Vertices& V, const Faces& F, const FlowOptions& options = {},
                     const FlowObserver& observer = {});
 
