@@ -2,6 +2,7 @@
 // "connectivity is built once"), read from the diagnostic counter topology_builds() (topology.h).
 #include <fairsurf/fair_region.h>
 #include <fairsurf/fill.h>
+#include <fairsurf/smooth.h>
 #include <fairsurf/topology.h>
 
 #include <gtest/gtest.h>
@@ -53,6 +54,17 @@ TEST(TopologyBuilds, FillBuildsEachMeshsConnectivityOnce) {
   std::cout << "topologies built: " << single << " for one hole, " << pair << " for two separate holes\n";
   EXPECT_EQ(pair - single, 5u);  // per group
   EXPECT_EQ(single, 1u + 5u);
+}
+
+// smooth validates the mesh, takes the default time and flows on one connectivity (before: 5).
+TEST(TopologyBuilds, SmoothBuildsTheMeshsConnectivityOnce) {
+  Mesh mesh = test::jittered_sphere(2, 1.0, 0.02);
+  SmoothOptions options;
+  options.flow.kind = FlowKind::mean_curvature;
+  options.flow.max_steps = 2;
+  const std::uint64_t before = topology_builds();
+  smooth(mesh, options);
+  EXPECT_EQ(topology_builds() - before, 1u);
 }
 
 // fair_region (`fairsurf fair`'s defaults): the mesh's (its validation's), the neighbourhood's (the
