@@ -1,6 +1,7 @@
 #include "flow_failure.h"
 #include "held_out.h"
 #include "stopwatch.h"
+#include "validated.h"
 
 #include <fairsurf/errors.h>
 #include <fairsurf/fair_region.h>
@@ -10,6 +11,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <numeric>
+#include <optional>
 
 namespace fairsurf {
 
@@ -62,7 +65,7 @@ namespace {
 // Runs the flow on the submesh. With the linear floor (and a ∆^k start), a flow that throws or does
 // not settle leaves the ∆^k solution in place, reported linear; without it, a throw leaves the last
 // accepted state in the caller's mesh and propagates.
-void run_flow_with_floor(Submesh& sub, const Region& region, const FairRegionOptions& options,
+void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& region, const FairRegionOptions& options,
                          const FlowObserver& observer, FairRegionReport& report, Vertices& caller) {
   FlowOptions flow = options.flow;
   flow.kind = report.flow_kind = flow_for(region.supported);
@@ -70,7 +73,7 @@ void run_flow_with_floor(Submesh& sub, const Region& region, const FairRegionOpt
   const Vertices start = floor ? sub.mesh.V : Vertices();
   std::string failure;
   try {
-    report.flow = run_flow(sub.mesh.V, sub.mesh.F, region, flow, observer);
+    report.flow = run_flow(sub.mesh.V, sub.mesh.F, local, region, flow, observer);
     if (report.flow.stop_reason != FlowStopReason::steady) failure = unsettled_reason(report.flow);
   } catch (const NumericalError& e) {
     if (const auto* failure = dynamic_cast<const flow_detail::FlowFailure*>(&e))
@@ -91,11 +94,12 @@ void run_flow_with_floor(Submesh& sub, const Region& region, const FairRegionOpt
 
 // FairRegionOptions::held_out_rings: true (with the reason in report.note) where the linear ∆^k
 // solution re-predicts the held-out rings better than the flow.
-bool linear_predicts_better(const Submesh& sub, const FairRegionOptions& options, FairRegionReport& report) {
+bool linear_predicts_better(const Submesh& sub, const Topology& local, const FairRegionOptions& options,
+                            FairRegionReport& report) {
   if (options.method != FairMethod::flow || !options.linear_floor || options.held_out_rings <= 0 ||
       options.harmonic_start_iterations <= 0)
     return false;
-  const fair_detail::HeldOutErrors errors = fair_detail::held_out_errors(sub, options.held_out_rings, options);
+  const fair_detail::HeldOutErrors errors = fair_detail::held_out_errors(sub, local, options.held_out_rings, options);
   report.held_out_flow_error = errors.flow;
   report.held_out_linear_error = errors.linear;
   if (!(errors.linear < errors.flow)) return false;
@@ -110,16 +114,79 @@ bool linear_predicts_better(const Submesh& sub, const FairRegionOptions& options
   return true;
 }
 
+// Whether the neighbourhood extract_neighbourhood would cut around `free_vertices` is all of `mesh`
+// (every face within reach, every vertex referenced or free), as for a mesh that already is one
+// (fill cuts the patch's): fairing then works on the mesh as it is, and its connectivity `topo` is
+// reused instead of built again for an identical copy.
+bool whole_neighbourhood(const Mesh& mesh, const Topology& topo, std::span<const int> free_vertices, int rings) {
+  const std::vector<int> dist = ring_distances(topo, free_vertices, rings);
+  std::vector<char> referenced(mesh.num_vertices(), 0);
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    bool reached = false;
+    for (int k = 0; k < 3; ++k) reached |= dist[mesh.F(f, k)] >= 0, referenced[mesh.F(f, k)] = 1;
+    if (!reached) return false;
+  }
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (!referenced[v] && dist[v] != 0) return false;
+  return true;
+}
+
+// What extract_neighbourhood returns when it keeps the whole mesh.
+Submesh whole_submesh(const Mesh& mesh, std::span<const int> free_vertices) {
+  Submesh sub;
+  sub.mesh.V = mesh.V;
+  sub.mesh.F = mesh.F;
+  sub.to_global.resize(mesh.num_vertices());
+  std::iota(sub.to_global.begin(), sub.to_global.end(), 0);
+  sub.free_local.assign(free_vertices.begin(), free_vertices.end());
+  std::sort(sub.free_local.begin(), sub.free_local.end());
+  sub.free_local.erase(std::unique(sub.free_local.begin(), sub.free_local.end()), sub.free_local.end());
+  return sub;
+}
+
+// The linear solve alone, or the flow from it (FairRegionOptions::harmonic_start_iterations).
+void fair_submesh(Submesh& sub, const Topology& local, const Region& region, const FairRegionOptions& options,
+                  const FlowObserver& observer, FairRegionReport& report, Vertices& caller) {
+  HarmonicOptions harmonic;
+  harmonic.order = static_cast<int>(region.supported) + 1;
+  harmonic.solver = options.harmonic_solver;
+  harmonic.iterations = std::max(1, options.harmonic_start_iterations);
+  harmonic.tolerance = options.harmonic_start_tolerance;
+  if (options.method == FairMethod::harmonic || linear_predicts_better(sub, local, options, report)) {
+    report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, local, region, harmonic);
+    report.linear = true;
+    return;
+  }
+  FairRegionOptions flow_options = options;
+  if (options.harmonic_start_iterations > 0) {
+    try {
+      report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, local, region, harmonic);
+    } catch (const NumericalError& e) {
+      // No linear solution to start from or to fall back to: flow from the given positions.
+      report.note = std::string("the ∆") + std::to_string(harmonic.order) + " start failed (" + e.what() +
+                    "): flowed from the given positions";
+      flow_options.harmonic_start_iterations = 0;
+    }
+  }
+  run_flow_with_floor(sub, local, region, flow_options, observer, report, caller);
+}
+
 }  // namespace
 
-FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
-                             const FairRegionOptions& options, const FlowObserver& observer) {
+namespace fair_detail {
+
+FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                 const FairRegionOptions& options, const FlowObserver& observer, bool measure,
+                                 bool* whole) {
   const auto start = detail::Clock::now();
-  require_valid(mesh, Requirements{}, "fair_region");
   if (free_vertices.empty()) throw InvalidArgument("fair_region: the free region is empty");
-  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
-  Submesh sub = extract_neighbourhood(mesh.V, mesh.F, topo, free_vertices, options.submesh_rings);
-  const Topology local = build_topology(sub.mesh.F, sub.mesh.num_vertices());
+  const bool uncut = whole_neighbourhood(mesh, topo, free_vertices, options.submesh_rings);
+  if (whole) *whole = uncut;
+  Submesh sub = uncut ? whole_submesh(mesh, free_vertices)
+                      : extract_neighbourhood(mesh.V, mesh.F, topo, free_vertices, options.submesh_rings);
+  std::optional<Topology> cut;
+  if (!uncut) cut = build_topology(sub.mesh.F, sub.mesh.num_vertices());
+  const Topology& local = uncut ? topo : *cut;
   const Region region = make_region(local, sub.free_local, options.continuity);
 
   FairRegionReport report;
@@ -127,32 +194,26 @@ FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
   report.requested = options.continuity;
   report.supported = region.supported;
   report.method = options.method;
-  HarmonicOptions harmonic;
-  harmonic.order = static_cast<int>(region.supported) + 1;
-  harmonic.solver = options.harmonic_solver;
-  harmonic.iterations = std::max(1, options.harmonic_start_iterations);
-  harmonic.tolerance = options.harmonic_start_tolerance;
-  if (options.method == FairMethod::harmonic || linear_predicts_better(sub, options, report)) {
-    report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, region, harmonic);
-    report.linear = true;
-  } else {
-    FairRegionOptions flow_options = options;
-    if (options.harmonic_start_iterations > 0) {
-      try {
-        report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, region, harmonic);
-      } catch (const NumericalError& e) {
-        // No linear solution to start from or to fall back to: flow from the given positions.
-        report.note = std::string("the ∆") + std::to_string(harmonic.order) + " start failed (" + e.what() +
-                      "): flowed from the given positions";
-        flow_options.harmonic_start_iterations = 0;
-      }
-    }
-    run_flow_with_floor(sub, region, flow_options, observer, report, mesh.V);
-  }
+  fair_submesh(sub, local, region, options, observer, report, mesh.V);
   write_back_free(sub, mesh.V);
-  report.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, sub.free_local);
+  if (measure) report.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, sub.free_local);
   report.seconds = detail::seconds_since(start);
   return report;
+}
+
+}  // namespace fair_detail
+
+FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
+                             const FairRegionOptions& options, const FlowObserver& observer) {
+  // validate builds the mesh's connectivity: kept, not built again.
+  const Topology topo = detail::validated_topology(mesh, Requirements{}, "fair_region");
+  return fair_detail::fair_valid_mesh(mesh, topo, free_vertices, options, observer);
+}
+
+FairRegionReport fair_region(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                             const FairRegionOptions& options, const FlowObserver& observer) {
+  require_valid(validate(mesh, topo), Requirements{}, "fair_region");
+  return fair_detail::fair_valid_mesh(mesh, topo, free_vertices, options, observer);
 }
 
 }  // namespace fairsurf

@@ -8,13 +8,16 @@
 #include <fairsurf/validate.h>
 
 #include "border_pinches.h"
+#include "held_out.h"
 #include "stopwatch.h"
+#include "validated.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 
 namespace fairsurf {
@@ -34,17 +37,20 @@ std::vector<int> border_edge_counts(const Topology& topo) {
 // The mesh requirements of filling: everything validate checks, except that a vertex may be
 // non-manifold where it pinches the border (more than two border edges): filling the holes through
 // it together makes it manifold (border_pinches.h), and a hole that cannot be is reported per hole.
-void require_fillable(const Mesh& mesh) {
-  ValidationReport report = validate(mesh);
+// Returns the mesh's connectivity, which validate built.
+Topology require_fillable(const Mesh& mesh) {
+  Topology topo;
+  ValidationReport report = detail::validate_keeping_topology(mesh, topo);
   const bool well_formed = !report.no_faces && report.out_of_range_indices.count == 0 &&
                            report.repeated_vertex_faces.count == 0 && report.nan_vertices.count == 0;
   if (well_formed) {
-    const std::vector<int> border = border_edge_counts(build_topology(mesh.F, mesh.num_vertices()));
+    const std::vector<int> border = border_edge_counts(topo);
     Finding& vertices = report.non_manifold_vertices;
     vertices.count -= static_cast<int>(std::count_if(border.begin(), border.end(), [](int c) { return c > 2; }));
     std::erase_if(vertices.examples, [&](int v) { return border[v] > 2; });
   }
   require_valid(report, Requirements{}, "fill_holes");
+  return topo;
 }
 
 // The holes through each pinch of the border (a vertex with more than two border edges).
@@ -216,32 +222,62 @@ std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int 
   return reason;
 }
 
-// Fills the holes `group` jointly on `mesh`; on success replaces mesh and fills the reports, on
-// failure throws (mesh untouched) or returns the reason the patch was rejected.
-// `patch_loops` are the group's loops as they are triangulated (relinked at pinches).
-std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, const std::vector<int>& group,
-                       const std::vector<std::vector<int>>& patch_loops, const FillOptions& options,
-                       const FairRegionOptions& fairing_options, const FillObserver& observer,
-                       std::vector<HoleReport>& reports) {
-  InitialPatch patch = hole_patch(mesh, patch_loops, options.patch);
-  const Topology topo = build_topology(patch.mesh.F, patch.mesh.num_vertices());
-  const std::string non_manifold = detail::patch_non_manifold(patch.mesh.F, topo, patch.first_patch_face);
-  if (!non_manifold.empty()) return non_manifold;
-
-  // Fair on the patch's neighbourhood only (fair_region would cut out the same rings): the cost of
-  // checking the mesh stays in proportion to the hole, and a defect far away (a pinched border
-  // elsewhere) does not concern this hole.
-  Submesh sub;
+// Fairs the patch's free vertices on their neighbourhood only (fair_region would cut out the same
+// rings): the cost of checking the mesh stays in proportion to the hole, and a defect far away (a
+// pinched border elsewhere) does not concern this hole. `whole`: fair_valid_mesh's, on `sub`.
+FairRegionReport fair_patch(InitialPatch& patch, const FillOptions& options, const FairRegionOptions& fairing_options,
+                            const FlowObserver& step_observer, Submesh& sub, bool& whole) {
   FairRegionReport fairing;
   fairing.requested = fairing.supported = fairing_options.continuity;
   fairing.method = fairing_options.method;
+  whole = false;
+  if (patch.free_vertices.empty()) return fairing;
+  sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, patch.topology, patch.free_vertices,
+                              options.fairing.submesh_rings);
+  // The neighbourhood's connectivity, built once: validation, fairing and its held-out trials read it.
+  const Topology local = build_topology(sub.mesh.F, sub.mesh.num_vertices());
+  require_valid(validate(sub.mesh, local), Requirements{}, "fair_region");
+  fairing = fair_detail::fair_valid_mesh(sub.mesh, local, sub.free_local, fairing_options, step_observer, true, &whole);
+  return fairing;
+}
+
+// What the group's fairing did, in the report of one of its holes (`flowed`: the flow's result).
+void report_fairing(const FairRegionReport& fairing, bool flowed, HoleReport& r) {
+  r.supported = fairing.supported;
+  r.linear = fairing.linear;
+  if (fairing.supported < fairing.requested)
+    r.note = "the mesh around the hole has fewer than " + std::to_string(rings_needed(fairing.requested)) +
+             " complete rings: faired with " + std::string(to_string(fairing.supported));
+  if (!fairing.note.empty()) r.note += (r.note.empty() ? "" : "; ") + fairing.note;
+  r.held_out_flow_error = fairing.held_out_flow_error;
+  r.held_out_linear_error = fairing.held_out_linear_error;
+  r.steps = flowed ? fairing.flow.accepted_steps : 0;
+  r.harmonic_solves = fairing.harmonic.iterations;
+  r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();
+  if (fairing.method == FairMethod::flow) r.well_posedness = fairing.flow.well_posedness;
+}
+
+// Fills the holes `group` jointly on `mesh` (`topo`: its connectivity); on success replaces mesh,
+// moves the filled mesh's connectivity into `filled` (after the last use of `topo`, which may be
+// the old value) and fills the reports; on failure throws (mesh untouched) or returns the reason
+// the patch was rejected. `patch_loops` are the group's loops as they are triangulated (relinked at
+// pinches).
+std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                       const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
+                       const FillOptions& options, const FairRegionOptions& fairing_options,
+                       const FillObserver& observer, std::vector<HoleReport>& reports,
+                       std::optional<Topology>& filled) {
+  InitialPatch patch = hole_patch(mesh, topo, patch_loops, options.patch);
+  const std::string non_manifold = detail::patch_non_manifold(patch.mesh.F, patch.topology, patch.first_patch_face);
+  if (!non_manifold.empty()) return non_manifold;
+
+  Submesh sub;
+  bool whole = false;
+  const FlowObserver step_observer = [&](const StepRecord& r) {
+    if (observer) observer(group, r);
+  };
+  const FairRegionReport fairing = fair_patch(patch, options, fairing_options, step_observer, sub, whole);
   if (!patch.free_vertices.empty()) {
-    sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, topo, patch.free_vertices,
-                                options.fairing.submesh_rings);
-    const FlowObserver step_observer = [&](const StepRecord& r) {
-      if (observer) observer(group, r);
-    };
-    fairing = fair_region(sub.mesh, sub.free_local, fairing_options, step_observer);
     const FlowReport& flow = fairing.flow;
     if (!fairing.linear && flow.stop_reason != FlowStopReason::steady)
       return std::string("the ") + to_string(fairing.flow_kind) + " flow " + unsettled_reason(flow);
@@ -252,7 +288,7 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
   std::iota(new_faces.begin(), new_faces.end(), patch.first_patch_face);
   if (options.check_intersections) {
     const auto crossings = find_face_intersections(patch.mesh.V, patch.mesh.F, new_faces, 10);
-    if (!crossings.empty()) return crossing_reason(crossings, mesh.num_faces(), patch.mesh.F, topo);
+    if (!crossings.empty()) return crossing_reason(crossings, mesh.num_faces(), patch.mesh.F, patch.topology);
   }
 
   const PatchOwnership own = patch_ownership(patch, mesh.num_vertices(), loops, group);
@@ -264,19 +300,14 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
       if (own.vertex_hole[i] == h) free.push_back(mesh.num_vertices() + static_cast<int>(i));
     r.vertices_added = static_cast<int>(free.size());
     r.faces_added = static_cast<int>(std::count(own.face_hole.begin(), own.face_hole.end(), h));
-    r.supported = fairing.supported;
-    r.linear = fairing.linear;
-    if (fairing.supported < fairing.requested)
-      r.note = "the mesh around the hole has fewer than " + std::to_string(rings_needed(fairing.requested)) +
-               " complete rings: faired with " + std::string(to_string(fairing.supported));
-    if (!fairing.note.empty()) r.note += (r.note.empty() ? "" : "; ") + fairing.note;
-    r.held_out_flow_error = fairing.held_out_flow_error;
-    r.held_out_linear_error = fairing.held_out_linear_error;
-    r.steps = flowed ? fairing.flow.accepted_steps : 0;
-    r.harmonic_solves = fairing.harmonic.iterations;
-    r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();
-    if (fairing.method == FairMethod::flow) r.well_posedness = fairing.flow.well_posedness;
-    if (!free.empty()) r.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, to_local(sub, free));
+    report_fairing(fairing, flowed, r);
+    if (!free.empty()) {
+      // The fairing measured the same positions, faces and free set when it ran on `sub` itself
+      // (as for a group of one hole): not measured twice.
+      const std::vector<int> local = to_local(sub, free);
+      r.continuity = whole && local == sub.free_local ? fairing.continuity
+                                                      : measure_continuity(sub.mesh.V, sub.mesh.F, local);
+    }
     if (free.empty()) {  // nothing was faired: the patch is the triangulation of the loop
       r.supported = Continuity::G0;
       r.linear = true;
@@ -289,6 +320,7 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
   mesh.vertex_scalars.clear();
   mesh.vertex_colors.resize(0, 3);
   pad_face_attributes(mesh);  // the input's faces keep theirs; the patch's have none
+  filled = std::move(patch.topology);  // `topo` is not read after this
   return "";
 }
 
@@ -298,6 +330,38 @@ void mark(std::vector<HoleReport>& reports, const std::vector<int>& group, HoleS
     reports[h].status = status;
     reports[h].reason = reason;
   }
+}
+
+// One report per boundary loop, before anything is tried.
+std::vector<HoleReport> hole_reports(const std::vector<std::vector<int>>& loops, const FillOptions& options) {
+  std::vector<HoleReport> reports;
+  for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
+    HoleReport r;
+    r.index = i;
+    r.border_edges = static_cast<int>(loops[i].size());
+    r.requested = r.supported = options.fairing.continuity;
+    reports.push_back(r);
+  }
+  return reports;
+}
+
+// The selected holes (select_holes) that can be filled; the others are marked failed, with the reason.
+std::vector<int> fillable_holes(const Faces& F, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                                const FillOptions& options, std::vector<HoleReport>& reports) {
+  const std::vector<int> border_edges = border_edge_counts(topo);
+  const std::vector<int> chosen = select_holes(F, topo, loops, options, reports);
+  std::vector<char> is_chosen(loops.size(), 0);
+  for (int h : chosen) is_chosen[h] = 1;
+  const auto pinches = holes_at_pinches(loops, border_edges);
+  std::vector<int> fillable;
+  for (int h : chosen) {
+    const std::string bad = unfillable_border(h, loops, pinches, is_chosen);
+    if (bad.empty())
+      fillable.push_back(h);
+    else
+      mark(reports, {h}, HoleStatus::failed, bad);
+  }
+  return fillable;
 }
 
 }  // namespace
@@ -323,33 +387,17 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
   const auto start = Clock::now();
   if (options.max_hole_edges < 0)
     throw InvalidArgument("fill_holes: max_hole_edges must be >= 0, got " + std::to_string(options.max_hole_edges));
-  require_fillable(mesh);
+  const Topology topo = require_fillable(mesh);
   FillReport report;
   report.input_vertices = mesh.num_vertices();
   report.input_faces = mesh.num_faces();
-  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  // The connectivity of the mesh once groups are filled into it: the next group's patch reads it.
+  // The loops, groups and pinches stay those of the input (`topo`).
+  std::optional<Topology> filled;
   const auto loops = boundary_loops(mesh.F, topo);
-  for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
-    HoleReport r;
-    r.index = i;
-    r.border_edges = static_cast<int>(loops[i].size());
-    r.requested = r.supported = options.fairing.continuity;
-    report.holes.push_back(r);
-  }
+  report.holes = hole_reports(loops, options);
 
-  const std::vector<int> border_edges = border_edge_counts(topo);
-  const std::vector<int> chosen = select_holes(mesh.F, topo, loops, options, report.holes);
-  std::vector<char> is_chosen(loops.size(), 0);
-  for (int h : chosen) is_chosen[h] = 1;
-  const auto pinches = holes_at_pinches(loops, border_edges);
-  std::vector<int> fillable;
-  for (int h : chosen) {
-    const std::string bad = unfillable_border(h, loops, pinches, is_chosen);
-    if (bad.empty())
-      fillable.push_back(h);
-    else
-      mark(report.holes, {h}, HoleStatus::failed, bad);
-  }
+  const std::vector<int> fillable = fillable_holes(mesh.F, topo, loops, options, report.holes);
   const int rings = rings_needed(options.fairing.continuity);
   for (const auto& group : overlapping_groups(topo, loops, fillable, rings)) {
     std::vector<std::vector<int>> patch_loops;
@@ -370,7 +418,8 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
     std::string reason, first_failure;
     for (;;) {
       try {
-        reason = fill_group(mesh, loops, group, patch_loops, options, fairing, observer, report.holes);
+        reason = fill_group(mesh, filled ? *filled : topo, loops, group, patch_loops, options, fairing, observer,
+                            report.holes, filled);
       } catch (const Error& e) {
         reason = e.what();
       }

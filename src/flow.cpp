@@ -101,10 +101,9 @@ LinearSolverOptions step_solver_options(const FlowOptions& options) {
 // The run: the accepted state (positions X, with its normals, velocity and J) and the trial.
 class FlowRun {
  public:
-  FlowRun(Vertices& V, const Faces& F, const Region& region, const FlowOptions& options,
+  FlowRun(Vertices& V, const Faces& F, const Topology& topo, const Region& region, const FlowOptions& options,
           const FlowObserver& observer)
-      : V_(V), F_(F), region_(region), options_(options), observer_(observer),
-        topo_(build_topology(F, static_cast<int>(V.rows()))),
+      : V_(V), F_(F), region_(region), options_(options), observer_(observer), topo_(topo),
         solver_(make_linear_solver(step_solver_options(options))) {}
 
   FlowReport run();
@@ -131,7 +130,7 @@ class FlowRun {
   const Region& region_;
   const FlowOptions& options_;
   const FlowObserver& observer_;
-  Topology topo_;
+  const Topology& topo_;  // the caller's: built once per mesh, not per run
   std::unique_ptr<LinearSolver> solver_;
   Eigen::Index analyzed_nonzeros_ = -1;
 
@@ -497,8 +496,16 @@ std::string unsettled_reason(const FlowReport& report) {
 
 FlowReport run_flow(Vertices& V, const Faces& F, const Region& region, const FlowOptions& options,
                     const FlowObserver& observer) {
+  check_options(options);  // before the faces, as always
+  return run_flow(V, F, build_topology(F, static_cast<int>(V.rows())), region, options, observer);
+}
+
+FlowReport run_flow(Vertices& V, const Faces& F, const Topology& topo, const Region& region,
+                    const FlowOptions& options, const FlowObserver& observer) {
   check_options(options);
-  FlowRun run(V, F, region, options, observer);
+  if (topo.num_vertices != V.rows() || topo.num_faces != F.rows())
+    throw InvalidArgument("run_flow: the topology was built for another mesh");
+  FlowRun run(V, F, topo, region, options, observer);
   try {
     return run.run();
   } catch (const NumericalError& e) {
@@ -523,7 +530,7 @@ FlowReport run_flow(Vertices& V, const Faces& F, const FlowOptions& options,
     throw InvalidArgument("run_flow: no vertex is farther than " + std::to_string(rings) +
                           " rings from the mesh border; nothing can move");
   const Region region = make_region(topo, free, Continuity::G2);
-  return run_flow(V, F, region, options, observer);
+  return run_flow(V, F, topo, region, options, observer);
 }
 
 }  // namespace fairsurf

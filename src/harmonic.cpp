@@ -118,16 +118,27 @@ double mean_free_edge_length(const Vertices& V, const Topology& topo, const Regi
   return count > 0 ? total / count : 0.0;
 }
 
-}  // namespace
-
-HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Region& region,
-                             const HarmonicOptions& options) {
+void check_options(const HarmonicOptions& options) {
   if (options.order < 1 || options.order > 3)
     throw InvalidArgument("harmonic_fair: order " + std::to_string(options.order) +
                           " is not 1, 2 or 3");
   if (options.iterations < 1)
     throw InvalidArgument("harmonic_fair: iterations must be at least 1, got " + std::to_string(options.iterations));
-  const Topology topo = build_topology(F, static_cast<int>(V.rows()));
+}
+
+}  // namespace
+
+HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Region& region,
+                             const HarmonicOptions& options) {
+  check_options(options);  // before the faces, as always
+  return harmonic_fair(V, F, build_topology(F, static_cast<int>(V.rows())), region, options);
+}
+
+HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Topology& topo, const Region& region,
+                             const HarmonicOptions& options) {
+  check_options(options);
+  if (topo.num_vertices != V.rows() || topo.num_faces != F.rows())
+    throw InvalidArgument("harmonic_fair: the topology was built for another mesh");
   if (const int v = unanchored_free_vertex(topo, region); v >= 0)
     throw InvalidArgument("harmonic_fair: free vertex " + std::to_string(v) +
                           " is not connected to any fixed vertex, so the fairing is undetermined");

@@ -4,6 +4,7 @@
 
 #include <fairsurf/errors.h>
 #include <fairsurf/topology.h>
+#include <fairsurf/validate.h>
 
 #include <Eigen/Geometry>
 
@@ -37,12 +38,16 @@ double mean_edge_length(const Vertices& V, const Topology& topo, const std::vect
 }
 
 // Mean |(x − x0)·n0| over `held_out` after fairing the region `free` of a copy of `mesh`.
-double held_out_error(const Mesh& mesh, const std::vector<int>& free, const std::vector<int>& held_out,
-                      const Vertices& normal, double edge, const FairRegionOptions& fairing,
-                      WellPosedness* well_posedness = nullptr) {
+// `topo`: the connectivity of `mesh`, shared by the trial copy (only positions change).
+double held_out_error(const Mesh& mesh, const Topology& topo, const std::vector<int>& free,
+                      const std::vector<int>& held_out, const Vertices& normal, double edge,
+                      const FairRegionOptions& fairing, WellPosedness* well_posedness = nullptr) {
   Mesh trial = mesh;
   try {
-    const FairRegionReport report = fair_region(trial, free, fairing);
+    // As fair_region(trial, free, fairing), without rebuilding the connectivity or measuring the
+    // continuity of a result that is discarded.
+    require_valid(validate(trial, topo), Requirements{}, "fair_region");
+    const FairRegionReport report = fair_valid_mesh(trial, topo, free, fairing, {}, false);
     if (well_posedness) *well_posedness = report.flow.well_posedness;
     if (fairing.method == FairMethod::flow && report.linear) return std::numeric_limits<double>::infinity();
   } catch (const Error& e) {
@@ -57,8 +62,7 @@ double held_out_error(const Mesh& mesh, const std::vector<int>& free, const std:
 
 }  // namespace
 
-HeldOutErrors held_out_errors(const Submesh& sub, int rings, const FairRegionOptions& fairing) {
-  const Topology topo = build_topology(sub.mesh.F, sub.mesh.num_vertices());
+HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int rings, const FairRegionOptions& fairing) {
   const std::vector<int> free = k_ring(topo, sub.free_local, rings);
   std::vector<int> held_out;
   std::set_difference(free.begin(), free.end(), sub.free_local.begin(), sub.free_local.end(),
@@ -71,8 +75,8 @@ HeldOutErrors held_out_errors(const Submesh& sub, int rings, const FairRegionOpt
   flow.held_out_rings = 0;
   FairRegionOptions linear = flow;
   linear.method = FairMethod::harmonic;
-  errors.flow = held_out_error(sub.mesh, free, held_out, normal, edge, flow, &errors.flow_well_posedness);
-  errors.linear = held_out_error(sub.mesh, free, held_out, normal, edge, linear);
+  errors.flow = held_out_error(sub.mesh, topo, free, held_out, normal, edge, flow, &errors.flow_well_posedness);
+  errors.linear = held_out_error(sub.mesh, topo, free, held_out, normal, edge, linear);
   return errors;
 }
 

@@ -21,6 +21,15 @@ struct HeldOutErrors {
 /// larger region with `fairing` (the flow with its linear floor; held_out_rings ignored) and with its
 /// linear ∆^k solution alone, and measures how far each moved the held-out vertices off the input's
 /// tangent planes there.
-HeldOutErrors held_out_errors(const Submesh& sub, int rings, const FairRegionOptions& fairing);
+/// `local`: the connectivity of sub.mesh.
+HeldOutErrors held_out_errors(const Submesh& sub, const Topology& local, int rings, const FairRegionOptions& fairing);
+
+/// fair_region on a mesh that has passed its validation, with `topo` the connectivity of mesh.F.
+/// `measure`: measure report.continuity (a trial whose report is discarded skips it). `whole`, if
+/// given, receives whether the neighbourhood of the free region was all of `mesh`: then fairing
+/// ran on the mesh itself and report.continuity is measure_continuity(mesh.V, mesh.F, free set).
+FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                 const FairRegionOptions& options, const FlowObserver& observer = {},
+                                 bool measure = true, bool* whole = nullptr);
 
 }  // namespace fairsurf::fair_detail

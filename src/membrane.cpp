@@ -29,6 +29,13 @@ double area_of(const Vertices& V, const Faces& F) {
 
 MembraneReport relax_membrane(Vertices& V, const Faces& F, std::span<const int> free_vertices,
                               const MembraneOptions& options) {
+  return relax_membrane(V, F, build_topology(F, static_cast<int>(V.rows())), free_vertices, options);
+}
+
+MembraneReport relax_membrane(Vertices& V, const Faces& F, const Topology& topo, std::span<const int> free_vertices,
+                              const MembraneOptions& options) {
+  if (topo.num_vertices != V.rows() || topo.num_faces != F.rows())
+    throw InvalidArgument("relax_membrane: the topology was built for another mesh");
   if (options.iterations < 1)
     throw InvalidArgument("relax_membrane: iterations must be at least 1, got " +
                           std::to_string(options.iterations));
@@ -39,12 +46,11 @@ MembraneReport relax_membrane(Vertices& V, const Faces& F, std::span<const int> 
       throw InvalidArgument("relax_membrane: free vertex " + std::to_string(v) + " is out of range");
     if (free_index[v] < 0) free_index[v] = static_cast<int>(free_list.size()), free_list.push_back(v);
   }
-  const Topology topo = build_topology(F, static_cast<int>(V.rows()));  // checks the faces
   // The free rows of ∆ involve only the faces touching a free vertex: solve on those alone, so that
   // relaxing a hole's patch costs in proportion to the patch, not to the mesh around it.
   Submesh sub = extract_neighbourhood(V, F, topo, free_list, 0);
-  const Region region = make_region(build_topology(sub.mesh.F, sub.mesh.num_vertices()), sub.free_local,
-                                    Continuity::G0);
+  const Topology local = build_topology(sub.mesh.F, sub.mesh.num_vertices());  // once for all iterations
+  const Region region = make_region(local, sub.free_local, Continuity::G0);
   HarmonicOptions membrane;
   membrane.order = 1;  // ∆x = 0 with the cotangent weights of the current positions
   membrane.solver = options.solver;
@@ -53,7 +59,7 @@ MembraneReport relax_membrane(Vertices& V, const Faces& F, std::span<const int> 
   report.area.push_back(area_of(sub.mesh.V, sub.mesh.F));
   for (int it = 0; it < options.iterations; ++it) {
     const Vertices before = sub.mesh.V;
-    harmonic_fair(sub.mesh.V, sub.mesh.F, region, membrane);
+    harmonic_fair(sub.mesh.V, sub.mesh.F, local, region, membrane);
     report.max_displacement = (sub.mesh.V - before).rowwise().norm().maxCoeff();
     report.area.push_back(area_of(sub.mesh.V, sub.mesh.F));
     ++report.iterations;

@@ -24,8 +24,10 @@ void refine_and_relax(const Vertices& V, const Faces& F, const Faces& patch, con
   out.refinement.F.resize(0, 3);
   out.free_vertices = out.refinement.free_vertices;
   out.first_patch_face = out.refinement.first_patch_face;
+  // The patched mesh's connectivity, built once: the membrane reads it here, the caller's fairing later.
+  out.topology = build_topology(out.mesh.F, out.mesh.num_vertices());
   if (options.relax && !out.free_vertices.empty())
-    out.membrane = relax_membrane(out.mesh.V, out.mesh.F, out.free_vertices, options.membrane);
+    out.membrane = relax_membrane(out.mesh.V, out.mesh.F, out.topology, out.free_vertices, options.membrane);
 }
 
 // The largest angle between the normals of a patch face and the mesh face across a border edge.
@@ -58,7 +60,14 @@ double border_dihedral_angle(const Mesh& mesh, int first_patch_face) {
 InitialPatch hole_patch(const Mesh& mesh, const std::vector<std::vector<int>>& loops,
                         const PatchOptions& options) {
   if (loops.empty()) throw InvalidArgument("hole_patch: no hole given");
-  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  return hole_patch(mesh, build_topology(mesh.F, mesh.num_vertices()), loops, options);
+}
+
+InitialPatch hole_patch(const Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                        const PatchOptions& options) {
+  if (loops.empty()) throw InvalidArgument("hole_patch: no hole given");
+  if (topo.num_vertices != mesh.num_vertices() || topo.num_faces != mesh.num_faces())
+    throw InvalidArgument("hole_patch: the topology was built for another mesh");
   InitialPatch out;
   int rows = 0;
   for (const auto& loop : loops) {

@@ -4,17 +4,18 @@
 #include <fairsurf/topology.h>
 #include <fairsurf/validate.h>
 
-#include <cmath>
+#include "validated.h"
+
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace fairsurf {
 
-double default_smoothing_time(const Mesh& mesh, FlowKind kind) {
-  // Only what this function reads: faces, well-formed and with finite corners (an empty mesh has
-  // no bounding box to take).
-  require_valid(mesh, Requirements{false, false, false, false}, "default_smoothing_time");
-  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+namespace {
+
+// default_smoothing_time on `topo`, the connectivity of the validated mesh.
+double smoothing_time(const Mesh& mesh, const Topology& topo, FlowKind kind) {
   const double diagonal = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
   if (topo.edges.rows() == 0 || !(diagonal > 0))
     throw InvalidMeshError("default_smoothing_time: the mesh has no extent");
@@ -22,13 +23,19 @@ double default_smoothing_time(const Mesh& mesh, FlowKind kind) {
   return std::pow(2 * h, flow_order(kind));
 }
 
-namespace {
-
 // A timed run's first τ: 1/64 of its time, which the control (τ doubling) reaches in about seven
 // accepted steps.
 double first_timed_tau(const FlowOptions& flow) { return std::min(flow.end_time / 64, flow.tau_max); }
 
 }  // namespace
+
+double default_smoothing_time(const Mesh& mesh, FlowKind kind) {
+  // Only what this function reads: faces, well-formed and with finite corners (an empty mesh has
+  // no bounding box to take). Validation builds the connectivity: it is kept, not built again.
+  const Topology topo =
+      detail::validated_topology(mesh, Requirements{false, false, false, false}, "default_smoothing_time");
+  return smoothing_time(mesh, topo, kind);
+}
 
 SmoothOptions scan_smoothing_options(const Mesh& mesh, FlowKind kind) {
   SmoothOptions o;
@@ -76,8 +83,8 @@ void set_smoothing_end(SmoothOptions& options, const SmoothingEnd& end) {
 }
 
 FlowReport smooth(Mesh& mesh, const SmoothOptions& options, const FlowObserver& observer) {
-  require_valid(mesh, Requirements{}, "smooth");
-  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  // Built once, by the validation, and read by the region, the default time and the flow.
+  const Topology topo = detail::validated_topology(mesh, Requirements{}, "smooth");
   std::vector<char> held(mesh.num_vertices(), 0);
   for (int v : options.fixed_vertices) {
     if (v < 0 || v >= mesh.num_vertices())
@@ -96,9 +103,9 @@ FlowReport smooth(Mesh& mesh, const SmoothOptions& options, const FlowObserver& 
   FlowOptions flow = options.flow;
   if (options.default_time && !std::isfinite(flow.end_time) && flow.steady_tolerance <= 0 &&
       flow.steady_relative_tolerance <= 0)
-    flow.end_time = default_smoothing_time(mesh, flow.kind);
+    flow.end_time = smoothing_time(mesh, topo, flow.kind);
   const Region region = make_region(topo, free, Continuity::G2);
-  return run_flow(mesh.V, mesh.F, region, flow, observer);
+  return run_flow(mesh.V, mesh.F, topo, region, flow, observer);
 }
 
 }  // namespace fairsurf

@@ -6,11 +6,14 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 #include <string>
 
 namespace fairsurf {
 namespace {
+
+std::atomic<std::uint64_t> builds{0};  // topology_builds(); relaxed: a count, not a synchronization
 
 // Counting-sort construction of vertex -> incident faces; rows come out in ascending face order.
 Csr build_vertex_faces(const Faces& F, int num_vertices) {
@@ -53,7 +56,10 @@ Csr build_vertex_vertices(const Faces& F, const Csr& vf) {
 
 }  // namespace
 
+std::uint64_t topology_builds() { return builds.load(std::memory_order_relaxed); }
+
 Topology build_topology(const Faces& F, int num_vertices) {
+  builds.fetch_add(1, std::memory_order_relaxed);
   if (num_vertices < 0) throw InvalidArgument("build_topology: negative vertex count");
   for (int f = 0; f < F.rows(); ++f) {
     for (int k = 0; k < 3; ++k) {

@@ -2,6 +2,8 @@
 #include <fairsurf/topology.h>
 #include <fairsurf/validate.h>
 
+#include "validated.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -219,12 +221,20 @@ Faces well_formed_faces(const Faces& F, int num_vertices, std::vector<int>* kept
   return out;
 }
 
-ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
+namespace {
+
+// validate() on the topology `given` of mesh.F when there is one (all faces are then well formed:
+// build_topology accepted them), else on the topology of the well-formed faces, moved into `built`
+// (if given) when every face is well formed, so that a caller can keep it instead of rebuilding it.
+ValidationReport validate_on(const Mesh& mesh, const ValidationOptions& options, const Topology* given,
+                             Topology* built) {
   const Recorder rec(options.max_examples);
   ValidationReport r;
   r.num_vertices = mesh.num_vertices();
   r.num_faces = mesh.num_faces();
   r.no_faces = r.num_faces == 0;
+  if (given && (given->num_vertices != r.num_vertices || given->num_faces != r.num_faces))
+    throw InvalidArgument("validate: the topology was built for another mesh");
 
   std::vector<char> finite(r.num_vertices);
   for (int v = 0; v < r.num_vertices; ++v) {
@@ -239,7 +249,9 @@ ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
 
   std::vector<int> original;  // index in mesh.F of each well-formed face
   const Faces F = well_formed_faces(mesh.F, r.num_vertices, &original);
-  const Topology topo = build_topology(F, r.num_vertices);
+  Topology own;
+  if (!given) own = build_topology(F, r.num_vertices);
+  const Topology& topo = given ? *given : own;
   r.num_edges = static_cast<int>(topo.edges.rows());
 
   check_triangle_shapes(mesh.V, F, original, finite, options, rec, r);
@@ -247,8 +259,33 @@ ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
   check_duplicate_faces(F, original, rec, r);
   check_manifoldness(F, topo, rec, r);
   check_orientation(F, topo, original, rec, r);
+  if (built && !given && static_cast<int>(original.size()) == r.num_faces) *built = std::move(own);
   return r;
 }
+
+}  // namespace
+
+ValidationReport validate(const Mesh& mesh, const ValidationOptions& options) {
+  return validate_on(mesh, options, nullptr, nullptr);
+}
+
+ValidationReport validate(const Mesh& mesh, const Topology& topo, const ValidationOptions& options) {
+  return validate_on(mesh, options, &topo, nullptr);
+}
+
+namespace detail {
+
+ValidationReport validate_keeping_topology(const Mesh& mesh, Topology& topo) {
+  return validate_on(mesh, {}, nullptr, &topo);
+}
+
+Topology validated_topology(const Mesh& mesh, const Requirements& requirements, const char* caller) {
+  Topology topo;
+  require_valid(validate_keeping_topology(mesh, topo), requirements, caller);
+  return topo;  // every face is well formed once require_valid passed: the topology of mesh.F
+}
+
+}  // namespace detail
 
 std::vector<NamedFinding> named_findings(const ValidationReport& r) {
   return {

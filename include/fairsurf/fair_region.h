@@ -115,5 +115,8 @@ FlowKind flow_for(Continuity c);
 FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
                              const FairRegionOptions& options = {},
                              const FlowObserver& observer = {});
+/// The same on `topo`, the connectivity of mesh.F (build_topology), instead of building it again.
+FairRegionReport fair_region(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                             const FairRegionOptions& options = {}, const FlowObserver& observer = {});
 
 }  // namespace fairsurf

@@ -231,6 +231,9 @@ using FlowObserver = std::function<void(const StepRecord&)>;
 /// error's message ends with "(f is not parabolic at N of M vertices of the flow's input, method.md §4)".
 FlowReport run_flow(Vertices& V, const Faces& F, const Region& region, const FlowOptions& options = {},
                     const FlowObserver& observer = {});
+/// The same on `topo`, the connectivity of F (build_topology), instead of building it again.
+FlowReport run_flow(Vertices& V, const Faces& F, const Topology& topo, const Region& region,
+                    const FlowOptions& options = {}, const FlowObserver& observer = {});
 
 /// The same with every vertex free except the three rings along the mesh border that carry G2 data
 /// (region.h interior_vertices; every vertex on a closed mesh). smooth() takes another ring count

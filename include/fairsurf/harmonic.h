@@ -55,5 +55,8 @@ struct HarmonicReport {
 /// throw, V is unchanged.
 HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Region& region,
                              const HarmonicOptions& options = {});
+/// The same on `topo`, the connectivity of F (build_topology), instead of building it again.
+HarmonicReport harmonic_fair(Vertices& V, const Faces& F, const Topology& topo, const Region& region,
+                             const HarmonicOptions& options = {});
 
 }  // namespace fairsurf

@@ -13,6 +13,7 @@
 
 #include <fairsurf/linear_solver.h>
 #include <fairsurf/mesh.h>
+#include <fairsurf/topology.h>
 
 #include <span>
 #include <vector>
@@ -38,6 +39,9 @@ struct MembraneReport {
 /// Throws InvalidArgument for an index out of range, an empty free set or iterations < 1, and
 /// NumericalError if a system is singular (e.g. a free component with no fixed vertex).
 MembraneReport relax_membrane(Vertices& V, const Faces& F, std::span<const int> free_vertices,
+                              const MembraneOptions& options = {});
+/// The same on `topo`, the connectivity of F (build_topology), instead of building it again.
+MembraneReport relax_membrane(Vertices& V, const Faces& F, const Topology& topo, std::span<const int> free_vertices,
                               const MembraneOptions& options = {});
 
 }  // namespace fairsurf

@@ -14,6 +14,7 @@
 #include <fairsurf/membrane.h>
 #include <fairsurf/mesh.h>
 #include <fairsurf/patch_refinement.h>
+#include <fairsurf/topology.h>
 #include <fairsurf/tube.h>
 
 #include <span>
@@ -31,6 +32,7 @@ struct PatchOptions {
 
 struct InitialPatch {
   Mesh mesh;                       ///< input vertices and faces first, unchanged; then the patch
+  Topology topology;               ///< connectivity of mesh.F, built once for the caller to reuse
   std::vector<int> free_vertices;  ///< ascending indices of the patch's interior vertices
   int first_patch_face = 0;        ///< faces [first_patch_face, #F) are the patch
   std::vector<HoleTriangulation> holes;  ///< hole_patch: the triangulation of each hole, in order
@@ -48,6 +50,9 @@ struct InitialPatch {
 /// Throws what triangulate_hole, refine_patch and relax_membrane throw; InvalidArgument if `loops`
 /// is empty.
 InitialPatch hole_patch(const Mesh& mesh, const std::vector<std::vector<int>>& loops,
+                        const PatchOptions& options = {});
+/// The same on `topo`, the connectivity of mesh.F (build_topology), instead of building it again.
+InitialPatch hole_patch(const Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                         const PatchOptions& options = {});
 
 /// Joins the loops `loop_a` and `loop_b` of `mesh` by a tube. Throws what build_tube,

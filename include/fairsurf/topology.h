@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -46,6 +47,11 @@ struct Topology {
 /// Builds the connectivity of `F` over `num_vertices` vertices.
 /// Throws InvalidArgument if a face index is outside [0, num_vertices) or a face repeats a vertex.
 Topology build_topology(const Faces& F, int num_vertices);
+
+/// Diagnostic counter: how many times build_topology has run in this process (all threads). Tests
+/// read its difference across a call to check that an operation builds each mesh's connectivity
+/// once and passes it down instead of rebuilding it.
+std::uint64_t topology_builds();
 
 /// Per-vertex flag: the vertex lies on a border edge (an edge with exactly one face).
 std::vector<char> boundary_vertex_flags(const Topology& topo);

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <fairsurf/mesh.h>
+#include <fairsurf/topology.h>
 
 #include <string>
 #include <vector>
@@ -80,6 +81,9 @@ struct ValidationReport {
 
 /// Inspects `mesh` and reports every finding. Never throws on bad content.
 ValidationReport validate(const Mesh& mesh, const ValidationOptions& options = {});
+/// The same on `topo`, the connectivity of mesh.F (build_topology), instead of building it again.
+/// Throws InvalidArgument if `topo` has another vertex or face count.
+ValidationReport validate(const Mesh& mesh, const Topology& topo, const ValidationOptions& options = {});
 
 /// The faces of `F` that build_topology accepts (every index in [0, num_vertices), three distinct
 /// vertices), in their original order; `kept`, if given, receives their indices in `F`.
