@@ -5,8 +5,8 @@
 // fill use), the same flow from the flattened cap (the plain defaults; only up to level 6, it needs
 // ~300 steps), and the cotangent ∆³x = 0 baseline on the same patch. Prints steps, seconds per step,
 // total seconds, peak memory and the deviation max|r − 1| each leaves.
-#include <fairsurf/fair_region.h>
-#include <fairsurf/scenes.h>
+#include <fairsurf/applications/fair_region.h>
+#include <fairsurf/applications/scenes.h>
 
 #include <benchmark/benchmark.h>
 

@@ -8,8 +8,8 @@
 // from the step records), total wall time of fill_holes (triangulation, refinement, membrane, ∆³,
 // flow, checks), max|r − 1| over the new vertices, peak memory, and the report's note when the
 // continuity fell back. Arguments: "large" adds the ~100k case, "harmonic" runs the baseline only.
-#include <fairsurf/errors.h>
-#include <fairsurf/fill.h>
+#include <fairsurf/applications/fill.h>
+#include <fairsurf/mesh/errors.h>
 
 #include <sys/wait.h>
 #include <unistd.h>

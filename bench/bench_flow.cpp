@@ -13,8 +13,8 @@
 // run, since the machine is shared. Then the 100k case with a frozen Jacobian
 // (FlowOptions::refactor_interval = 2: the second step reuses the first one's factorization). Last,
 // the same 10k step with GMRES + ILUT at the default options and at the smaller fill of the first version, and with UMFPACK.
-#include <fairsurf/errors.h>
-#include <fairsurf/flow.h>
+#include <fairsurf/flow/flow.h>
+#include <fairsurf/mesh/errors.h>
 
 #include "process_memory.h"
 

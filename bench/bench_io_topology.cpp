@@ -5,8 +5,8 @@
 // heap has never held the subdivided mesh (a forked child makes the file), as the growth of VmHWM
 // over VmRSS before reading, and reported per vertex beyond the raw V (24 B) and F (12 B) arrays.
 // Targets: read + connectivity under 2 s, under 400 bytes per vertex.
-#include <fairsurf/io.h>
-#include <fairsurf/topology.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/topology.h>
 
 #include <benchmark/benchmark.h>
 

@@ -5,8 +5,8 @@
 // refactorizes and solves (the per-step cost; factorize_s and solve_s split it).
 // GMRES + ILUT runs at 10k unknowns only: on this matrix it needs near-complete fill (method.md §5) and
 // its ILUT alone costs seconds, so larger sizes would only burn minutes to report the same outcome.
-#include <fairsurf/errors.h>
-#include <fairsurf/linear_solver.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/solve/linear_solver.h>
 
 #include <benchmark/benchmark.h>
 

@@ -9,8 +9,8 @@
 // mean refactorize + solve time, MUMPS's factorization memory on its busiest rank and on all ranks
 // (INFOG(21), INFOG(22)), rank 0's resident memory with the matrix assembled (before the solver),
 // and its peak. Every other rank prints its own peak once served ("rank R peak_mb X").
-#include <fairsurf/distributed.h>
-#include <fairsurf/linear_solver.h>
+#include <fairsurf/solve/distributed.h>
+#include <fairsurf/solve/linear_solver.h>
 
 #include "process_memory.h"
 #include "step_matrix_sphere.h"

@@ -18,10 +18,10 @@
 // The exponent is the least-squares slope of log(wall) against log(#V), over all cases and over
 // those of at least 100k vertices (the smaller ones run from cache). Threads: OMP_NUM_THREADS
 // (default: all cores).
-#include <fairsurf/io.h>
-#include <fairsurf/operators.h>
-#include <fairsurf/quadratic_fit.h>
-#include <fairsurf/topology.h>
+#include <fairsurf/geometry/operators.h>
+#include <fairsurf/geometry/quadratic_fit.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/topology.h>
 
 #include <sys/resource.h>
 

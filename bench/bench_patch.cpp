@@ -8,10 +8,10 @@
 // Refinement: a 200-edge hole refined to a target edge length that yields about 1k, 10k and 100k
 // new vertices (an equilateral mesh of edge L covers area π with about 2π/(√3 L²) vertices), then
 // the membrane relaxation of those vertices (one cotangent solve, MUMPS).
-#include <fairsurf/hole_triangulation.h>
-#include <fairsurf/membrane.h>
-#include <fairsurf/patch_refinement.h>
-#include <fairsurf/topology.h>
+#include <fairsurf/mesh/topology.h>
+#include <fairsurf/patch/hole_triangulation.h>
+#include <fairsurf/patch/membrane.h>
+#include <fairsurf/patch/patch_refinement.h>
 
 #include <benchmark/benchmark.h>
 

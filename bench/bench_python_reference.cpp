@@ -4,10 +4,10 @@
 // the CPU time of a single-threaded call (the script sets OMP_NUM_THREADS=1) is its own work.
 // Prints JSON.
 //   bench_python_reference FILL_MESH CURVATURE_EDGE_LENGTH REPEATS
-#include <fairsurf/curvatures.h>
-#include <fairsurf/fill.h>
-#include <fairsurf/io.h>
-#include <fairsurf/scenes.h>
+#include <fairsurf/applications/fill.h>
+#include <fairsurf/applications/scenes.h>
+#include <fairsurf/geometry/curvatures.h>
+#include <fairsurf/io/io.h>
 
 #include <algorithm>
 #include <ctime>

@@ -5,14 +5,14 @@
 //
 // Usage: bench_real_holes [--section fill|fair|blend|all] [--mesh NAME] [--no-cgal] [--quick]
 //                         [--csv FILE]
-#include <fairsurf/blend.h>
-#include <fairsurf/continuity_measure.h>
-#include <fairsurf/errors.h>
-#include <fairsurf/fair_region.h>
-#include <fairsurf/fill.h>
-#include <fairsurf/io.h>
-#include <fairsurf/region_selection.h>
-#include <fairsurf/topology.h>
+#include <fairsurf/applications/blend.h>
+#include <fairsurf/applications/fair_region.h>
+#include <fairsurf/applications/fill.h>
+#include <fairsurf/geometry/continuity_measure.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/region_selection.h>
+#include <fairsurf/mesh/topology.h>
 
 #include <algorithm>
 #include <chrono>
@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
-#include "smooth_reference.h"
 #include "real_holes.h"
+#include "smooth_reference.h"
 #ifdef FAIRSURF_BENCH_CGAL
 #include "cgal_reference.h"
 #endif

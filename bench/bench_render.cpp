@@ -2,11 +2,11 @@
 // coloured by its mean curvature into a 1600x1200 image (target: under 1 s on 2 cores), and encoding
 // that image as PNG. "CPU" is the whole process's CPU time (all threads): on a loaded machine,
 // CPU / threads estimates the wall time on free cores.
-#include <fairsurf/io.h>
-#include <fairsurf/operators.h>
-#include <fairsurf/quadratic_fit.h>
-#include <fairsurf/render.h>
-#include <fairsurf/topology.h>
+#include <fairsurf/geometry/operators.h>
+#include <fairsurf/geometry/quadratic_fit.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/topology.h>
+#include <fairsurf/render/render.h>
 
 #include <benchmark/benchmark.h>
 

@@ -5,8 +5,8 @@
 //   broken: the same mesh as an unwelded soup (2.9M vertex records), with every 50th face
 //           repeated and every 7th face flipped: merge, duplicate faces and orientation have work.
 // Target: under 1 s for the clean mesh. Each iteration repairs a fresh copy (copying not timed).
-#include <fairsurf/io.h>
-#include <fairsurf/repair.h>
+#include <fairsurf/applications/repair.h>
+#include <fairsurf/io/io.h>
 
 #include <benchmark/benchmark.h>
 

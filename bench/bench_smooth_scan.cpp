@@ -5,11 +5,11 @@
 // energy before and after. Arguments: the scans to run (paths; default both), optionally --relax W
 // to override the tangential relaxation weight (0 turns it off, for comparisons) and --out PATH to
 // write the result; BENCH_VERBOSE=1 prints every trial step.
-#include <fairsurf/errors.h>
-#include <fairsurf/io.h>
-#include <fairsurf/mesh_quality.h>
-#include <fairsurf/smooth.h>
-#include <fairsurf/topology.h>
+#include <fairsurf/applications/smooth.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/mesh_quality.h>
+#include <fairsurf/mesh/topology.h>
 
 #include <chrono>
 #include <cstdio>

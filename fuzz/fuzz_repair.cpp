@@ -2,10 +2,10 @@
 // mutations reach the connectivity quickly), then repaired. Beyond the sanitizers it checks what
 // repair.h promises: a manifold result with every index in range and no zero-area face left
 // unreported, no vertex at a position the input did not have, and a second run changing nothing.
-#include <fairsurf/errors.h>
-#include <fairsurf/io.h>
-#include <fairsurf/repair.h>
-#include <fairsurf/validate.h>
+#include <fairsurf/applications/repair.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/validate.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -14,7 +14,7 @@
 #include <set>
 #include <string_view>
 
-#include "io_formats.h"
+#include "io/io_formats.h"
 
 namespace {
 

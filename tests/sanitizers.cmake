@@ -2,9 +2,9 @@
 # in directly (not the shared library), under AddressSanitizer and UndefinedBehaviorSanitizer, so
 # that any out-of-bounds read, overflow or undefined conversion in a reader fails the suite.
 set(FAIRSURF_SANITIZE_FLAGS -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
-file(GLOB FAIRSURF_IO_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/io*.cpp)
+file(GLOB FAIRSURF_IO_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/io/io*.cpp)
 # Only the support file test_io uses: the rest of the support code calls into the whole library.
-add_executable(test_io_sanitized ${FAIRSURF_IO_SOURCES} ${CMAKE_CURRENT_SOURCE_DIR}/test_io.cpp
+add_executable(test_io_sanitized ${FAIRSURF_IO_SOURCES} ${CMAKE_CURRENT_SOURCE_DIR}/io/test_io.cpp
                ${CMAKE_CURRENT_SOURCE_DIR}/support/test_support.cpp ${CMAKE_CURRENT_SOURCE_DIR}/support/scratch_dir.cpp)
 target_include_directories(test_io_sanitized PRIVATE ${PROJECT_SOURCE_DIR}/include ${CMAKE_CURRENT_SOURCE_DIR}/support)
 target_compile_definitions(test_io_sanitized PRIVATE

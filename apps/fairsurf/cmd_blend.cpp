@@ -1,7 +1,7 @@
 // fairsurf blend: join two boundary loops (of one mesh, or of two meshes) by a fair tube (blend.h).
-#include <fairsurf/blend.h>
-#include <fairsurf/errors.h>
-#include <fairsurf/io.h>
+#include <fairsurf/applications/blend.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
 
 #include <cmath>
 #include <cstdio>
@@ -9,8 +9,8 @@
 
 #include "command.h"
 #include "flow_log.h"
-#include "repair_report.h"
 #include "region_fairing_args.h"
+#include "repair_report.h"
 
 namespace fairsurf::cli {
 namespace {

@@ -2,8 +2,8 @@
 // another (formats by extension), reporting what reading ignored or repaired.
 #include "command.h"
 
-#include <fairsurf/errors.h>
-#include <fairsurf/io.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
 
 #include <iostream>
 #include <memory>

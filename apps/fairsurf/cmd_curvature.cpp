@@ -4,11 +4,11 @@
 #include "command.h"
 #include "repair_report.h"
 
-#include <fairsurf/errors.h>
-#include <fairsurf/io.h>
-#include <fairsurf/operators.h>
-#include <fairsurf/quadratic_fit.h>
-#include <fairsurf/topology.h>
+#include <fairsurf/geometry/operators.h>
+#include <fairsurf/geometry/quadratic_fit.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/topology.h>
 
 #include <nlohmann/json.hpp>
 

@@ -1,8 +1,8 @@
 // fairsurf fair: free-form design / region fairing. A user-marked region is freed and faired with
 // the rings around it as boundary data (fair_region.h).
-#include <fairsurf/errors.h>
-#include <fairsurf/io.h>
-#include <fairsurf/region_selection.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/region_selection.h>
 
 #include <cmath>
 #include <cstdio>
@@ -10,8 +10,8 @@
 
 #include "command.h"
 #include "flow_log.h"
-#include "repair_report.h"
 #include "region_fairing_args.h"
+#include "repair_report.h"
 
 namespace fairsurf::cli {
 namespace {

@@ -1,6 +1,6 @@
 // fairsurf fill: fill the holes of a mesh with G2 (or G1/G0) boundary data (fill.h).
-#include <fairsurf/fill.h>
-#include <fairsurf/io.h>
+#include <fairsurf/applications/fill.h>
+#include <fairsurf/io/io.h>
 
 #include <algorithm>
 #include <cmath>

@@ -3,9 +3,9 @@
 // --strict asks for 3 on any finding (docs/validation.md).
 #include "command.h"
 
-#include <fairsurf/io.h>
-#include <fairsurf/mesh_summary.h>
-#include <fairsurf/validate.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/mesh_summary.h>
+#include <fairsurf/mesh/validate.h>
 
 #include <nlohmann/json.hpp>
 

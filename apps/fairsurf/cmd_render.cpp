@@ -3,10 +3,10 @@
 // the --compare meshes beside it, on one scale and one colour range) coloured by a per-vertex scalar.
 #include "command.h"
 
-#include <fairsurf/curvatures.h>
-#include <fairsurf/errors.h>
-#include <fairsurf/io.h>
-#include <fairsurf/render.h>
+#include <fairsurf/geometry/curvatures.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/render/render.h>
 
 #include <algorithm>
 #include <array>

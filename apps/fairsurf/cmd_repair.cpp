@@ -4,9 +4,9 @@
 #include "command.h"
 #include "repair_report.h"
 
-#include <fairsurf/errors.h>
-#include <fairsurf/io.h>
-#include <fairsurf/validate.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/validate.h>
 
 #include <iostream>
 #include <memory>

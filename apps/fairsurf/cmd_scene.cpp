@@ -1,6 +1,6 @@
 // fairsurf scene: write one of the paper's scenes (scenes.h) for `fair` or `blend`.
-#include <fairsurf/io.h>
-#include <fairsurf/scenes.h>
+#include <fairsurf/applications/scenes.h>
+#include <fairsurf/io/io.h>
 
 #include <cstdio>
 #include <memory>

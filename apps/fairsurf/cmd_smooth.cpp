@@ -1,7 +1,7 @@
 // fairsurf smooth: denoise or fair a whole mesh with a geometric flow (smooth.h).
-#include <fairsurf/io.h>
-#include <fairsurf/region_selection.h>
-#include <fairsurf/smooth.h>
+#include <fairsurf/applications/smooth.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/region_selection.h>
 
 #include <algorithm>
 #include <cstdio>

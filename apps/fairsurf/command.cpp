@@ -1,8 +1,8 @@
 #include "command.h"
 
-#include <fairsurf/distributed.h>
-#include <fairsurf/io.h>
-#include <fairsurf/mesh_attributes.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/mesh_attributes.h>
+#include <fairsurf/solve/distributed.h>
 
 #include <unistd.h>
 

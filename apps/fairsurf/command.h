@@ -2,10 +2,10 @@
 // input and output paths. The library computes; this layer talks (prints, maps errors to codes).
 #pragma once
 
-#include <fairsurf/errors.h>
-#include <fairsurf/io.h>
-#include <fairsurf/linear_solver.h>
-#include <fairsurf/mesh.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/mesh.h>
+#include <fairsurf/solve/linear_solver.h>
 
 #include <CLI/CLI.hpp>
 

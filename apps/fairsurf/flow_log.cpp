@@ -1,6 +1,6 @@
 #include "flow_log.h"
 
-#include <fairsurf/io.h>
+#include <fairsurf/io/io.h>
 
 #include <cstdio>
 

@@ -2,9 +2,9 @@
 // per-step log, and the failure path that still writes the last accepted state.
 #pragma once
 
-#include <fairsurf/errors.h>
-#include <fairsurf/flow.h>
-#include <fairsurf/mesh.h>
+#include <fairsurf/flow/flow.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/mesh.h>
 
 #include "command.h"
 

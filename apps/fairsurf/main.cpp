@@ -3,8 +3,8 @@
 // (distributed.h); every rank exits with rank 0's code.
 #include "command.h"
 
-#include <fairsurf/distributed.h>
-#include <fairsurf/errors.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/solve/distributed.h>
 
 #include <algorithm>
 #include <iostream>

@@ -3,7 +3,7 @@
 // (the run itself, progress and log: FlowCommandRun in flow_log.h).
 #pragma once
 
-#include <fairsurf/fair_region.h>
+#include <fairsurf/applications/fair_region.h>
 
 #include <CLI/CLI.hpp>
 

@@ -2,8 +2,8 @@
 // smooth, fill, fair, blend and curvature run on their input before anything else.
 #pragma once
 
-#include <fairsurf/mesh.h>
-#include <fairsurf/repair.h>
+#include <fairsurf/applications/repair.h>
+#include <fairsurf/mesh/mesh.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

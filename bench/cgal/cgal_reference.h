@@ -2,7 +2,7 @@
 // benchmark, and only when CMake finds CGAL (FAIRSURF_BENCH_CGAL): the library never depends on it.
 #pragma once
 
-#include <fairsurf/mesh.h>
+#include <fairsurf/mesh/mesh.h>
 
 #include <string>
 #include <vector>

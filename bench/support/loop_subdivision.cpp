@@ -1,7 +1,7 @@
 #include "loop_subdivision.h"
 
-#include <fairsurf/errors.h>
-#include <fairsurf/topology.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/topology.h>
 
 #include <vector>
 

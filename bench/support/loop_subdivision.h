@@ -1,7 +1,7 @@
 // Loop subdivision, used by benchmarks to make large smooth meshes from the bundled ones.
 #pragma once
 
-#include <fairsurf/mesh.h>
+#include <fairsurf/mesh/mesh.h>
 
 namespace fairsurf::bench {
 

@@ -1,6 +1,6 @@
 #include "real_holes.h"
 
-#include <fairsurf/topology.h>
+#include <fairsurf/mesh/topology.h>
 
 #include <Eigen/Geometry>
 

@@ -3,7 +3,7 @@
 // distance of points to the uncut surface.
 #pragma once
 
-#include <fairsurf/mesh.h>
+#include <fairsurf/mesh/mesh.h>
 
 #include <Eigen/Core>
 

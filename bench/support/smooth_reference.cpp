@@ -2,7 +2,7 @@
 
 #include "real_holes.h"
 
-#include <fairsurf/errors.h>
+#include <fairsurf/mesh/errors.h>
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>

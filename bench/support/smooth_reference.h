@@ -5,7 +5,7 @@
 // they lie up to 0.04 mean edges inside the torus its vertices lie on).
 #pragma once
 
-#include <fairsurf/mesh.h>
+#include <fairsurf/mesh/mesh.h>
 
 #include <Eigen/Core>
 

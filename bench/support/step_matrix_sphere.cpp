@@ -1,6 +1,6 @@
 #include "step_matrix_sphere.h"
 
-#include <fairsurf/topology.h>
+#include <fairsurf/mesh/topology.h>
 
 #include <Eigen/SparseCore>
 

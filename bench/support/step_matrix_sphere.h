@@ -5,8 +5,8 @@
 // (≈ 37 non-zeros a row), same τ/h⁶ growth, non-symmetric for β ≠ 0.
 #pragma once
 
-#include <fairsurf/linear_solver.h>
-#include <fairsurf/mesh.h>
+#include <fairsurf/mesh/mesh.h>
+#include <fairsurf/solve/linear_solver.h>
 
 namespace fairsurf::bench {
 

@@ -1,7 +1,7 @@
 // NumPy arrays in and out of the library's mesh type (mesh.h: row-major Eigen matrices, int faces).
 #pragma once
 
-#include <fairsurf/mesh.h>
+#include <fairsurf/mesh/mesh.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

@@ -1,6 +1,6 @@
 #include "errors.h"
 
-#include <fairsurf/errors.h>
+#include <fairsurf/mesh/errors.h>
 
 namespace fairsurf::python {
 

@@ -6,11 +6,11 @@
 #include "progress.h"
 #include "reports.h"
 
-#include <fairsurf/blend.h>
-#include <fairsurf/errors.h>
-#include <fairsurf/fair_region.h>
-#include <fairsurf/fill.h>
-#include <fairsurf/smooth.h>
+#include <fairsurf/applications/blend.h>
+#include <fairsurf/applications/fair_region.h>
+#include <fairsurf/applications/fill.h>
+#include <fairsurf/applications/smooth.h>
+#include <fairsurf/mesh/errors.h>
 
 #include <pybind11/stl.h>
 

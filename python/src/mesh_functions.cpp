@@ -2,11 +2,11 @@
 #include "functions.h"
 #include "reports.h"
 
-#include <fairsurf/curvatures.h>
-#include <fairsurf/io.h>
-#include <fairsurf/mesh_summary.h>
-#include <fairsurf/scenes.h>
-#include <fairsurf/validate.h>
+#include <fairsurf/applications/scenes.h>
+#include <fairsurf/geometry/curvatures.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/mesh_summary.h>
+#include <fairsurf/mesh/validate.h>
 
 #include <pybind11/stl/filesystem.h>
 

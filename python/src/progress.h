@@ -4,8 +4,8 @@
 // also stops the run and is re-raised once the library call has returned.
 #pragma once
 
-#include <fairsurf/fill.h>
-#include <fairsurf/flow.h>
+#include <fairsurf/applications/fill.h>
+#include <fairsurf/flow/flow.h>
 
 #include <pybind11/pybind11.h>
 

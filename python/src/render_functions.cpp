@@ -3,9 +3,9 @@
 #include "arrays.h"
 #include "functions.h"
 
-#include <fairsurf/curvatures.h>
-#include <fairsurf/errors.h>
-#include <fairsurf/render.h>
+#include <fairsurf/geometry/curvatures.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/render/render.h>
 
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>

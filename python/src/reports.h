@@ -4,12 +4,12 @@
 // tests/python/test_reports.py compares the keys with the CLI's logs.
 #pragma once
 
-#include <fairsurf/blend.h>
-#include <fairsurf/fair_region.h>
-#include <fairsurf/fill.h>
-#include <fairsurf/flow.h>
-#include <fairsurf/mesh_summary.h>
-#include <fairsurf/validate.h>
+#include <fairsurf/applications/blend.h>
+#include <fairsurf/applications/fair_region.h>
+#include <fairsurf/applications/fill.h>
+#include <fairsurf/flow/flow.h>
+#include <fairsurf/mesh/mesh_summary.h>
+#include <fairsurf/mesh/validate.h>
 
 #include <pybind11/pybind11.h>
 

@@ -1,6 +1,7 @@
 // Builds the topology of a tetrahedron through the installed library; exit status 0 only if it has
-// the 6 edges a tetrahedron has.
-#include <fairsurf/topology.h>
+// the 6 edges a tetrahedron has. The umbrella header proves every public header is installed, in
+// its stage's folder, and compiles on its own dependencies.
+#include <fairsurf/fairsurf.h>
 
 #include <iostream>
 

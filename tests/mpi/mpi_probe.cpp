@@ -3,9 +3,9 @@
 // as in apps/fairsurf/main.cpp. Every rank writes its exit code to DIR/rank-R.exit before returning.
 //   singular  rank 0 factorizes a singular matrix: NumericalError, exit code 4 (kNumerical) on all.
 //   dying     rank 1 dies (exit without MPI_Finalize) instead of serving; rank 0 then factorizes.
-#include <fairsurf/distributed.h>
-#include <fairsurf/errors.h>
-#include <fairsurf/linear_solver.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/solve/distributed.h>
+#include <fairsurf/solve/linear_solver.h>
 
 #include <unistd.h>
 

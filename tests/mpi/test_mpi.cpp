@@ -3,8 +3,8 @@
 // a rank that dies ends the job; serving ranks end with rank 0 (every run is bounded by `timeout`,
 // whose exit code 124 means a hang). Without FAIRSURF_MPI the tests skip, except the one that checks
 // the error such a build gives for --solver mumps-mpi.
-#include <fairsurf/distributed.h>
-#include <fairsurf/io.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/solve/distributed.h>
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>

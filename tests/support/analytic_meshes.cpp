@@ -1,7 +1,7 @@
 #include "analytic_meshes.h"
 
-#include <fairsurf/scenes.h>
-#include <fairsurf/topology.h>
+#include <fairsurf/applications/scenes.h>
+#include <fairsurf/mesh/topology.h>
 
 #include <Eigen/Geometry>
 

@@ -4,7 +4,7 @@
 // surface, so that analytic curvatures and test functions can be evaluated at the vertices.
 #pragma once
 
-#include <fairsurf/mesh.h>
+#include <fairsurf/mesh/mesh.h>
 
 #include <Eigen/Core>
 

@@ -4,7 +4,7 @@
 
 #include "analytic_meshes.h"
 
-#include <fairsurf/mesh.h>
+#include <fairsurf/mesh/mesh.h>
 
 namespace fairsurf::test {
 

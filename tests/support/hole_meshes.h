@@ -1,7 +1,7 @@
 // Meshes with holes cut out, and distances to reference surfaces, for the hole-filling tests.
 #pragma once
 
-#include <fairsurf/mesh.h>
+#include <fairsurf/mesh/mesh.h>
 
 #include <Eigen/Core>
 

@@ -2,7 +2,7 @@
 // generated meshes. Analytic-surface generators for the numerical tests live beside this file.
 #pragma once
 
-#include <fairsurf/mesh.h>
+#include <fairsurf/mesh/mesh.h>
 
 #include <filesystem>
 #include <string>

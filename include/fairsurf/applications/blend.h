@@ -1,0 +1,93 @@
+// fairsurf — blending two boundary loops with a fair G2 tube (method.md §7, the paper's Figs 3–4).
+//
+// Two boundary loops of one mesh — or of two meshes concatenated first (concatenate_meshes) — are
+// joined by an initial tube (patch.h's tube_patch: loops aligned, Hermite rings, zipper strips,
+// refinement to the surrounding edge length, then the G0 membrane unless it pinches off), and the
+// tube's new vertices are faired by fair_region (fair_region.h): by default the sixth-order flow of
+// f = H to a steady state with the three rings of each surface around the loops as G2 boundary data
+// (continued by the energy descent where the time-stepped flow does not settle: descent_fallback).
+//
+// Loops are numbered in topology.h's boundary_loops order (sorted by their smallest vertex index).
+// Both surfaces must be oriented alike across the tube (tube.h): two outward-oriented pieces, or
+// two pieces of one consistently oriented mesh.
+#pragma once
+
+#include <fairsurf/applications/fair_region.h>
+#include <fairsurf/flow/flow.h>
+#include <fairsurf/geometry/continuity_measure.h>
+#include <fairsurf/mesh/mesh.h>
+#include <fairsurf/mesh/mesh_operations.h>
+#include <fairsurf/patch/patch.h>
+
+#include <vector>
+
+namespace fairsurf {
+
+struct BlendOptions {
+  /// Indices of the two loops to join, into boundary_loops(mesh); both −1: the closest pair
+  /// (tube.h's closest_loop_pair).
+  int loop_a = -1, loop_b = -1;
+  /// The initial tube. With patch.relax the G0 membrane is tried and kept only if it does not
+  /// pinch off (see pinch_quality_ratio); patch.relax = false always starts from the Hermite tube.
+  PatchOptions patch;
+  /// The membrane is discarded, and the flow starts from the Hermite tube, when the membrane's
+  /// worst triangle quality falls below this fraction of the Hermite tube's: no minimal surface
+  /// spans loops far apart for their size (two ends of a cross), and the membrane collapses onto a
+  /// sheet of slivers (quality 1e-9) that no flow can start from.
+  double pinch_quality_ratio = 0.25;
+  FairRegionOptions fair;  ///< continuity (G2 default), f, method, steady-state tolerance
+  /// When fair's sixth-order flow steps in time (FlowStepKind::implicit_flow) and ends without a
+  /// steady state or throws, continue from its last accepted state with the energy descent
+  /// (FlowStepKind::energy_descent, steady once a step lowers E by less than 1e-5 of itself) and
+  /// say so in fair.note. On real meshes the time-stepped flow often does not settle (the fitted EL
+  /// is not the gradient of the discrete energy on irregular rings); where it does, as on the
+  /// analytic scenes, its result is kept unchanged.
+  bool descent_fallback = true;
+  /// Rings around each loop kept when the continuity is measured at one border (both sides' 2-ring
+  /// fits must fit inside). Each figure is taken at its own loop's vertices only.
+  int measure_rings = 4;
+  /// The reference measurement (BlendLoop::reference) is taken this many rings from each loop on
+  /// the input; 0: not taken.
+  int reference_ring = 3;
+};
+
+/// One of the two loops that were joined.
+struct BlendLoop {
+  int index = -1;            ///< into boundary_loops of the input
+  int length = 0;            ///< vertices
+  ContinuityMeasure border;  ///< measured at this loop after fairing (one-sided fits, continuity_measure.h)
+  /// The same measurement on the untouched input, across the line of vertices reference_ring rings
+  /// from the loop: what one-sided fits read where the surface is smooth by construction, i.e. the
+  /// floor of `border` on this mesh (0 on a flat disk; on a coarse curved scan it is not small).
+  ContinuityMeasure reference;
+};
+
+struct BlendReport {
+  int loops_found = 0;        ///< boundary loops of the input
+  bool automatic = false;     ///< the pair was chosen by closest_loop_pair
+  double loop_distance = 0;   ///< symmetric mean nearest-vertex distance of the pair (tube.h)
+  BlendLoop a, b;
+  int tube_vertices = 0;      ///< new vertices (all free)
+  int tube_faces = 0;         ///< new faces (after refinement)
+  int tube_rings = 0;         ///< intermediate rings of the unrefined tube
+  /// Worst triangle quality of the tube, 4√3·area / Σ edge² (1 equilateral, 0 degenerate): of the
+  /// refined Hermite tube, and of the membrane (0 when not relaxed).
+  double hermite_quality = 0, membrane_quality = 0;
+  bool relaxed = false;       ///< the flow started from the membrane (false: not asked, or it pinched)
+  FairRegionReport fair;      ///< requested/supported continuity, steps, final max|V|, whole border
+  double seconds = 0;         ///< wall time of the whole call
+};
+
+/// Joins two boundary loops of `mesh` and fairs the tube. On return `mesh` holds the input's
+/// vertices and faces first (unchanged), then the tube's (per-vertex attributes are dropped, as in
+/// patch.h). Throws InvalidMeshError for fewer than two loops; InvalidArgument for an index out of
+/// range (the message lists every loop with its length), equal indices or only one index given; what tube_patch and
+/// fair_region throw otherwise (NumericalError with `mesh` at the last accepted state of the flow).
+BlendReport blend_loops(Mesh& mesh, const BlendOptions& options = {}, const FlowObserver& observer = {});
+
+/// Measures continuity at the vertices of `loop` only: on the faces within `rings` rings of it,
+/// with the free vertices among them (continuity_measure.h's measure_continuity).
+ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
+                                             const std::vector<int>& free_vertices, int rings = 4);
+
+}  // namespace fairsurf

@@ -1,0 +1,122 @@
+// fairsurf — fairing a free region of a mesh with Gk boundary data: the shared engine of hole
+// filling, region fairing (free-form design) and blending.
+//
+// The free vertices and six rings around them are cut out (submesh.h), so each step costs in
+// proportion to the region. The continuity asked for picks the flow: G2 the sixth-order flow of
+// the chosen f (three fixed rings), G1 Willmore flow (two rings), G0 mean curvature flow (one ring).
+// Where the mesh offers fewer complete rings (the region comes near a mesh border), the continuity
+// falls back to what the data supports and the report says so. The flow runs to a steady state
+// (FlowOptions::steady_tolerance) or its step limit. The classical baseline (`harmonic`) solves the
+// cotangent ∆^(k+1) x = 0 instead.
+#pragma once
+
+#include <fairsurf/flow/flow.h>
+#include <fairsurf/geometry/continuity_measure.h>
+#include <fairsurf/mesh/mesh.h>
+#include <fairsurf/mesh/region.h>
+#include <fairsurf/solve/harmonic.h>
+
+#include <limits>
+#include <span>
+#include <string>
+
+namespace fairsurf {
+
+enum class FairMethod { flow, harmonic };
+/// "flow" or "harmonic".
+const char* to_string(FairMethod method);
+/// Inverse of to_string; throws InvalidArgument naming the valid methods.
+FairMethod parse_fair_method(const std::string& name);
+
+struct FairRegionOptions {
+  Continuity continuity = Continuity::G2;
+  FairMethod method = FairMethod::flow;
+  /// Flow settings; `kind` is chosen from the continuity, the rest is used as given. The defaults
+  /// here run to a steady state: max|V| under steady_tolerance, at most max_steps steps.
+  FlowOptions flow = default_fair_flow_options();
+  LinearSolverOptions harmonic_solver;  ///< for method == harmonic (and harmonic_start)
+  /// method == flow: start the flow from the cotangent ∆^k x = 0 solution (k = supported
+  /// continuity + 1) instead of the given positions, solved up to this many times with the operator
+  /// re-evaluated at the previous solution each time; 0: flow from the given positions.
+  /// method == harmonic: the same re-evaluated solution (at least one solve). One solve is
+  /// not enough from a flat patch: the operator frozen there carries the patch's kink along its
+  /// border, and ∆³ then overshoots by O(1/h) (0.14, 0.27, 0.57 above a unit sphere cap at 386,
+  /// 1536, 6460 patch vertices); re-evaluated, it settles within 3e-3 of the sphere in 4 solves.
+  int harmonic_start_iterations = 0;
+  /// The re-evaluation stops once a solve moves no free vertex by more than this times the mean
+  /// length of the edges at free vertices (HarmonicOptions::tolerance).
+  double harmonic_start_tolerance = 0.1;
+  int submesh_rings = 6;                ///< rings kept around the free region (submesh.h)
+  /// method == flow with a ∆^k start: when the flow throws or ends without a steady state, keep the
+  /// ∆^k solution it started from — the linear C(k−1) result, reported `linear` with the reason —
+  /// instead of throwing or returning an unsettled state. The result is then never worse than the
+  /// classical baseline, and the energy descent (FlowStepKind::energy_descent) only lowers E from it.
+  bool linear_floor = false;
+  /// With the linear floor: hold out this many rings of fixed vertices around the free region, fair
+  /// the enlarged region with the flow and with the linear ∆^k solution alone, and deliver the linear
+  /// solution where it lies closer to the held-out input (mean distance along the input's vertex
+  /// normals). A flow then never replaces the classical baseline where it extrapolates the
+  /// surrounding surface worse (on real meshes the fitted energy can prefer shapes the surface does
+  /// not have; docs/fill.md). Costs two more fairings of a slightly larger region. 0: off.
+  int held_out_rings = 0;
+
+  static FlowOptions default_fair_flow_options();
+  /// The options that settle a disk-like region (a hole's patch, a marked region) in a few steps:
+  /// the flow starts from the cotangent ∆^k solution with the region's own operator
+  /// (harmonic_start_iterations = 1: on a real surface, the classical fairing; fill's
+  /// default_fairing re-evaluates it up to 8 times, since a patch starts as a membrane)
+  /// with a Newton-like first step (flow.tau = 1e-2; a rejected step still quarters it); the
+  /// sixth-order flow descends the energy (FlowStepKind::energy_descent, steady once a step lowers E
+  /// by less than 1e-5 of itself, 30 rejections in a row allowed), keeps the ∆³ solution as its
+  /// floor (linear_floor) and delivers it where it re-predicts 2 held-out rings better
+  /// (held_out_rings); and both linear solvers use the minimum-degree ordering, whose analysis
+  /// is far cheaper on patch-sized systems. From a flattened cap the plain defaults do not settle
+  /// beyond about a thousand free vertices (docs/blend.md). Used by fill_holes and `fairsurf fair`; not
+  /// by blend, whose tubes' ∆³ re-evaluation can fold a tube around a corner (fairing_cross).
+  static FairRegionOptions harmonic_started();
+};
+
+struct FairRegionReport {
+  int free_vertices = 0;
+  Continuity requested = Continuity::G2;
+  Continuity supported = Continuity::G2;  ///< what the fixed rings allow; the flow used this one
+  FairMethod method = FairMethod::flow;
+  FlowKind flow_kind = FlowKind::sixth_order;  ///< when method == flow
+  /// When method == flow. Where held_out_rings chose the linear solution, only its
+  /// well_posedness is set: that of the flow's trial on the enlarged region.
+  FlowReport flow;
+  /// When method == harmonic, or of the flow's start (FairRegionOptions::harmonic_start_iterations)
+  HarmonicReport harmonic;
+  /// The result is the linear ∆^k solution (C(k−1), reported as such, not as G(k−1)): method
+  /// harmonic, or the flow's floor (FairRegionOptions::linear_floor); `note` says why for the floor.
+  bool linear = false;
+  std::string note;
+  /// held_out_rings: mean normal distance of the held-out vertices from the input after the flow and
+  /// after the linear solution, in mean edge lengths (∞: that fairing failed; NaN: not measured).
+  double held_out_flow_error = std::numeric_limits<double>::quiet_NaN();
+  double held_out_linear_error = std::numeric_limits<double>::quiet_NaN();
+  ContinuityMeasure continuity;                ///< measured after fairing
+  double seconds = 0;                          ///< wall time of the whole call
+
+  /// The flow ran on the region and `flow` holds its report. False for method harmonic, where
+  /// held_out_rings chose the linear solution before any flow on the region, and where the flow
+  /// threw and the floor was kept (`note` says so).
+  bool has_flow_report() const { return method == FairMethod::flow && flow.free_vertices > 0; }
+};
+
+/// The flow that reaches continuity `c` from c+1 fixed rings: mean curvature (G0), Willmore (G1),
+/// sixth order (G2).
+FlowKind flow_for(Continuity c);
+
+/// Fairs the vertices `free_vertices` of `mesh` (mesh.V updated in place; only free vertices move).
+/// Requires a manifold, consistently oriented mesh without degenerate faces (InvalidMeshError).
+/// Throws InvalidArgument for an empty or out-of-range free set, NumericalError if the flow or the
+/// solve fails — with mesh.V at the last accepted state.
+FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
+                             const FairRegionOptions& options = {},
+                             const FlowObserver& observer = {});
+/// The same on `topo`, the connectivity of mesh.F (build_topology), instead of building it again.
+FairRegionReport fair_region(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                             const FairRegionOptions& options = {}, const FlowObserver& observer = {});
+
+}  // namespace fairsurf

@@ -1,0 +1,139 @@
+// fairsurf — N-sided hole filling with G2 boundary data (method.md §7), end to end.
+//
+// Pipeline, per hole: the boundary loop (topology.h boundary_loops, in its order: loop i is hole i)
+// is triangulated, refined to the surrounding edge length and relaxed to a G0 membrane (patch.h
+// hole_patch); then the patch's new vertices are faired with the hole's border and the rest of the
+// mesh fixed (fair_region.h: the sixth-order flow to a steady state for G2, or the cotangent ∆^k
+// baseline), so the fixed rings around the hole carry the position, tangent plane and curvature
+// data. The original vertices never move and keep their order and positions; new vertices and faces
+// are appended after them. Per-vertex attributes (scalars, colours) are dropped once a hole is
+// filled, since their length would no longer be #V.
+//
+// Holes whose fixed rings overlap (their borders are at most 2·rings − 2 edges apart, rings = the
+// fixed rings of the requested continuity, 3 for G2) are filled jointly: one patch, one free region,
+// so neither sees the other's open border as a cut in its boundary data. Other holes are filled one
+// after another on the growing mesh, in the order of their first hole index. A hole whose
+// surroundings offer fewer complete rings than the continuity needs (it comes close to a border that
+// stays open) is faired with the continuity the data supports, and its report says so.
+//
+// A hole is filled at a continuity only if its flow reaches a steady state (FlowOptions
+// steady_tolerance / steady_relative_tolerance): a flow that stops at its step limit, whether its
+// max|V| ended below where it started ("did not settle") or above ("diverged"), fails the fill at
+// that continuity, which is then (by default) retried one continuity lower: G2 → G1 → G0, the
+// report's note saying why. So `supported` G2 means a settled G2 flow, never a partial one.
+//
+// A pinch of the border (a vertex with more than two border edges, several fans of faces) is
+// filled: every loop through it is filled in one group, its border edges relinked at the pinch so
+// that the patches join the fans into one disk, and the result is manifold there.
+//
+// Failures are per hole and leave the mesh as it was before that hole: a pinch shared with a loop
+// that is not filled ("non-manifold border"), a triangulation, refinement or flow that throws, a
+// patch that would make an edge or vertex non-manifold, or a faired patch whose faces cross the
+// mesh (face_intersection.h). The other holes are still filled.
+#pragma once
+
+#include <fairsurf/applications/fair_region.h>
+#include <fairsurf/energy/energy_function.h>
+#include <fairsurf/mesh/mesh.h>
+#include <fairsurf/patch/patch.h>
+
+#include <functional>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace fairsurf {
+
+struct FillOptions {
+  /// The fairing step: continuity (G2 by default), method (flow or harmonic), the flow's functions
+  /// f (fairing.flow.functions, "H" by default) and stopping rule. Defaults: default_fairing().
+  FairRegionOptions fairing = default_fairing();
+  PatchOptions patch;  ///< triangulation, refinement and membrane of the initial patch
+
+  // Which boundary loops are filled. A loop left out is reported as skipped with the reason. A
+  // 3-edge loop around a face of the mesh (a lone triangle) is always skipped: its only fill is
+  // that face again, reversed.
+  std::vector<int> holes;   ///< loop indices (boundary_loops order); empty: every loop
+  int max_hole_edges = 0;   ///< loops with more border edges are skipped; 0: no limit
+  bool skip_largest = false;  ///< leave the longest loop (an open surface's outer border) open
+  /// Reject a patch whose faces cross the surrounding mesh (face_intersection.h).
+  bool check_intersections = true;
+  /// When the fill of a hole fails (the flow throws or reaches no steady state without a linear
+  /// floor, or the patch crosses the mesh), retry with the linear ∆^k solution at the requested
+  /// continuity, then at each lower one down to the membrane (C0); the report's `note` says so. A
+  /// lower continuity's flow runs only when asked for (fairing.continuity).
+  bool fallback_on_failure = true;
+
+  /// fair_region's defaults, except that the flow starts from the re-evaluated cotangent ∆^k
+  /// solution (harmonic_start_iterations = 8) with a Newton-like first step (τ = 1e-2: the step
+  /// control quarters it on rejection): a membrane patch is far from the G2 steady state, and from
+  /// there the flow needs hundreds of steps with τ growing from 1e-9, from ∆³ a few (docs/fill.md).
+  /// Both linear solvers use the minimum-degree ordering (LinearSolverOptions::ordering), whose
+  /// analysis is far cheaper than nested dissection's on patch-sized systems.
+  static FairRegionOptions default_fairing();
+};
+
+enum class HoleStatus { filled, skipped, failed };
+/// "filled", "skipped", "failed".
+const char* to_string(HoleStatus status);
+
+/// What happened to one boundary loop of the input.
+struct HoleReport {
+  int index = 0;         ///< the loop's index in boundary_loops order
+  int border_edges = 0;  ///< edges of the loop
+  HoleStatus status = HoleStatus::skipped;
+  std::string reason;    ///< why it was skipped or failed; empty when filled
+  std::vector<int> filled_with;  ///< other holes filled jointly with it (overlapping rings)
+  int vertices_added = 0;        ///< this hole's new vertices
+  int faces_added = 0;           ///< this hole's new faces
+  Continuity requested = Continuity::G2;
+  Continuity supported = Continuity::G2;  ///< the continuity the fairing used
+  /// The patch is the linear ∆^k solution (k = supported + 1): C(k−1), not G(k−1) — the harmonic
+  /// method, or the floor kept when the flow did not settle or its patch crossed the mesh.
+  /// delivered_label(supported, linear) names it ("G2", "C2 (linear)"). A patch without interior
+  /// vertex (a small loop's triangulation alone) is reported C0 (linear), with a note.
+  bool linear = false;
+  /// FairRegionOptions::held_out_rings: mean normal distance of the held-out rings from the input after
+  /// the flow and after the linear solution, in mean edge lengths (∞: that fairing failed; NaN: not
+  /// measured).
+  double held_out_flow_error = std::numeric_limits<double>::quiet_NaN();
+  double held_out_linear_error = std::numeric_limits<double>::quiet_NaN();
+  /// Why `supported` is below `requested` (too few complete rings around the hole, or a failed
+  /// attempt at a higher continuity — a throw, no steady state, a crossing: FillOptions::
+  /// fallback_on_failure). Empty otherwise.
+  std::string note;
+  int steps = 0;                 ///< accepted flow steps (0 for the harmonic method)
+  /// Cotangent ∆^k solves: the flow's start (FairRegionOptions::harmonic_start_iterations) or the
+  /// harmonic method's one solve.
+  int harmonic_solves = 0;
+  double seconds = 0;            ///< wall time of patch, fairing and checks (of the joint region)
+  /// max|V| on the free vertices at the end, in the flow's units (flow.h; |EL| for the sixth-order
+  /// flow); NaN for the harmonic method or a patch without interior vertices.
+  double final_max_velocity = 0;
+  /// Where the sixth-order flow's f is not parabolic on its input (method.md §4; energy_function.h):
+  /// of the flow that ran or was weighed (FairRegionReport::flow); zero when none reported it.
+  WellPosedness well_posedness;
+  /// Normal angle and mean-curvature jump across this hole's border, measured after fairing
+  /// (border_vertices == 0 when the patch has no interior vertex).
+  ContinuityMeasure continuity;
+};
+
+struct FillReport {
+  std::vector<HoleReport> holes;  ///< one per boundary loop of the input, in loop order
+  int filled = 0, skipped = 0, failed = 0;
+  int input_vertices = 0, input_faces = 0;
+  double seconds = 0;  ///< wall time of the whole call
+};
+
+/// Called after every trial flow step with the holes being faired together (ascending indices).
+using FillObserver = std::function<void(std::span<const int> holes, const StepRecord& record)>;
+
+/// Fills the selected boundary loops of `mesh` in place (see the header).
+/// Throws InvalidMeshError ("fill_holes: mesh has ...") if the mesh has non-finite coordinates,
+/// malformed, degenerate or duplicate faces, non-manifold edges, inconsistent orientation, or
+/// non-manifold vertices that are not pinches of the border; InvalidArgument for a hole index outside
+/// the loops or a negative max_hole_edges. Everything else is reported per hole.
+FillReport fill_holes(Mesh& mesh, const FillOptions& options = {}, const FillObserver& observer = {});
+
+}  // namespace fairsurf

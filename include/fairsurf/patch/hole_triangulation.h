@@ -1,0 +1,93 @@
+// fairsurf — minimum-weight triangulation of a hole's boundary polygon (Liepa 2003; method.md §7).
+//
+// A hole is a boundary loop as topology.h's boundary_loops returns it: an ordered vertex cycle with
+// the surface on its left (walking it seen from the side the normals point to), so the mesh face
+// across loop edge a→b contains the directed edge a→b. The new faces use only the loop's vertices
+// and contain b→a across every loop edge: they are oriented consistently with the surrounding mesh.
+//
+// Weight of a triangulation (Liepa): the pair (largest dihedral angle, total area), compared
+// lexicographically (angles within kAngleTie of each other count as equal, then the area decides).
+// The dihedral angle of an edge is the angle between the unit normals of its two triangles, in
+// [0, π]: 0 for a flat continuation. It is taken over every interior edge of the new triangulation
+// and over every loop edge, against the existing mesh face across it. A degenerate triangle (area
+// under 1e-12 times its longest edge squared) counts as angle π.
+//
+// Holes with at most `max_dynamic_programming_size` loop edges are solved by Liepa's O(n³) dynamic
+// programme. (The programme is exact for the area; for the angle it evaluates the dihedral across a
+// diagonal with the optimal sub-triangulation on its inner side, as Liepa does, so on rare inputs a
+// triangulation with a slightly smaller largest angle or area exists: on 40 random non-planar
+// holes of 4-8 edges, 34 were optimal and the worst largest angle was 0.12 rad above the optimum.)
+// Larger holes are divided first: the polygon is cut along the admissible diagonal with the
+// smallest ratio of its length to the shorter loop arc it cuts off (a diameter of a round hole, the
+// waist of an elongated one), among those leaving at least a quarter of the vertices on each side,
+// recursively, until every piece is small enough for the programme. The second piece of a cut sees
+// the first piece's triangle across the cut as its "mesh" face, so the dihedral across the cut is
+// still weighed. The cost is then O(n²) for the cuts plus O(n·t²) for the pieces, t the threshold.
+// Pieces must stay large for the fill to stay good: with t = 64 on a 150-edge spherical cap the
+// largest angle was 0.92 rad against 0.77 undivided, but with t = 8-16 thin pieces fold (2.9 rad).
+//
+// A triangulation must not run through the surrounding mesh. Where a loop runs round a sharp
+// corner of a CAD part, the lightest triangles (for example every triangle on a loop edge next to a
+// corner fan that curls over the hole) can pass through mesh faces. Each triangulation is checked
+// (face_intersection.h, the same test as fill's); while it crosses, the programme is solved again
+// with the crossing diagonals (an edge through a face) or triangles (a face's edge through them)
+// forbidden, up to `max_crossing_rounds` times, and the triangulation with the fewest crossings is
+// kept (docs/patch.md: the corner of cgal_mech_holes_shark's hole 3). CGAL avoids them by restricting the
+// search to a 3D Delaunay triangulation of the loop, which we do not have.
+//
+// A triangle is admissible only if its three vertices are distinct and none of its diagonals is
+// already an edge of the mesh (that would make the edge non-manifold). A loop that passes twice
+// through a vertex (a pinch of the border) is first cut by a diagonal from between the two passes
+// to outside them, so each piece passes once; a later piece may not repeat an earlier piece's
+// diagonal (the two passes could otherwise both be joined to one vertex).
+#pragma once
+
+#include <fairsurf/mesh/mesh.h>
+#include <fairsurf/mesh/topology.h>
+
+#include <span>
+
+namespace fairsurf {
+
+/// Two dihedral angles closer than this (radians) compare as equal in the weight.
+inline constexpr double kAngleTie = 1e-9;
+
+struct HoleTriangulationOptions {
+  /// Loops with at most this many edges are triangulated by the O(n³) dynamic programme; larger
+  /// ones are cut into pieces of at most this size first, which bounds the cubic cost (timings in
+  /// docs/patch.md).
+  int max_dynamic_programming_size = 200;
+  /// A triangulation whose faces cross the mesh (face_intersection.h) is solved again with the
+  /// crossing triangles forbidden, at most this many times; the one with the fewest crossings is
+  /// kept. 0: no check.
+  int max_crossing_rounds = 100;
+};
+
+/// The new faces of one hole and the weight they reach.
+struct HoleTriangulation {
+  Faces faces;                      ///< (#loop − 2) by 3 indices into the mesh's vertices
+  double max_dihedral_angle = 0.0;  ///< radians, over interior and loop edges (see header)
+  double area = 0.0;                ///< total area of the new faces
+  bool divided = false;             ///< the loop was cut into pieces (above the threshold)
+  int crossings = 0;                ///< crossings left with the mesh or each other (0 when not checked)
+};
+
+/// Triangulates the hole bounded by `loop` (vertex indices of `V`, surface on the left, as
+/// boundary_loops orders them) of the mesh (V, F) whose connectivity is `topo`.
+/// Throws InvalidArgument for a loop of fewer than 3 vertices, an index out of range, a loop edge
+/// that is not a border edge of the mesh, or a non-positive threshold; InvalidMeshError if no
+/// admissible triangulation exists (every candidate would duplicate a mesh edge).
+HoleTriangulation triangulate_hole(const Vertices& V, const Faces& F, const Topology& topo,
+                                   std::span<const int> loop,
+                                   const HoleTriangulationOptions& options = {});
+
+/// Liepa's weight of the triangles `faces` added to the mesh (V, F): the largest dihedral angle
+/// over the edges that the new faces share with each other or with the mesh faces, and the total
+/// area of `faces`. Faces of the mesh that share no edge with `faces` do not count.
+struct TriangulationWeight {
+  double max_dihedral_angle = 0.0;
+  double area = 0.0;
+};
+TriangulationWeight triangulation_weight(const Vertices& V, const Faces& F, const Faces& faces);
+
+}  // namespace fairsurf

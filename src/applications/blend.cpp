@@ -1,0 +1,195 @@
+#include <fairsurf/applications/blend.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/mesh_attributes.h>
+#include <fairsurf/mesh/topology.h>
+#include <fairsurf/patch/membrane.h>
+#include <fairsurf/patch/tube.h>
+
+#include "stopwatch.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace fairsurf {
+namespace {
+
+std::string loop_list(const std::vector<std::vector<int>>& loops) {
+  std::string out;
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    out += (i > 0 ? ", " : "") + std::to_string(i) + " (" + std::to_string(loops[i].size()) + " vertices)";
+  return out;
+}
+
+LoopPair chosen_pair(const Vertices& V, const std::vector<std::vector<int>>& loops, const BlendOptions& o) {
+  const int n = static_cast<int>(loops.size());
+  if (n < 2)
+    throw InvalidMeshError("blend_loops: the mesh has " + std::to_string(n) +
+                           (n == 1 ? " boundary loop" : " boundary loops") + "; blending needs two");
+  if (o.loop_a < 0 && o.loop_b < 0) return closest_loop_pair(V, loops);
+  for (int index : {o.loop_a, o.loop_b})
+    if (index < 0 || index >= n)
+      throw InvalidArgument("blend_loops: loop " + std::to_string(index) + " is out of range; the mesh has " +
+                            std::to_string(n) + " boundary loops: " + loop_list(loops));
+  if (o.loop_a == o.loop_b)
+    throw InvalidArgument("blend_loops: loop " + std::to_string(o.loop_a) + " given twice; two loops are needed");
+  return {o.loop_a, o.loop_b, 0.0};
+}
+
+// Worst 4√3·area / Σ edge² over faces [first_face, #F) of (V, F).
+double worst_quality(const Vertices& V, const Faces& F, int first_face) {
+  double worst = 1.0;
+  for (Eigen::Index f = first_face; f < F.rows(); ++f) {
+    const Eigen::RowVector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+    const double squares = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+    const double doubled_area = (b - a).cross(c - a).norm();
+    worst = std::min(worst, squares > 0 ? 2.0 * std::sqrt(3.0) * doubled_area / squares : 0.0);
+  }
+  return worst;
+}
+
+// The Hermite tube, relaxed to the G0 membrane when asked and when the membrane does not pinch off.
+InitialPatch initial_tube(const Mesh& mesh, const std::vector<int>& loop_a, const std::vector<int>& loop_b,
+                          const BlendOptions& options, BlendReport& report) {
+  PatchOptions hermite = options.patch;
+  hermite.relax = false;
+  InitialPatch patch = tube_patch(mesh, loop_a, loop_b, hermite);
+  const Faces& F = patch.mesh.F;
+  report.hermite_quality = worst_quality(patch.mesh.V, F, patch.first_patch_face);
+  if (!options.patch.relax || patch.free_vertices.empty()) return patch;
+  Vertices relaxed = patch.mesh.V;
+  MembraneReport membrane = relax_membrane(relaxed, F, patch.topology, patch.free_vertices, options.patch.membrane);
+  report.membrane_quality = worst_quality(relaxed, F, patch.first_patch_face);
+  report.relaxed = report.membrane_quality >= options.pinch_quality_ratio * report.hermite_quality;
+  if (report.relaxed) {
+    patch.mesh.V = std::move(relaxed);
+    patch.membrane = std::move(membrane);
+  }
+  return patch;
+}
+
+// measure_continuity on the faces within `rings` rings of `loop`, at the vertices `at` only.
+ContinuityMeasure measure_near_loop(const Mesh& mesh, const std::vector<int>& loop, int rings,
+                                    const std::vector<int>& free_vertices, const std::vector<int>& at) {
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  const std::vector<int> distance = ring_distances(topo, loop, rings);
+  std::vector<int> local(mesh.num_vertices(), -1);
+  int kept = 0;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (distance[v] >= 0) local[v] = kept++;
+  Vertices V(kept, 3);
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (local[v] >= 0) V.row(local[v]) = mesh.V.row(v);
+  std::vector<Eigen::RowVector3i> faces;
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const Eigen::RowVector3i c = mesh.F.row(f);
+    if (local[c[0]] >= 0 && local[c[1]] >= 0 && local[c[2]] >= 0)
+      faces.emplace_back(local[c[0]], local[c[1]], local[c[2]]);
+  }
+  Faces F(static_cast<int>(faces.size()), 3);
+  for (int f = 0; f < F.rows(); ++f) F.row(f) = faces[f];
+  const auto to_local = [&local](const std::vector<int>& vertices) {
+    std::vector<int> out;
+    for (int v : vertices)
+      if (local[v] >= 0) out.push_back(local[v]);
+    return out;
+  };
+  return measure_continuity(V, F, to_local(free_vertices), to_local(at));
+}
+
+// The measurement on the untouched input: the vertices fewer than `offset` rings from the loop
+// play the free region, those at `offset` rings are measured.
+ContinuityMeasure reference_at_loop(const Mesh& input, const std::vector<int>& loop, int offset, int rings) {
+  const Topology topo = build_topology(input.F, input.num_vertices());
+  const std::vector<int> distance = ring_distances(topo, loop, offset);
+  std::vector<int> inner, line;
+  for (int v = 0; v < input.num_vertices(); ++v)
+    if (distance[v] >= 0) (distance[v] < offset ? inner : line).push_back(v);
+  return measure_near_loop(input, loop, offset + rings, inner, line);
+}
+
+// The time-stepped flow's options turned into the energy descent's (flow.md, "Energy descent").
+FairRegionOptions descent_options(const FairRegionOptions& fair) {
+  FairRegionOptions o = fair;
+  o.flow.step_kind = FlowStepKind::energy_descent;
+  o.flow.steady_energy_tolerance = 1e-5;
+  o.flow.step_control.max_consecutive_rejections = 30;
+  o.harmonic_start_iterations = 0;  // from the time-stepped flow's last state
+  return o;
+}
+
+// Fairs the tube with options.fair; where that sixth-order flow steps in time and ends unsettled
+// or throws (a real mesh's irregular rings: the fitted EL is not the gradient of the discrete
+// energy there, flow.md), the energy descent takes over from its last accepted state and runs
+// until E stops decreasing.
+FairRegionReport fair_tube(Mesh& mesh, const std::vector<int>& free, const BlendOptions& options,
+                           const FlowObserver& observer) {
+  const bool may_descend = options.descent_fallback && options.fair.method == FairMethod::flow &&
+                           options.fair.flow.step_kind == FlowStepKind::implicit_flow;
+  std::string failure;
+  try {
+    FairRegionReport report = fair_region(mesh, free, options.fair, observer);
+    if (!may_descend || report.linear || report.flow_kind != FlowKind::sixth_order ||
+        report.flow.stop_reason == FlowStopReason::steady)
+      return report;
+    failure = unsettled_reason(report.flow);
+  } catch (const NumericalError& e) {
+    if (!may_descend || options.fair.continuity != Continuity::G2) throw;
+    failure = std::string("failed (") + e.what() + ")";  // mesh holds the last accepted state
+  }
+  FairRegionReport report = fair_region(mesh, free, descent_options(options.fair), observer);
+  report.note = "the time-stepped flow " + failure + "; the energy descent continued from its last state" +
+                (report.note.empty() ? "" : "; " + report.note);
+  return report;
+}
+
+}  // namespace
+
+ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
+                                             const std::vector<int>& free_vertices, int rings) {
+  return measure_near_loop(mesh, loop, rings, free_vertices, loop);
+}
+
+BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObserver& observer) {
+  const auto start = detail::Clock::now();
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  const std::vector<std::vector<int>> loops = boundary_loops(mesh.F, topo);
+  const LoopPair pair = chosen_pair(mesh.V, loops, options);
+
+  BlendReport report;
+  report.loops_found = static_cast<int>(loops.size());
+  report.automatic = options.loop_a < 0 && options.loop_b < 0;
+  report.loop_distance = pair.distance;
+  const std::vector<int>& loop_a = loops[pair.first];
+  const std::vector<int>& loop_b = loops[pair.second];
+  report.a.index = pair.first;
+  report.a.length = static_cast<int>(loop_a.size());
+  report.b.index = pair.second;
+  report.b.length = static_cast<int>(loop_b.size());
+
+  if (options.reference_ring > 0) {
+    report.a.reference = reference_at_loop(mesh, loop_a, options.reference_ring, options.measure_rings);
+    report.b.reference = reference_at_loop(mesh, loop_b, options.reference_ring, options.measure_rings);
+  }
+  InitialPatch patch = initial_tube(mesh, loop_a, loop_b, options, report);
+  report.tube_vertices = patch.mesh.num_vertices() - mesh.num_vertices();
+  report.tube_faces = patch.mesh.num_faces() - patch.first_patch_face;
+  report.tube_rings = patch.tube.rings;
+  // The input's faces come first, unchanged: they keep their texture coordinates, normals and
+  // polygons, the tube's faces have none; vertex values are dropped, the tube's vertices have none.
+  mesh.V = std::move(patch.mesh.V);
+  mesh.F = std::move(patch.mesh.F);
+  mesh.vertex_scalars.clear();
+  mesh.vertex_colors.resize(0, 3);
+  pad_face_attributes(mesh);
+
+  report.fair = fair_tube(mesh, patch.free_vertices, options, observer);
+  report.a.border = measure_continuity_at_loop(mesh, loop_a, patch.free_vertices, options.measure_rings);
+  report.b.border = measure_continuity_at_loop(mesh, loop_b, patch.free_vertices, options.measure_rings);
+  report.seconds = detail::seconds_since(start);
+  return report;
+}
+
+}  // namespace fairsurf

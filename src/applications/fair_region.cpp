@@ -1,0 +1,219 @@
+#include "flow/flow_failure.h"
+#include "held_out.h"
+#include "mesh/validated.h"
+#include "stopwatch.h"
+
+#include <fairsurf/applications/fair_region.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/submesh.h>
+#include <fairsurf/mesh/topology.h>
+#include <fairsurf/mesh/validate.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+#include <optional>
+
+namespace fairsurf {
+
+const char* to_string(FairMethod method) { return method == FairMethod::flow ? "flow" : "harmonic"; }
+
+FairMethod parse_fair_method(const std::string& name) {
+  if (name == "flow") return FairMethod::flow;
+  if (name == "harmonic") return FairMethod::harmonic;
+  throw InvalidArgument("parse_fair_method: '" + name + "' is not a method (expected flow or harmonic)");
+}
+
+FlowKind flow_for(Continuity c) {
+  switch (c) {
+    case Continuity::G0: return FlowKind::mean_curvature;
+    case Continuity::G1: return FlowKind::willmore;
+    case Continuity::G2: return FlowKind::sixth_order;
+  }
+  return FlowKind::sixth_order;
+}
+
+FlowOptions FairRegionOptions::default_fair_flow_options() {
+  FlowOptions o;
+  o.tau = 1e-9;              // unit-diagonal units; the step control doubles it every acceptance
+  o.max_steps = 200;
+  // Patches start far from steady (a flattened cap: max|V| ~1e8 above the round-off floor) and
+  // their geometry has converged once max|V| has fallen by ~1e-9 (method.md §8.6 cap: max|r−1| within
+  // 2% of its final value).
+  o.steady_relative_tolerance = 1e-9;
+  return o;
+}
+
+FairRegionOptions FairRegionOptions::harmonic_started() {
+  FairRegionOptions o;
+  // One solve with the region's own cotangent operator: on a real surface that is the classical
+  // C2 fairing (CGAL's fair), and re-evaluating it drifts from the surface (docs/blend.md,
+  // "Region fairing"). Fill re-evaluates: its patch starts as a membrane (FillOptions).
+  o.harmonic_start_iterations = 1;
+  o.flow.tau = 1e-2;
+  o.harmonic_solver.ordering = o.flow.solver.ordering = FillOrdering::minimum_degree;
+  o.flow.step_kind = FlowStepKind::energy_descent;
+  o.flow.steady_energy_tolerance = 1e-5;
+  o.flow.step_control.max_consecutive_rejections = 30;
+  o.linear_floor = true;
+  o.held_out_rings = 2;
+  return o;
+}
+
+namespace {
+
+// Runs the flow on the submesh. With the linear floor (and a ∆^k start), a flow that throws or does
+// not settle leaves the ∆^k solution in place, reported linear; without it, a throw leaves the last
+// accepted state in the caller's mesh and propagates.
+void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& region, const FairRegionOptions& options,
+                         const FlowObserver& observer, FairRegionReport& report, Vertices& caller) {
+  FlowOptions flow = options.flow;
+  flow.kind = report.flow_kind = flow_for(region.supported);
+  const bool floor = options.linear_floor && options.harmonic_start_iterations > 0;
+  const Vertices start = floor ? sub.mesh.V : Vertices();
+  std::string failure;
+  try {
+    report.flow = run_flow(sub.mesh.V, sub.mesh.F, local, region, flow, observer);
+    if (report.flow.stop_reason != FlowStopReason::steady) failure = unsettled_reason(report.flow);
+  } catch (const NumericalError& e) {
+    if (const auto* failure = dynamic_cast<const flow_detail::FlowFailure*>(&e))
+      report.flow.well_posedness = failure->well_posedness;  // what the lost report held
+    if (!floor) {
+      write_back_free(sub, caller);  // the last accepted state: nothing is lost
+      throw;
+    }
+    failure = std::string("failed (") + e.what() + ")";
+  }
+  if (!floor || failure.empty()) return;
+  sub.mesh.V = start;
+  report.linear = true;
+  report.note = std::string("the ") + to_string(report.flow_kind) + " flow " + failure +
+                "; kept the linear ∆" + std::to_string(static_cast<int>(region.supported) + 1) +
+                " solution it started from";
+}
+
+// FairRegionOptions::held_out_rings: true (with the reason in report.note) where the linear ∆^k
+// solution re-predicts the held-out rings better than the flow.
+bool linear_predicts_better(const Submesh& sub, const Topology& local, const FairRegionOptions& options,
+                            FairRegionReport& report) {
+  if (options.method != FairMethod::flow || !options.linear_floor || options.held_out_rings <= 0 ||
+      options.harmonic_start_iterations <= 0)
+    return false;
+  const fair_detail::HeldOutErrors errors = fair_detail::held_out_errors(sub, local, options.held_out_rings, options);
+  report.held_out_flow_error = errors.flow;
+  report.held_out_linear_error = errors.linear;
+  if (!(errors.linear < errors.flow)) return false;
+  report.flow.well_posedness = errors.flow_well_posedness;  // the flow that was weighed, not run here
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "the linear ∆%d solution re-predicts the %d rings around the region better than the %s "
+                "flow (%.3g against %.3g mean edges off the input)",
+                static_cast<int>(report.supported) + 1, options.held_out_rings,
+                to_string(flow_for(report.supported)), errors.linear, errors.flow);
+  report.note = text;
+  return true;
+}
+
+// Whether the neighbourhood extract_neighbourhood would cut around `free_vertices` is all of `mesh`
+// (every face within reach, every vertex referenced or free), as for a mesh that already is one
+// (fill cuts the patch's): fairing then works on the mesh as it is, and its connectivity `topo` is
+// reused instead of built again for an identical copy.
+bool whole_neighbourhood(const Mesh& mesh, const Topology& topo, std::span<const int> free_vertices, int rings) {
+  const std::vector<int> dist = ring_distances(topo, free_vertices, rings);
+  std::vector<char> referenced(mesh.num_vertices(), 0);
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    bool reached = false;
+    for (int k = 0; k < 3; ++k) reached |= dist[mesh.F(f, k)] >= 0, referenced[mesh.F(f, k)] = 1;
+    if (!reached) return false;
+  }
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (!referenced[v] && dist[v] != 0) return false;
+  return true;
+}
+
+// What extract_neighbourhood returns when it keeps the whole mesh.
+Submesh whole_submesh(const Mesh& mesh, std::span<const int> free_vertices) {
+  Submesh sub;
+  sub.mesh.V = mesh.V;
+  sub.mesh.F = mesh.F;
+  sub.to_global.resize(mesh.num_vertices());
+  std::iota(sub.to_global.begin(), sub.to_global.end(), 0);
+  sub.free_local.assign(free_vertices.begin(), free_vertices.end());
+  std::sort(sub.free_local.begin(), sub.free_local.end());
+  sub.free_local.erase(std::unique(sub.free_local.begin(), sub.free_local.end()), sub.free_local.end());
+  return sub;
+}
+
+// The linear solve alone, or the flow from it (FairRegionOptions::harmonic_start_iterations).
+void fair_submesh(Submesh& sub, const Topology& local, const Region& region, const FairRegionOptions& options,
+                  const FlowObserver& observer, FairRegionReport& report, Vertices& caller) {
+  HarmonicOptions harmonic;
+  harmonic.order = static_cast<int>(region.supported) + 1;
+  harmonic.solver = options.harmonic_solver;
+  harmonic.iterations = std::max(1, options.harmonic_start_iterations);
+  harmonic.tolerance = options.harmonic_start_tolerance;
+  if (options.method == FairMethod::harmonic || linear_predicts_better(sub, local, options, report)) {
+    report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, local, region, harmonic);
+    report.linear = true;
+    return;
+  }
+  FairRegionOptions flow_options = options;
+  if (options.harmonic_start_iterations > 0) {
+    try {
+      report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, local, region, harmonic);
+    } catch (const NumericalError& e) {
+      // No linear solution to start from or to fall back to: flow from the given positions.
+      report.note = std::string("the ∆") + std::to_string(harmonic.order) + " start failed (" + e.what() +
+                    "): flowed from the given positions";
+      flow_options.harmonic_start_iterations = 0;
+    }
+  }
+  run_flow_with_floor(sub, local, region, flow_options, observer, report, caller);
+}
+
+}  // namespace
+
+namespace fair_detail {
+
+FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                 const FairRegionOptions& options, const FlowObserver& observer, bool measure,
+                                 bool* whole) {
+  const auto start = detail::Clock::now();
+  if (free_vertices.empty()) throw InvalidArgument("fair_region: the free region is empty");
+  const bool uncut = whole_neighbourhood(mesh, topo, free_vertices, options.submesh_rings);
+  if (whole) *whole = uncut;
+  Submesh sub = uncut ? whole_submesh(mesh, free_vertices)
+                      : extract_neighbourhood(mesh.V, mesh.F, topo, free_vertices, options.submesh_rings);
+  std::optional<Topology> cut;
+  if (!uncut) cut = build_topology(sub.mesh.F, sub.mesh.num_vertices());
+  const Topology& local = uncut ? topo : *cut;
+  const Region region = make_region(local, sub.free_local, options.continuity);
+
+  FairRegionReport report;
+  report.free_vertices = region.num_free();
+  report.requested = options.continuity;
+  report.supported = region.supported;
+  report.method = options.method;
+  fair_submesh(sub, local, region, options, observer, report, mesh.V);
+  write_back_free(sub, mesh.V);
+  if (measure) report.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, sub.free_local);
+  report.seconds = detail::seconds_since(start);
+  return report;
+}
+
+}  // namespace fair_detail
+
+FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
+                             const FairRegionOptions& options, const FlowObserver& observer) {
+  // validate builds the mesh's connectivity: kept, not built again.
+  const Topology topo = detail::validated_topology(mesh, Requirements{}, "fair_region");
+  return fair_detail::fair_valid_mesh(mesh, topo, free_vertices, options, observer);
+}
+
+FairRegionReport fair_region(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                             const FairRegionOptions& options, const FlowObserver& observer) {
+  require_valid(validate(mesh, topo), Requirements{}, "fair_region");
+  return fair_detail::fair_valid_mesh(mesh, topo, free_vertices, options, observer);
+}
+
+}  // namespace fairsurf

@@ -1,0 +1,450 @@
+#include <fairsurf/applications/fill.h>
+#include <fairsurf/geometry/continuity_measure.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/face_intersection.h>
+#include <fairsurf/mesh/mesh_attributes.h>
+#include <fairsurf/mesh/submesh.h>
+#include <fairsurf/mesh/topology.h>
+#include <fairsurf/mesh/validate.h>
+
+#include "held_out.h"
+#include "mesh/validated.h"
+#include "patch/border_pinches.h"
+#include "stopwatch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <unordered_map>
+
+namespace fairsurf {
+namespace {
+
+using detail::Clock;
+using detail::seconds_since;
+
+// Border edges at each vertex (#V).
+std::vector<int> border_edge_counts(const Topology& topo) {
+  std::vector<int> count(topo.num_vertices, 0);
+  for (int e = 0; e < topo.edges.rows(); ++e)
+    if (topo.is_boundary_edge(e)) ++count[topo.edges(e, 0)], ++count[topo.edges(e, 1)];
+  return count;
+}
+
+// The mesh requirements of filling: everything validate checks, except that a vertex may be
+// non-manifold where it pinches the border (more than two border edges): filling the holes through
+// it together makes it manifold (border_pinches.h), and a hole that cannot be is reported per hole.
+// Returns the mesh's connectivity, which validate built.
+Topology require_fillable(const Mesh& mesh) {
+  Topology topo;
+  ValidationReport report = detail::validate_keeping_topology(mesh, topo);
+  const bool well_formed = !report.no_faces && report.out_of_range_indices.count == 0 &&
+                           report.repeated_vertex_faces.count == 0 && report.nan_vertices.count == 0;
+  if (well_formed) {
+    const std::vector<int> border = border_edge_counts(topo);
+    Finding& vertices = report.non_manifold_vertices;
+    vertices.count -= static_cast<int>(std::count_if(border.begin(), border.end(), [](int c) { return c > 2; }));
+    std::erase_if(vertices.examples, [&](int v) { return border[v] > 2; });
+  }
+  require_valid(report, Requirements{}, "fill_holes");
+  return topo;
+}
+
+// The holes through each pinch of the border (a vertex with more than two border edges).
+std::unordered_map<int, std::vector<int>> holes_at_pinches(const std::vector<std::vector<int>>& loops,
+                                                           const std::vector<int>& border_edges) {
+  std::unordered_map<int, std::vector<int>> at;
+  for (int h = 0; h < static_cast<int>(loops.size()); ++h)
+    for (int v : loops[h])
+      if (border_edges[v] > 2 && (at[v].empty() || at[v].back() != h)) at[v].push_back(h);
+  return at;
+}
+
+// Why the loop cannot be filled, or "" if it can: at a pinch every loop through the vertex must be
+// filled with it, since only their patches together can join the vertex's fans into one
+// (border_pinches.h).
+std::string unfillable_border(int hole, const std::vector<std::vector<int>>& loops,
+                              const std::unordered_map<int, std::vector<int>>& pinches,
+                              const std::vector<char>& chosen) {
+  if (loops[hole].size() < 3) return "the loop has fewer than three edges";
+  for (int v : loops[hole]) {
+    const auto it = pinches.find(v);
+    if (it == pinches.end()) continue;
+    for (int other : it->second)
+      if (!chosen[other])
+        return "non-manifold border: vertex " + std::to_string(v) + " is also on hole " + std::to_string(other) +
+               ", which is not filled";
+  }
+  return "";
+}
+
+// Whether the 3-edge loop `loop` runs around a face of the mesh (a lone triangle, or a triangle
+// whose three edges are all on the border): its fill could only be that face again, reversed.
+bool around_a_face(const Faces& F, const Topology& topo, const std::vector<int>& loop) {
+  if (loop.size() != 3) return false;
+  for (int f : topo.vertex_faces.row(loop[0])) {
+    const auto corner = [&](int v) { return F(f, 0) == v || F(f, 1) == v || F(f, 2) == v; };
+    if (corner(loop[1]) && corner(loop[2])) return true;
+  }
+  return false;
+}
+
+// Marks the loops that are not to be filled as skipped, with the reason; returns the others.
+std::vector<int> select_holes(const Faces& F, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                              const FillOptions& options, std::vector<HoleReport>& reports) {
+  const int n = static_cast<int>(loops.size());
+  std::vector<char> selected(n, options.holes.empty() ? 1 : 0);
+  for (int i : options.holes) {
+    if (i < 0 || i >= n)
+      throw InvalidArgument("fill_holes: hole " + std::to_string(i) + " is outside [0, " + std::to_string(n) +
+                            ") (the mesh has " + std::to_string(n) + " boundary loops)");
+    selected[i] = 1;
+  }
+  for (int i = 0; i < n; ++i)
+    if (!selected[i]) reports[i].reason = "not selected";
+  if (options.skip_largest && n > 0) {
+    const auto largest = std::max_element(loops.begin(), loops.end(),
+                                          [](const auto& a, const auto& b) { return a.size() < b.size(); });
+    const int i = static_cast<int>(largest - loops.begin());
+    if (selected[i]) reports[i].reason = "the largest border, left open (skip largest)";
+    selected[i] = 0;
+  }
+  std::vector<int> chosen;
+  for (int i = 0; i < n; ++i) {
+    if (!selected[i]) continue;
+    if (options.max_hole_edges > 0 && reports[i].border_edges > options.max_hole_edges) {
+      reports[i].reason = std::to_string(reports[i].border_edges) + " border edges, more than the maximum " +
+                          std::to_string(options.max_hole_edges);
+      continue;
+    }
+    if (around_a_face(F, topo, loops[i])) {
+      reports[i].reason = "the loop runs around a lone triangle: filling it would add that face again, reversed";
+      continue;
+    }
+    chosen.push_back(i);
+  }
+  return chosen;
+}
+
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// Groups of holes whose fixed rings (the loop and `rings` − 1 rings around it) share a vertex,
+// each group ascending, the groups ordered by their first hole.
+std::vector<std::vector<int>> overlapping_groups(const Topology& topo, const std::vector<std::vector<int>>& loops,
+                                                 const std::vector<int>& holes, int rings) {
+  std::vector<int> parent(loops.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<int> owner(topo.num_vertices, -1);
+  for (int h : holes)
+    for (int v : k_ring(topo, loops[h], rings - 1)) {
+      if (owner[v] >= 0) parent[find_root(parent, h)] = find_root(parent, owner[v]);
+      owner[v] = h;
+    }
+  std::vector<std::vector<int>> groups;
+  std::vector<int> group_of(loops.size(), -1);
+  for (int h : holes) {
+    const int root = find_root(parent, h);
+    if (group_of[root] < 0) group_of[root] = static_cast<int>(groups.size()), groups.emplace_back();
+    groups[group_of[root]].push_back(h);
+  }
+  return groups;
+}
+
+// The hole each new vertex and face of `patch` belongs to. Patches of different loops share no
+// edge (at a pinch they share the vertex only), so the new faces fall into one edge-connected piece
+// per patch, found from the face across each loop edge.
+struct PatchOwnership {
+  std::vector<int> vertex_hole;  ///< per new vertex (index − first new vertex)
+  std::vector<int> face_hole;    ///< per new face
+};
+
+PatchOwnership patch_ownership(const InitialPatch& patch, int input_vertices,
+                               const std::vector<std::vector<int>>& loops, std::span<const int> holes) {
+  const Faces& F = patch.mesh.F;
+  const int first = patch.first_patch_face, count = static_cast<int>(F.rows()) - first;
+  const auto key = [](int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  };
+  std::unordered_map<std::uint64_t, int> face_of;  // directed patch edge -> patch face (− first)
+  for (int f = 0; f < count; ++f)
+    for (int k = 0; k < 3; ++k) face_of[key(F(first + f, k), F(first + f, (k + 1) % 3))] = f;
+  std::vector<int> parent(count);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& [edge, f] : face_of) {
+    const auto twin = face_of.find((edge << 32) | (edge >> 32));
+    if (twin != face_of.end()) parent[find_root(parent, f)] = find_root(parent, twin->second);
+  }
+  std::vector<int> hole_of_root(count, -1);
+  for (int h : holes)
+    for (std::size_t t = 0; t < loops[h].size(); ++t) {
+      const auto across = face_of.find(key(loops[h][(t + 1) % loops[h].size()], loops[h][t]));
+      if (across != face_of.end()) hole_of_root[find_root(parent, across->second)] = h;
+    }
+  PatchOwnership own;
+  own.vertex_hole.assign(patch.mesh.num_vertices() - input_vertices, -1);
+  for (int f = 0; f < count; ++f) {
+    own.face_hole.push_back(hole_of_root[find_root(parent, f)]);
+    for (int k = 0; k < 3; ++k)
+      if (F(first + f, k) >= input_vertices) own.vertex_hole[F(first + f, k) - input_vertices] = own.face_hole.back();
+  }
+  return own;
+}
+
+// Local indices in `sub` of the global vertices `global` (all in the submesh).
+std::vector<int> to_local(const Submesh& sub, const std::vector<int>& global) {
+  std::vector<int> local;
+  for (int v : global)
+    local.push_back(static_cast<int>(std::lower_bound(sub.to_global.begin(), sub.to_global.end(), v) -
+                                     sub.to_global.begin()));
+  return local;
+}
+
+// `F` and `topo`: the patched mesh. When the first crossing is with another connected part of the
+// mesh (two parts whose openings face each other, as in data/cgal_blobby_3cc.off), the reason says
+// that a blend, not a fill, is what joins them.
+std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int input_faces, const Faces& F,
+                            const Topology& topo) {
+  const FaceIntersection& c = crossings.front();
+  const bool other_new = c.other_face >= input_faces;
+  std::string reason = "the faired patch crosses the mesh: new face " + std::to_string(c.query_face) + " crosses " +
+                       (other_new ? "new" : "input") + " face " + std::to_string(c.other_face) + " (" +
+                       std::to_string(crossings.size()) + (crossings.size() >= 10 ? "+" : "") + " crossing" +
+                       (crossings.size() == 1 ? "" : "s") + ")";
+  const Components parts = connected_components(F, topo);
+  if (parts.face_component[c.query_face] != parts.face_component[c.other_face])
+    reason += ", a face of another part of the mesh: openings that face each other are joined by blend";
+  return reason;
+}
+
+// Fairs the patch's free vertices on their neighbourhood only (fair_region would cut out the same
+// rings): the cost of checking the mesh stays in proportion to the hole, and a defect far away (a
+// pinched border elsewhere) does not concern this hole. `whole`: fair_valid_mesh's, on `sub`.
+FairRegionReport fair_patch(InitialPatch& patch, const FillOptions& options, const FairRegionOptions& fairing_options,
+                            const FlowObserver& step_observer, Submesh& sub, bool& whole) {
+  FairRegionReport fairing;
+  fairing.requested = fairing.supported = fairing_options.continuity;
+  fairing.method = fairing_options.method;
+  whole = false;
+  if (patch.free_vertices.empty()) return fairing;
+  sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, patch.topology, patch.free_vertices,
+                              options.fairing.submesh_rings);
+  // The neighbourhood's connectivity, built once: validation, fairing and its held-out trials read it.
+  const Topology local = build_topology(sub.mesh.F, sub.mesh.num_vertices());
+  require_valid(validate(sub.mesh, local), Requirements{}, "fair_region");
+  fairing = fair_detail::fair_valid_mesh(sub.mesh, local, sub.free_local, fairing_options, step_observer, true, &whole);
+  return fairing;
+}
+
+// What the group's fairing did, in the report of one of its holes (`flowed`: the flow's result).
+void report_fairing(const FairRegionReport& fairing, bool flowed, HoleReport& r) {
+  r.supported = fairing.supported;
+  r.linear = fairing.linear;
+  if (fairing.supported < fairing.requested)
+    r.note = "the mesh around the hole has fewer than " + std::to_string(rings_needed(fairing.requested)) +
+             " complete rings: faired with " + std::string(to_string(fairing.supported));
+  if (!fairing.note.empty()) r.note += (r.note.empty() ? "" : "; ") + fairing.note;
+  r.held_out_flow_error = fairing.held_out_flow_error;
+  r.held_out_linear_error = fairing.held_out_linear_error;
+  r.steps = flowed ? fairing.flow.accepted_steps : 0;
+  r.harmonic_solves = fairing.harmonic.iterations;
+  r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();
+  if (fairing.method == FairMethod::flow) r.well_posedness = fairing.flow.well_posedness;
+}
+
+// Fills the holes `group` jointly on `mesh` (`topo`: its connectivity); on success replaces mesh,
+// moves the filled mesh's connectivity into `filled` (after the last use of `topo`, which may be
+// the old value) and fills the reports; on failure throws (mesh untouched) or returns the reason
+// the patch was rejected. `patch_loops` are the group's loops as they are triangulated (relinked at
+// pinches).
+std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                       const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
+                       const FillOptions& options, const FairRegionOptions& fairing_options,
+                       const FillObserver& observer, std::vector<HoleReport>& reports,
+                       std::optional<Topology>& filled) {
+  InitialPatch patch = hole_patch(mesh, topo, patch_loops, options.patch);
+  const std::string non_manifold = detail::patch_non_manifold(patch.mesh.F, patch.topology, patch.first_patch_face);
+  if (!non_manifold.empty()) return non_manifold;
+
+  Submesh sub;
+  bool whole = false;
+  const FlowObserver step_observer = [&](const StepRecord& r) {
+    if (observer) observer(group, r);
+  };
+  const FairRegionReport fairing = fair_patch(patch, options, fairing_options, step_observer, sub, whole);
+  if (!patch.free_vertices.empty()) {
+    const FlowReport& flow = fairing.flow;
+    if (!fairing.linear && flow.stop_reason != FlowStopReason::steady)
+      return std::string("the ") + to_string(fairing.flow_kind) + " flow " + unsettled_reason(flow);
+    write_back_free(sub, patch.mesh.V);
+  }
+
+  std::vector<int> new_faces(patch.mesh.num_faces() - patch.first_patch_face);
+  std::iota(new_faces.begin(), new_faces.end(), patch.first_patch_face);
+  if (options.check_intersections) {
+    const auto crossings = find_face_intersections(patch.mesh.V, patch.mesh.F, new_faces, 10);
+    if (!crossings.empty()) return crossing_reason(crossings, mesh.num_faces(), patch.mesh.F, patch.topology);
+  }
+
+  const PatchOwnership own = patch_ownership(patch, mesh.num_vertices(), loops, group);
+  const bool flowed = !fairing.linear && !patch.free_vertices.empty();
+  for (int h : group) {
+    HoleReport& r = reports[h];
+    std::vector<int> free;
+    for (std::size_t i = 0; i < own.vertex_hole.size(); ++i)
+      if (own.vertex_hole[i] == h) free.push_back(mesh.num_vertices() + static_cast<int>(i));
+    r.vertices_added = static_cast<int>(free.size());
+    r.faces_added = static_cast<int>(std::count(own.face_hole.begin(), own.face_hole.end(), h));
+    report_fairing(fairing, flowed, r);
+    if (!free.empty()) {
+      // The fairing measured the same positions, faces and free set when it ran on `sub` itself
+      // (as for a group of one hole): not measured twice.
+      const std::vector<int> local = to_local(sub, free);
+      r.continuity = whole && local == sub.free_local ? fairing.continuity
+                                                      : measure_continuity(sub.mesh.V, sub.mesh.F, local);
+    }
+    if (free.empty()) {  // nothing was faired: the patch is the triangulation of the loop
+      r.supported = Continuity::G0;
+      r.linear = true;
+      r.steps = 0;
+      r.note = "the patch has no interior vertex: the loop's triangulation alone, continuous in position only";
+    }
+  }
+  mesh.V = std::move(patch.mesh.V);
+  mesh.F = std::move(patch.mesh.F);
+  mesh.vertex_scalars.clear();
+  mesh.vertex_colors.resize(0, 3);
+  pad_face_attributes(mesh);  // the input's faces keep theirs; the patch's have none
+  filled = std::move(patch.topology);  // `topo` is not read after this
+  return "";
+}
+
+void mark(std::vector<HoleReport>& reports, const std::vector<int>& group, HoleStatus status,
+          const std::string& reason) {
+  for (int h : group) {
+    reports[h].status = status;
+    reports[h].reason = reason;
+  }
+}
+
+// One report per boundary loop, before anything is tried.
+std::vector<HoleReport> hole_reports(const std::vector<std::vector<int>>& loops, const FillOptions& options) {
+  std::vector<HoleReport> reports;
+  for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
+    HoleReport r;
+    r.index = i;
+    r.border_edges = static_cast<int>(loops[i].size());
+    r.requested = r.supported = options.fairing.continuity;
+    reports.push_back(r);
+  }
+  return reports;
+}
+
+// The selected holes (select_holes) that can be filled; the others are marked failed, with the reason.
+std::vector<int> fillable_holes(const Faces& F, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                                const FillOptions& options, std::vector<HoleReport>& reports) {
+  const std::vector<int> border_edges = border_edge_counts(topo);
+  const std::vector<int> chosen = select_holes(F, topo, loops, options, reports);
+  std::vector<char> is_chosen(loops.size(), 0);
+  for (int h : chosen) is_chosen[h] = 1;
+  const auto pinches = holes_at_pinches(loops, border_edges);
+  std::vector<int> fillable;
+  for (int h : chosen) {
+    const std::string bad = unfillable_border(h, loops, pinches, is_chosen);
+    if (bad.empty())
+      fillable.push_back(h);
+    else
+      mark(reports, {h}, HoleStatus::failed, bad);
+  }
+  return fillable;
+}
+
+}  // namespace
+
+const char* to_string(HoleStatus status) {
+  switch (status) {
+    case HoleStatus::filled: return "filled";
+    case HoleStatus::skipped: return "skipped";
+    case HoleStatus::failed: return "failed";
+  }
+  return "unknown";
+}
+
+FairRegionOptions FillOptions::default_fairing() {
+  // A patch starts as a membrane, not a surface estimate: its own operator carries the membrane's
+  // kink along the border, so ∆^k is re-evaluated until it settles (fair_region.h).
+  FairRegionOptions o = FairRegionOptions::harmonic_started();
+  o.harmonic_start_iterations = 8;
+  return o;
+}
+
+FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver& observer) {
+  const auto start = Clock::now();
+  if (options.max_hole_edges < 0)
+    throw InvalidArgument("fill_holes: max_hole_edges must be >= 0, got " + std::to_string(options.max_hole_edges));
+  const Topology topo = require_fillable(mesh);
+  FillReport report;
+  report.input_vertices = mesh.num_vertices();
+  report.input_faces = mesh.num_faces();
+  // The connectivity of the mesh once groups are filled into it: the next group's patch reads it.
+  // The loops, groups and pinches stay those of the input (`topo`).
+  std::optional<Topology> filled;
+  const auto loops = boundary_loops(mesh.F, topo);
+  report.holes = hole_reports(loops, options);
+
+  const std::vector<int> fillable = fillable_holes(mesh.F, topo, loops, options, report.holes);
+  const int rings = rings_needed(options.fairing.continuity);
+  for (const auto& group : overlapping_groups(topo, loops, fillable, rings)) {
+    std::vector<std::vector<int>> patch_loops;
+    for (int h : group) patch_loops.push_back(loops[h]);
+    try {
+      patch_loops = detail::relink_pinched_loops(mesh.V, mesh.F, topo, patch_loops);
+    } catch (const Error& e) {
+      mark(report.holes, group, HoleStatus::failed, e.what());
+      continue;
+    }
+    for (int h : group)
+      for (int other : group)
+        if (other != h) report.holes[h].filled_with.push_back(other);
+    const auto group_start = Clock::now();
+    // Try the requested fairing, then (with fallback_on_failure) the linear ∆^k solutions from the
+    // requested continuity down: never a flow the user did not ask for.
+    FairRegionOptions fairing = options.fairing;
+    std::string reason, first_failure;
+    for (;;) {
+      try {
+        reason = fill_group(mesh, filled ? *filled : topo, loops, group, patch_loops, options, fairing, observer,
+                            report.holes, filled);
+      } catch (const Error& e) {
+        reason = e.what();
+      }
+      if (reason.empty() || !options.fallback_on_failure) break;
+      if (fairing.method == FairMethod::harmonic && fairing.continuity == Continuity::G0) break;
+      if (first_failure.empty()) first_failure = reason;
+      if (fairing.method == FairMethod::harmonic)
+        fairing.continuity = static_cast<Continuity>(static_cast<int>(fairing.continuity) - 1);
+      fairing.method = FairMethod::harmonic;
+    }
+    mark(report.holes, group, reason.empty() ? HoleStatus::filled : HoleStatus::failed, reason);
+    if (reason.empty() && !first_failure.empty())
+      for (int h : group)
+        report.holes[h].note = "the " + std::string(to_string(options.fairing.continuity)) + " fill failed (" +
+                               first_failure + "); filled with " +
+                               delivered_label(fairing.continuity, report.holes[h].linear);
+    for (int h : group) report.holes[h].seconds = seconds_since(group_start);
+  }
+  for (const auto& r : report.holes) {
+    report.filled += r.status == HoleStatus::filled;
+    report.skipped += r.status == HoleStatus::skipped;
+    report.failed += r.status == HoleStatus::failed;
+  }
+  report.seconds = seconds_since(start);
+  return report;
+}
+
+}  // namespace fairsurf

@@ -1,0 +1,83 @@
+#include "held_out.h"
+
+#include "flow/flow_failure.h"
+
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/topology.h>
+#include <fairsurf/mesh/validate.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace fairsurf::fair_detail {
+namespace {
+
+// #V area-weighted vertex normals (unit; zero where undefined).
+Vertices vertex_normals(const Vertices& V, const Faces& F) {
+  Vertices normal = Vertices::Zero(V.rows(), 3);
+  for (int f = 0; f < F.rows(); ++f) {
+    const Eigen::RowVector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+    const Eigen::RowVector3d area_normal = (b - a).cross(c - a);
+    for (int k = 0; k < 3; ++k) normal.row(F(f, k)) += area_normal;
+  }
+  for (int v = 0; v < V.rows(); ++v)
+    if (const double length = normal.row(v).norm(); length > 0) normal.row(v) /= length;
+  return normal;
+}
+
+// Mean length of the edges at each of `vertices`.
+double mean_edge_length(const Vertices& V, const Topology& topo, const std::vector<int>& vertices) {
+  double sum = 0;
+  int count = 0;
+  for (int v : vertices)
+    for (int w : topo.vertex_vertices.row(v)) sum += (V.row(v) - V.row(w)).norm(), ++count;
+  return count > 0 ? sum / count : 1.0;
+}
+
+// Mean |(x − x0)·n0| over `held_out` after fairing the region `free` of a copy of `mesh`.
+// `topo`: the connectivity of `mesh`, shared by the trial copy (only positions change).
+double held_out_error(const Mesh& mesh, const Topology& topo, const std::vector<int>& free,
+                      const std::vector<int>& held_out, const Vertices& normal, double edge,
+                      const FairRegionOptions& fairing, WellPosedness* well_posedness = nullptr) {
+  Mesh trial = mesh;
+  try {
+    // As fair_region(trial, free, fairing), without rebuilding the connectivity or measuring the
+    // continuity of a result that is discarded.
+    require_valid(validate(trial, topo), Requirements{}, "fair_region");
+    const FairRegionReport report = fair_valid_mesh(trial, topo, free, fairing, {}, false);
+    if (well_posedness) *well_posedness = report.flow.well_posedness;
+    if (fairing.method == FairMethod::flow && report.linear) return std::numeric_limits<double>::infinity();
+  } catch (const Error& e) {
+    if (const auto* failure = dynamic_cast<const flow_detail::FlowFailure*>(&e); failure && well_posedness)
+      *well_posedness = failure->well_posedness;
+    return std::numeric_limits<double>::infinity();
+  }
+  double sum = 0;
+  for (int v : held_out) sum += std::abs((trial.V.row(v) - mesh.V.row(v)).dot(normal.row(v)));
+  return sum / static_cast<double>(held_out.size()) / edge;
+}
+
+}  // namespace
+
+HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int rings, const FairRegionOptions& fairing) {
+  const std::vector<int> free = k_ring(topo, sub.free_local, rings);
+  std::vector<int> held_out;
+  std::set_difference(free.begin(), free.end(), sub.free_local.begin(), sub.free_local.end(),
+                      std::back_inserter(held_out));
+  HeldOutErrors errors;
+  if (held_out.empty()) return errors;
+  const Vertices normal = vertex_normals(sub.mesh.V, sub.mesh.F);
+  const double edge = mean_edge_length(sub.mesh.V, topo, held_out);
+  FairRegionOptions flow = fairing;
+  flow.held_out_rings = 0;
+  FairRegionOptions linear = flow;
+  linear.method = FairMethod::harmonic;
+  errors.flow = held_out_error(sub.mesh, topo, free, held_out, normal, edge, flow, &errors.flow_well_posedness);
+  errors.linear = held_out_error(sub.mesh, topo, free, held_out, normal, edge, linear);
+  return errors;
+}
+
+}  // namespace fairsurf::fair_detail

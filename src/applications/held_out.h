@@ -1,0 +1,35 @@
+// Private to fair_region: choosing between the flow and its linear floor by how well each
+// re-predicts the input around the free region (FairRegionOptions::held_out_rings; docs/fill.md,
+// "Which fairing a hole gets").
+#pragma once
+
+#include <fairsurf/applications/fair_region.h>
+#include <fairsurf/mesh/submesh.h>
+
+namespace fairsurf::fair_detail {
+
+/// Mean normal distance of the held-out input vertices from where each fairing puts them, in units
+/// of the mean edge length at those vertices. ∞ when that fairing failed.
+struct HeldOutErrors {
+  double flow = 0;
+  double linear = 0;
+  /// Of the flow's trial on the enlarged region (its report's, or its error's when the flow threw).
+  WellPosedness flow_well_posedness;
+};
+
+/// Frees the `rings` rings of fixed vertices around the free vertices in a copy of `sub`, fairs that
+/// larger region with `fairing` (the flow with its linear floor; held_out_rings ignored) and with its
+/// linear ∆^k solution alone, and measures how far each moved the held-out vertices off the input's
+/// tangent planes there.
+/// `local`: the connectivity of sub.mesh.
+HeldOutErrors held_out_errors(const Submesh& sub, const Topology& local, int rings, const FairRegionOptions& fairing);
+
+/// fair_region on a mesh that has passed its validation, with `topo` the connectivity of mesh.F.
+/// `measure`: measure report.continuity (a trial whose report is discarded skips it). `whole`, if
+/// given, receives whether the neighbourhood of the free region was all of `mesh`: then fairing
+/// ran on the mesh itself and report.continuity is measure_continuity(mesh.V, mesh.F, free set).
+FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                 const FairRegionOptions& options, const FlowObserver& observer = {},
+                                 bool measure = true, bool* whole = nullptr);
+
+}  // namespace fairsurf::fair_detail

@@ -1,0 +1,123 @@
+#include <fairsurf/applications/repair.h>
+#include <fairsurf/mesh/mesh_attributes.h>
+
+#include "repair_internal.h"
+
+namespace fairsurf {
+namespace {
+
+using repair_detail::Tri;
+using repair_detail::Work;
+
+Work load(const Mesh& mesh) {
+  Work work{mesh.V, std::vector<int>(mesh.num_vertices()), std::vector<Tri>(mesh.num_faces())};
+  for (int v = 0; v < mesh.num_vertices(); ++v) work.origin[v] = v;
+  for (int f = 0; f < mesh.num_faces(); ++f) work.faces[f] = {mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)};
+  return work;
+}
+
+// Writes the working state back: kept vertices in working order (originals in input order, then
+// copies), their attributes following them.
+void store(const Work& work, bool remove_unreferenced, Mesh& mesh, RepairReport& report) {
+  const int n = work.num_vertices();
+  std::vector<char> keep(n, 0);
+  for (const Tri& f : work.faces)
+    for (int v : f) keep[v] = 1;
+  if (!remove_unreferenced)
+    for (int v = 0; v < mesh.num_vertices(); ++v) keep[v] = 1;
+  std::vector<int> index(n, -1), source;
+  for (int v = 0; v < n; ++v)
+    if (keep[v]) index[v] = static_cast<int>(source.size()), source.push_back(work.origin[v]);
+  const int kept = static_cast<int>(source.size());
+  report.unreferenced_vertices_removed = n - kept;
+
+  Mesh out;
+  out.V.resize(kept, 3);
+  for (int i = 0; i < kept; ++i) out.V.row(i) = mesh.V.row(source[i]);
+  out.F.resize(static_cast<Eigen::Index>(work.faces.size()), 3);
+  for (std::size_t f = 0; f < work.faces.size(); ++f)
+    for (int k = 0; k < 3; ++k) out.F(static_cast<Eigen::Index>(f), k) = index[work.faces[f][k]];
+  for (const auto& [name, values] : mesh.vertex_scalars) {
+    if (values.size() != mesh.num_vertices()) continue;  // not a per-vertex scalar: cannot follow
+    Eigen::VectorXd moved(kept);
+    for (int i = 0; i < kept; ++i) moved[i] = values[source[i]];
+    out.vertex_scalars[name] = std::move(moved);
+  }
+  if (mesh.vertex_colors.rows() == mesh.num_vertices() && mesh.num_vertices() > 0) {
+    out.vertex_colors.resize(kept, 3);
+    for (int i = 0; i < kept; ++i) out.vertex_colors.row(i) = mesh.vertex_colors.row(source[i]);
+  }
+  carry_face_attributes(mesh, source, out);
+  mesh = std::move(out);
+}
+
+int change_count(const RepairReport& r) {
+  return r.invalid_faces_removed + r.vertices_merged + r.border_vertices_stitched + r.faces_collapsed +
+         r.duplicate_faces_removed + r.needles_collapsed + r.caps_flipped + r.caps_removed +
+         r.non_manifold_edges + r.vertices_split + r.vertices_added + r.faces_flipped +
+         r.small_components_removed + r.unreferenced_vertices_removed;
+}
+
+// Merging, then removing what merging collapsed or doubled.
+void merge_round(Work& work, const RepairOptions& options, RepairReport& report) {
+  using namespace repair_detail;
+  const int before = report.vertices_merged + report.border_vertices_stitched;
+  if (options.merge_duplicate_vertices) merge_vertices(work, options, report);
+  // Exact merging has already joined every coincident border vertex it could.
+  if (options.stitch_borders && (options.stitch_tolerance > 0 || !options.merge_duplicate_vertices))
+    stitch_borders(work, options, report);
+  if (report.vertices_merged + report.border_vertices_stitched == before) return;  // faces unchanged
+  remove_collapsed_faces(work, report);
+  if (options.remove_duplicate_faces) remove_duplicate_faces(work, report);
+}
+
+// One round of everything after the first merge. Each operation can enable another (a cap on a
+// non-manifold edge flips once the edge is resolved; a merge refused beside a needle is accepted
+// once the needle is gone), so rounds repeat until one changes nothing: the result is then a fixed
+// point of every operation, and a second repair is idle.
+void repair_round(Work& work, const RepairOptions& options, RepairReport& report) {
+  using namespace repair_detail;
+  const int before = change_count(report);
+  if (options.fix_degenerate_faces) {
+    fix_degenerate_faces(work, options, report);
+    if (options.remove_duplicate_faces && change_count(report) > before) remove_duplicate_faces(work, report);
+  }
+  Adjacency unsplit;  // the adjacency split_non_manifold built, when it changed nothing
+  split_non_manifold(work, options, report, &unsplit);
+  if (options.remove_small_components) remove_small_components(work, options.min_component_faces, report);
+  const bool changed = change_count(report) > before;
+  if (changed) merge_round(work, options, report);  // else merged already
+  if (options.orient) orient_faces(work, report, changed || unsplit.vertex_offsets.empty() ? nullptr : &unsplit);
+}
+
+}  // namespace
+
+bool RepairReport::changed() const {
+  return change_count(*this) > 0;
+}
+
+RepairReport repair(Mesh& mesh, const RepairOptions& options) {
+  using namespace repair_detail;
+  RepairReport report;
+  report.input_vertices = mesh.num_vertices();
+  report.input_faces = mesh.num_faces();
+  Work work = load(mesh);
+
+  remove_invalid_faces(work, report);
+  // Repeated faces first, so that they cannot veto a merge (an edge they double looks non-manifold).
+  if (options.remove_duplicate_faces) remove_duplicate_faces(work, report);
+  merge_round(work, options, report);
+  constexpr int kMaxRounds = 8;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    const int before = change_count(report);
+    repair_round(work, options, report);
+    if (change_count(report) == before) break;
+  }
+
+  store(work, options.remove_unreferenced_vertices, mesh, report);
+  report.output_vertices = mesh.num_vertices();
+  report.output_faces = mesh.num_faces();
+  return report;
+}
+
+}  // namespace fairsurf

@@ -1,0 +1,150 @@
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/face_intersection.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace fairsurf {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+constexpr double kRelativeTolerance = 1e-12;
+
+Vec3 corner(const Vertices& V, const Faces& F, int f, int k) { return V.row(F(f, k)).transpose(); }
+
+bool faces_share_vertex(const Faces& F, int f, int g) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (F(f, i) == F(g, j)) return true;
+  return false;
+}
+
+struct Box {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -Vec3::Constant(std::numeric_limits<double>::infinity());
+  void add(const Vec3& p) { lo = lo.cwiseMin(p), hi = hi.cwiseMax(p); }
+  bool meets(const Box& o) const { return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all(); }
+};
+
+Box face_box(const Vertices& V, const Faces& F, int f) {
+  Box b;
+  for (int k = 0; k < 3; ++k) b.add(corner(V, F, f, k));
+  return b;
+}
+
+// A uniform grid of face bounding boxes over `region`.
+class FaceGrid {
+ public:
+  FaceGrid(const Box& region, double cell) : origin_(region.lo) {
+    const Vec3 extent = region.hi - region.lo;
+    // Cap the cell count at about 2^21 so that a tiny cell on a large region stays affordable.
+    const double volume_cells = (extent / cell).array().max(1.0).prod();
+    if (volume_cells > 2e6) cell *= std::cbrt(volume_cells / 2e6);
+    cell_ = cell;
+    for (int d = 0; d < 3; ++d) dims_[d] = std::max(1, static_cast<int>(std::ceil(extent[d] / cell)) + 1);
+    cells_.resize(static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2]);
+  }
+
+  template <class Visit>
+  void for_cells(const Box& b, Visit&& visit) const {
+    std::array<int, 3> lo{}, hi{};
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = std::clamp(static_cast<int>(std::floor((b.lo[d] - origin_[d]) / cell_)), 0, dims_[d] - 1);
+      hi[d] = std::clamp(static_cast<int>(std::floor((b.hi[d] - origin_[d]) / cell_)), 0, dims_[d] - 1);
+    }
+    for (int z = lo[2]; z <= hi[2]; ++z)
+      for (int y = lo[1]; y <= hi[1]; ++y)
+        for (int x = lo[0]; x <= hi[0]; ++x)
+          visit((static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0] + x);
+  }
+
+  void insert(int face, const Box& b) {
+    for_cells(b, [&](std::size_t c) { cells_[c].push_back(face); });
+  }
+  const std::vector<int>& cell(std::size_t c) const { return cells_[c]; }
+
+ private:
+  Vec3 origin_;
+  double cell_ = 1;
+  std::array<int, 3> dims_{};
+  std::vector<std::vector<int>> cells_;
+};
+
+}  // namespace
+
+bool segment_crosses_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = (b - a).cross(c - a);
+  const double n2 = n.squaredNorm();
+  if (!(n2 > 0)) return false;
+  const double scale = std::max({(b - a).norm(), (c - a).norm(), (q - p).norm()});
+  const double tolerance = kRelativeTolerance * scale * std::sqrt(n2);
+  const double dp = n.dot(p - a), dq = n.dot(q - a);
+  if (!((dp > tolerance && dq < -tolerance) || (dp < -tolerance && dq > tolerance))) return false;
+  const Vec3 x = p + (dp / (dp - dq)) * (q - p);
+  // Barycentric coordinates of x: each must be strictly positive.
+  const double la = n.dot((c - b).cross(x - b)) / n2;
+  const double lb = n.dot((a - c).cross(x - c)) / n2;
+  const double lc = 1.0 - la - lb;
+  return la > kRelativeTolerance && lb > kRelativeTolerance && lc > kRelativeTolerance;
+}
+
+bool triangles_cross(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0, const Vec3& b1,
+                     const Vec3& b2) {
+  return segment_crosses_triangle(a0, a1, b0, b1, b2) || segment_crosses_triangle(a1, a2, b0, b1, b2) ||
+         segment_crosses_triangle(a2, a0, b0, b1, b2) || segment_crosses_triangle(b0, b1, a0, a1, a2) ||
+         segment_crosses_triangle(b1, b2, a0, a1, a2) || segment_crosses_triangle(b2, b0, a0, a1, a2);
+}
+
+std::vector<FaceIntersection> find_face_intersections(const Vertices& V, const Faces& F,
+                                                      std::span<const int> query_faces, int max_results) {
+  std::vector<FaceIntersection> found;
+  if (query_faces.empty()) return found;
+  std::vector<char> is_query(F.rows(), 0);
+  Box region;
+  double edge_total = 0;
+  for (int f : query_faces) {
+    if (f < 0 || f >= F.rows())
+      throw InvalidArgument("find_face_intersections: face " + std::to_string(f) + " is outside [0, " +
+                            std::to_string(F.rows()) + ")");
+    is_query[f] = 1;
+    const Box b = face_box(V, F, f);
+    region.add(b.lo), region.add(b.hi);
+    for (int k = 0; k < 3; ++k) edge_total += (corner(V, F, f, k) - corner(V, F, f, (k + 1) % 3)).norm();
+  }
+  const double cell = std::max(edge_total / (3.0 * query_faces.size()), 1e-12 * (region.hi - region.lo).norm());
+  FaceGrid grid(region, cell > 0 ? cell : 1.0);
+  std::vector<Box> boxes(F.rows());
+  for (int f = 0; f < F.rows(); ++f) {
+    boxes[f] = face_box(V, F, f);
+    if (boxes[f].meets(region)) grid.insert(f, boxes[f]);
+  }
+
+  std::vector<int> seen(F.rows(), -1);
+  for (int f : query_faces) {
+    std::vector<int> crossed;
+    grid.for_cells(boxes[f], [&](std::size_t c) {
+      for (int g : grid.cell(c)) {
+        if (g == f || seen[g] == f) continue;
+        seen[g] = f;
+        if (is_query[g] && g < f) continue;  // that pair was tested from g's side
+        if (!boxes[f].meets(boxes[g]) || faces_share_vertex(F, f, g)) continue;
+        if (triangles_cross(corner(V, F, f, 0), corner(V, F, f, 1), corner(V, F, f, 2),
+                            corner(V, F, g, 0), corner(V, F, g, 1), corner(V, F, g, 2)))
+          crossed.push_back(g);
+      }
+    });
+    std::sort(crossed.begin(), crossed.end());
+    for (int g : crossed) {
+      found.push_back({f, g});
+      if (max_results > 0 && static_cast<int>(found.size()) >= max_results) return found;
+    }
+  }
+  return found;
+}
+
+}  // namespace fairsurf

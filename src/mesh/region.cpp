@@ -1,0 +1,42 @@
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/region.h>
+
+#include <algorithm>
+
+namespace fairsurf {
+
+Region make_region(const Topology& topo, std::span<const int> free_vertices, Continuity requested) {
+  if (free_vertices.empty()) throw InvalidArgument("make_region: the free set is empty");
+  Region r;
+  r.requested = requested;
+  r.ring = ring_distances(topo, free_vertices, 3);  // validates the indices
+  r.free_index.assign(topo.num_vertices, -1);
+  for (int v = 0; v < topo.num_vertices; ++v)
+    if (r.ring[v] == 0) {
+      r.free_index[v] = static_cast<int>(r.free_vertices.size());
+      r.free_vertices.push_back(v);
+    }
+
+  // The first ring (0 = the free set itself) that reaches the mesh border bounds the rings of data.
+  const auto border = boundary_vertex_flags(topo);
+  r.complete_rings = 3;
+  for (int v = 0; v < topo.num_vertices; ++v)
+    if (border[v] && r.ring[v] >= 0) r.complete_rings = std::min(r.complete_rings, r.ring[v]);
+  const int supported = std::max(0, r.complete_rings - 1);
+  r.supported = static_cast<Continuity>(std::min(static_cast<int>(requested), supported));
+  return r;
+}
+
+std::vector<int> interior_vertices(const Topology& topo, int fixed_rings) {
+  const auto border = boundary_vertex_flags(topo);
+  std::vector<int> seeds;
+  for (int v = 0; v < topo.num_vertices; ++v)
+    if (border[v]) seeds.push_back(v);
+  const auto dist = ring_distances(topo, seeds, std::max(0, fixed_rings - 1));
+  std::vector<int> interior;
+  for (int v = 0; v < topo.num_vertices; ++v)
+    if (fixed_rings <= 0 || dist[v] < 0) interior.push_back(v);
+  return interior;
+}
+
+}  // namespace fairsurf

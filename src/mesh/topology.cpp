@@ -1,0 +1,273 @@
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/topology.h>
+
+#include "parallel.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <atomic>
+#include <numeric>
+#include <string>
+
+namespace fairsurf {
+namespace {
+
+std::atomic<std::uint64_t> builds{0};  // topology_builds(); relaxed: a count, not a synchronization
+
+// Counting-sort construction of vertex -> incident faces; rows come out in ascending face order.
+Csr build_vertex_faces(const Faces& F, int num_vertices) {
+  Csr vf;
+  vf.offsets.assign(num_vertices + 1, 0);
+  for (int f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) ++vf.offsets[F(f, k) + 1];
+  std::partial_sum(vf.offsets.begin(), vf.offsets.end(), vf.offsets.begin());
+  vf.indices.resize(vf.offsets.back());
+  std::vector<int> fill(vf.offsets.begin(), vf.offsets.end() - 1);
+  for (int f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) vf.indices[fill[F(f, k)]++] = f;
+  return vf;
+}
+
+// Neighbours of each vertex from its incident faces, sorted and deduplicated in place.
+Csr build_vertex_vertices(const Faces& F, const Csr& vf) {
+  const int n = vf.rows();
+  Csr vv;
+  vv.offsets.assign(n + 1, 0);
+  std::vector<int> scratch;
+  // First pass collects each row into a scratch buffer to count distinct neighbours; the second
+  // writes them. Valence is small, so the per-row sort is cheap and the total cost is linear.
+  std::vector<int> all;
+  all.reserve(static_cast<std::size_t>(vf.indices.size()) * 2);
+  for (int v = 0; v < n; ++v) {
+    scratch.clear();
+    for (int f : vf.row(v))
+      for (int k = 0; k < 3; ++k)
+        if (F(f, k) != v) scratch.push_back(F(f, k));
+    std::sort(scratch.begin(), scratch.end());
+    scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+    all.insert(all.end(), scratch.begin(), scratch.end());
+    vv.offsets[v + 1] = static_cast<int>(all.size());
+  }
+  all.shrink_to_fit();
+  vv.indices = std::move(all);
+  return vv;
+}
+
+}  // namespace
+
+std::uint64_t topology_builds() { return builds.load(std::memory_order_relaxed); }
+
+Topology build_topology(const Faces& F, int num_vertices) {
+  builds.fetch_add(1, std::memory_order_relaxed);
+  if (num_vertices < 0) throw InvalidArgument("build_topology: negative vertex count");
+  for (int f = 0; f < F.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const int v = F(f, k);
+      if (v < 0 || v >= num_vertices)
+        throw InvalidArgument("build_topology: face " + std::to_string(f) + " has vertex index " +
+                              std::to_string(v) + " outside [0, " + std::to_string(num_vertices) +
+                              ")");
+    }
+    if (F(f, 0) == F(f, 1) || F(f, 1) == F(f, 2) || F(f, 2) == F(f, 0))
+      throw InvalidArgument("build_topology: face " + std::to_string(f) + " repeats a vertex");
+  }
+
+  Topology t;
+  t.num_vertices = num_vertices;
+  t.num_faces = static_cast<int>(F.rows());
+  t.vertex_faces = build_vertex_faces(F, num_vertices);
+  t.vertex_vertices = build_vertex_vertices(F, t.vertex_faces);
+
+  // Edge (v, w) with v < w is owned by v; rows are sorted, so owned neighbours form a suffix of the
+  // row and edges come out in lexicographic order without a global sort.
+  std::vector<int> first_owned(num_vertices), edge_offset(num_vertices + 1, 0);
+  for (int v = 0; v < num_vertices; ++v) {
+    auto row = t.vertex_vertices.row(v);
+    first_owned[v] = static_cast<int>(std::upper_bound(row.begin(), row.end(), v) - row.begin());
+    edge_offset[v + 1] = edge_offset[v] + static_cast<int>(row.size()) - first_owned[v];
+  }
+  t.edges.resize(edge_offset.back(), 2);
+  for (int v = 0; v < num_vertices; ++v) {
+    auto row = t.vertex_vertices.row(v);
+    for (int j = first_owned[v], e = edge_offset[v]; j < static_cast<int>(row.size()); ++j, ++e) {
+      t.edges(e, 0) = v;
+      t.edges(e, 1) = row[j];
+    }
+  }
+  auto edge_index = [&](int a, int b) {
+    const int v = std::min(a, b), w = std::max(a, b);
+    auto row = t.vertex_vertices.row(v);
+    const int pos = static_cast<int>(std::lower_bound(row.begin(), row.end(), w) - row.begin());
+    return edge_offset[v] + pos - first_owned[v];
+  };
+
+  t.face_edges.resize(static_cast<std::size_t>(F.rows()) * 3);
+  t.edge_faces.offsets.assign(t.edges.rows() + 1, 0);
+  for (int f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int e = edge_index(F(f, k), F(f, (k + 1) % 3));
+      t.face_edges[3 * f + k] = e;
+      ++t.edge_faces.offsets[e + 1];
+    }
+  std::partial_sum(t.edge_faces.offsets.begin(), t.edge_faces.offsets.end(),
+                   t.edge_faces.offsets.begin());
+  t.edge_faces.indices.resize(t.edge_faces.offsets.back());
+  std::vector<int> fill(t.edge_faces.offsets.begin(), t.edge_faces.offsets.end() - 1);
+  for (int f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) t.edge_faces.indices[fill[t.face_edges[3 * f + k]]++] = f;
+  return t;
+}
+
+std::vector<char> boundary_vertex_flags(const Topology& topo) {
+  std::vector<char> flags(topo.num_vertices, 0);
+  for (int e = 0; e < topo.edges.rows(); ++e)
+    if (topo.is_boundary_edge(e)) flags[topo.edges(e, 0)] = flags[topo.edges(e, 1)] = 1;
+  return flags;
+}
+
+std::vector<std::vector<int>> boundary_loops(const Faces& F, const Topology& topo) {
+  // Directed border half-edges a->b, oriented like their single face.
+  struct HalfEdge {
+    int from, to;
+  };
+  std::vector<HalfEdge> half;
+  for (int e = 0; e < topo.edges.rows(); ++e) {
+    if (!topo.is_boundary_edge(e)) continue;
+    const int f = topo.edge_faces.row(e)[0];
+    for (int k = 0; k < 3; ++k)
+      if (topo.face_edges[3 * f + k] == e) half.push_back({F(f, k), F(f, (k + 1) % 3)});
+  }
+  // Border half-edges at each vertex, both directions, so that a walk can continue across an
+  // orientation flip instead of stopping there.
+  Csr at;
+  at.offsets.assign(topo.num_vertices + 1, 0);
+  for (const auto& h : half) ++at.offsets[h.from + 1], ++at.offsets[h.to + 1];
+  std::partial_sum(at.offsets.begin(), at.offsets.end(), at.offsets.begin());
+  at.indices.resize(at.offsets.back());
+  std::vector<int> fill(at.offsets.begin(), at.offsets.end() - 1);
+  for (int h = 0; h < static_cast<int>(half.size()); ++h)
+    at.indices[fill[half[h].from]++] = h, at.indices[fill[half[h].to]++] = h;
+
+  std::vector<char> used(half.size(), 0);
+  std::vector<std::vector<int>> loops;
+  for (int start = 0; start < static_cast<int>(half.size()); ++start) {
+    if (used[start]) continue;
+    std::vector<int> loop{half[start].from};
+    used[start] = 1;
+    int current = half[start].to;
+    while (current != loop.front()) {
+      loop.push_back(current);
+      int next = -1, reversed = -1;
+      for (int h : at.row(current)) {
+        if (used[h]) continue;
+        if (half[h].from == current && next < 0) next = h;
+        if (half[h].to == current && reversed < 0) reversed = h;
+      }
+      if (next < 0) next = reversed;  // orientation flips here; walk the edge backwards
+      if (next < 0) break;            // an open chain: cannot happen on a closed border
+      used[next] = 1;
+      current = half[next].from == current ? half[next].to : half[next].from;
+    }
+    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
+    loops.push_back(std::move(loop));
+  }
+  std::sort(loops.begin(), loops.end(),
+            [](const auto& a, const auto& b) { return a.front() < b.front(); });
+  return loops;
+}
+
+Components connected_components(const Faces& F, const Topology& topo) {
+  std::vector<int> parent(topo.num_vertices);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (int f = 0; f < F.rows(); ++f)
+    for (int k = 1; k < 3; ++k) {
+      const int a = find(F(f, 0)), b = find(F(f, k));
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  Components c;
+  c.vertex_component.assign(topo.num_vertices, -1);
+  std::vector<int> id(topo.num_vertices, -1);
+  for (int v = 0; v < topo.num_vertices; ++v) {
+    if (topo.vertex_faces.size(v) == 0) continue;
+    const int r = find(v);
+    if (id[r] < 0) id[r] = c.count++;
+    c.vertex_component[v] = id[r];
+  }
+  c.face_component.resize(F.rows());
+  for (int f = 0; f < F.rows(); ++f) c.face_component[f] = c.vertex_component[F(f, 0)];
+  return c;
+}
+
+std::vector<int> ring_distances(const Topology& topo, std::span<const int> seeds, int max_rings) {
+  std::vector<int> dist(topo.num_vertices, -1);
+  std::vector<int> frontier, next;
+  for (int s : seeds) {
+    if (s < 0 || s >= topo.num_vertices)
+      throw InvalidArgument("ring_distances: seed vertex " + std::to_string(s) + " out of range");
+    if (dist[s] < 0) dist[s] = 0, frontier.push_back(s);
+  }
+  for (int ring = 1; ring <= max_rings && !frontier.empty(); ++ring) {
+    next.clear();
+    for (int v : frontier)
+      for (int w : topo.vertex_vertices.row(v))
+        if (dist[w] < 0) dist[w] = ring, next.push_back(w);
+    frontier.swap(next);
+  }
+  return dist;
+}
+
+std::vector<int> k_ring(const Topology& topo, std::span<const int> seeds, int k) {
+  const auto dist = ring_distances(topo, seeds, k);
+  std::vector<int> out;
+  for (int v = 0; v < topo.num_vertices; ++v)
+    if (dist[v] >= 0) out.push_back(v);
+  return out;
+}
+
+void face_normals_and_areas(const Vertices& V, const Faces& F, Eigen::MatrixX3d& normals,
+                            Eigen::VectorXd& areas) {
+  normals.resize(F.rows(), 3);
+  areas.resize(F.rows());
+  for (int f = 0; f < F.rows(); ++f) {
+    const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+    const Eigen::Vector3d cross = (b - a).cross(c - a);
+    const double norm = cross.norm();
+    areas[f] = 0.5 * norm;
+    normals.row(f) = norm > 0 ? Eigen::Vector3d(cross / norm) : Eigen::Vector3d::Zero();
+  }
+}
+
+// The face areas (the costly part: three gathered corners per face) are computed in parallel; the
+// scatter to the corners stays serial and in face order, so the sums do not depend on threads.
+double mean_edge_length(const Vertices& V, const Topology& topo) {
+  double sum = 0;
+  int measured = 0;
+  for (Eigen::Index e = 0; e < topo.edges.rows(); ++e) {
+    const Eigen::Vector3d d = V.row(topo.edges(e, 1)) - V.row(topo.edges(e, 0));
+    if (!d.allFinite()) continue;
+    sum += d.norm();
+    ++measured;
+  }
+  return measured > 0 ? sum / measured : 0.0;
+}
+
+Eigen::VectorXd vertex_areas(const Vertices& V, const Faces& F) {
+  const int num_faces = static_cast<int>(F.rows());
+  Eigen::VectorXd thirds(num_faces);
+#pragma omp parallel for if (detail::worth_parallel(num_faces)) schedule(static)
+  for (int f = 0; f < num_faces; ++f) {
+    const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+    thirds[f] = (b - a).cross(c - a).norm() / 6.0;
+  }
+  Eigen::VectorXd areas = Eigen::VectorXd::Zero(V.rows());
+  for (int f = 0; f < num_faces; ++f)
+    for (int k = 0; k < 3; ++k) areas[F(f, k)] += thirds[f];
+  return areas;
+}
+
+}  // namespace fairsurf

@@ -1,0 +1,18 @@
+// Private: validation that hands over the connectivity it built, so that an operation which
+// validates its input builds that mesh's topology once (docs/architecture.md).
+#pragma once
+
+#include <fairsurf/mesh/topology.h>
+#include <fairsurf/mesh/validate.h>
+
+namespace fairsurf::detail {
+
+/// validate(mesh); `topo` receives the topology of mesh.F when every face is well formed (no
+/// out-of-range index, no repeated vertex), and is left as it was otherwise.
+ValidationReport validate_keeping_topology(const Mesh& mesh, Topology& topo);
+
+/// require_valid(validate(mesh), requirements, caller), returning the topology of mesh.F that
+/// validate built.
+Topology validated_topology(const Mesh& mesh, const Requirements& requirements, const char* caller);
+
+}  // namespace fairsurf::detail

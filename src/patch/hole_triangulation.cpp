@@ -1,0 +1,389 @@
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/face_intersection.h>
+#include <fairsurf/patch/hole_triangulation.h>
+
+#include "loop_faces.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace fairsurf {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+Vec3 point(const Vertices& V, int v) { return V.row(v).transpose(); }
+
+// Unnormalized normal of the triangle (a, b, c), counter-clockwise; zero if degenerate.
+Vec3 triangle_normal(const Vertices& V, int a, int b, int c) {
+  const Vec3 pa = point(V, a), pb = point(V, b), pc = point(V, c);
+  const Vec3 n = (pb - pa).cross(pc - pa);
+  const double longest = std::max({(pb - pa).squaredNorm(), (pc - pb).squaredNorm(),
+                                   (pa - pc).squaredNorm()});
+  return n.norm() <= 1e-12 * longest ? Vec3::Zero() : n;
+}
+
+// Angle between two normals, in [0, π]; π when either is missing (degenerate triangle). atan2 of
+// the sine and cosine stays accurate near 0, where acos of the dot product would lose half the digits.
+double dihedral(const Vec3& n1, const Vec3& n2) {
+  if (n1.isZero() || n2.isZero()) return std::numbers::pi;
+  return std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+}
+
+struct Weight {
+  double angle = 0.0;
+  double area = 0.0;
+};
+
+bool lighter(const Weight& a, const Weight& b) {
+  if (a.angle < b.angle - kAngleTie) return true;
+  if (a.angle > b.angle + kAngleTie) return false;
+  return a.area < b.area;
+}
+
+std::uint64_t edge_key(int from, int to) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32) |
+         static_cast<std::uint32_t>(to);
+}
+
+// The vertex set of a triangle, independent of its orientation and corner order.
+using TriangleKey = std::array<int, 3>;
+TriangleKey triangle_key(int a, int b, int c) {
+  TriangleKey v{a, b, c};
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+// Weight of `faces` against the outside faces whose normals are given per directed edge a→b
+// (the outside face contains a→b, so the new face across it contains b→a).
+TriangulationWeight weigh(const Vertices& V, const Faces& faces,
+                          const std::unordered_map<std::uint64_t, Vec3>& outside) {
+  std::unordered_map<std::uint64_t, Vec3> inside;
+  TriangulationWeight w;
+  for (int f = 0; f < faces.rows(); ++f) {
+    const Vec3 n = triangle_normal(V, faces(f, 0), faces(f, 1), faces(f, 2));
+    w.area += 0.5 * n.norm();
+    for (int k = 0; k < 3; ++k) inside[edge_key(faces(f, k), faces(f, (k + 1) % 3))] = n;
+  }
+  for (const auto& [key, n] : inside) {
+    const std::uint64_t twin = (key << 32) | (key >> 32);
+    const auto across = inside.find(twin);
+    const auto mesh = outside.find(twin);
+    if (across != inside.end() && key < twin)
+      w.max_dihedral_angle = std::max(w.max_dihedral_angle, dihedral(n, across->second));
+    if (mesh != outside.end())
+      w.max_dihedral_angle = std::max(w.max_dihedral_angle, dihedral(n, mesh->second));
+  }
+  return w;
+}
+
+using detail::is_mesh_edge;
+
+std::uint64_t undirected_key(int u, int v) { return edge_key(std::min(u, v), std::max(u, v)); }
+
+// Diagonals and triangles of earlier rounds that crossed the mesh (triangulate_hole).
+struct Forbidden {
+  std::unordered_set<std::uint64_t> diagonals;  // undirected_key
+  std::set<TriangleKey> triangles;
+};
+
+// Forbids what makes new face `q` of `all` cross face `o`: each edge of q through o's interior
+// (every triangle on that diagonal would cross o too), else q itself (an edge of o pierces it).
+void forbid_crossing(const Vertices& V, const Topology& topo, const Faces& all, int q, int o,
+                     Forbidden& forbidden) {
+  const auto p = [&](int f, int k) -> Vec3 { return V.row(all(f, k)).transpose(); };
+  bool edge_through = false;
+  for (int k = 0; k < 3; ++k) {
+    const int u = all(q, k), v = all(q, (k + 1) % 3);
+    if (!is_mesh_edge(topo, u, v) &&
+        segment_crosses_triangle(p(q, k), p(q, (k + 1) % 3), p(o, 0), p(o, 1), p(o, 2))) {
+      forbidden.diagonals.insert(undirected_key(u, v));
+      edge_through = true;
+    }
+  }
+  if (!edge_through) forbidden.triangles.insert(triangle_key(all(q, 0), all(q, 1), all(q, 2)));
+}
+
+// One polygon to triangulate: vertex indices in loop order and, for each side (t, t+1 mod m), the
+// normal of the face outside it (zero if there is none, e.g. along a cut not yet weighed).
+struct Polygon {
+  std::vector<int> vertices;
+  std::vector<Vec3> side_normals;
+  int size() const { return static_cast<int>(vertices.size()); }
+};
+
+class Triangulator {
+ public:
+  Triangulator(const Vertices& V, const Topology& topo, int threshold,
+               const Forbidden& forbidden)
+      : V_(V), topo_(topo), threshold_(threshold), forbidden_(forbidden) {}
+
+  // Appends the triangles of `poly` to `out` (each as (v_k, v_j, v_i), reversing the loop order).
+  void triangulate(const Polygon& poly, std::vector<Eigen::Vector3i>& out) {
+    const auto repeat = repeated_positions(poly);
+    if (repeat.first < 0 && poly.size() <= threshold_) return solve(poly, out);
+    divided_ = divided_ || repeat.first < 0;
+    const auto [a, b] = repeat.first < 0 ? best_cut(poly) : bridge_cut(poly, repeat.first, repeat.second);
+    Polygon first, second;
+    for (int t = a; t <= b; ++t) first.vertices.push_back(poly.vertices[t]);
+    first.side_normals.assign(poly.side_normals.begin() + a, poly.side_normals.begin() + b);
+    first.side_normals.push_back(Vec3::Zero());  // the cut b→a
+    const std::size_t first_begin = out.size();
+    triangulate(first, out);
+    // The second piece runs b..a (wrapping); its closing side a→b is the cut, seen across from the
+    // first piece's triangle on it.
+    for (int t = b; t != a; t = (t + 1) % poly.size()) {
+      second.vertices.push_back(poly.vertices[t]);
+      second.side_normals.push_back(poly.side_normals[t]);
+    }
+    second.vertices.push_back(poly.vertices[a]);
+    second.side_normals.push_back(normal_on_cut(out, first_begin, poly.vertices[a], poly.vertices[b]));
+    triangulate(second, out);
+  }
+
+  bool divided() const { return divided_; }
+
+ private:
+  // A diagonal may not join a vertex to itself (a loop through a vertex twice), be a mesh edge, or
+  // repeat a diagonal of an earlier piece (two pieces can share a vertex of such a loop): each would
+  // give an edge more than two faces.
+  bool admissible_diagonal(int u, int v) const {
+    const std::uint64_t key = undirected_key(u, v);
+    return u != v && !is_mesh_edge(topo_, u, v) && !made_.contains(key) && !forbidden_.diagonals.contains(key);
+  }
+
+  // Positions s < t of the first vertex the polygon passes twice; (-1, -1) if none.
+  static std::pair<int, int> repeated_positions(const Polygon& poly) {
+    std::unordered_map<int, int> seen;
+    for (int t = 0; t < poly.size(); ++t) {
+      const auto [it, fresh] = seen.emplace(poly.vertices[t], t);
+      if (!fresh) return {it->second, t};
+    }
+    return {-1, -1};
+  }
+
+  // A loop through a vertex twice (a pinch of the border, both occurrences on this hole) is cut by
+  // a diagonal from between the occurrences s < t to outside them, so that each piece passes
+  // through the vertex once and the dynamic programme never sees it twice. The shortest such
+  // diagonal relative to the shorter arc it cuts off is taken, as in best_cut.
+  std::pair<int, int> bridge_cut(const Polygon& poly, int s, int t) const {
+    const int m = poly.size();
+    std::vector<double> arc(m + 1, 0.0);
+    for (int q = 0; q < m; ++q)
+      arc[q + 1] = arc[q] + (point(V_, poly.vertices[(q + 1) % m]) - point(V_, poly.vertices[q])).norm();
+    double best = kInfinity;
+    std::pair<int, int> cut{-1, -1};
+    for (int a = s + 1; a < t; ++a)
+      for (int b = 0; b < m; ++b) {
+        if (b >= s && b <= t) continue;
+        const int lo = std::min(a, b), hi = std::max(a, b);
+        const int u = poly.vertices[lo], v = poly.vertices[hi];
+        const double shorter_arc = std::min(arc[hi] - arc[lo], arc[m] - (arc[hi] - arc[lo]));
+        const double ratio = (point(V_, u) - point(V_, v)).norm() / shorter_arc;
+        if (ratio < best && admissible_diagonal(u, v)) best = ratio, cut = {lo, hi};
+      }
+    if (cut.first < 0)
+      throw InvalidMeshError("triangulate_hole: no admissible diagonal separates the two passes of the loop "
+                             "through vertex " + std::to_string(poly.vertices[s]));
+    return cut;
+  }
+
+  // Positions (a, b), a < b, of the admissible diagonal with the smallest ratio of its length to
+  // the shorter of the two loop arcs it cuts off, among those leaving at least a quarter of the
+  // vertices on each side. On a round hole that is a diameter (fat halves, not slivers); on an
+  // elongated one, the waist.
+  std::pair<int, int> best_cut(const Polygon& poly) const {
+    const int m = poly.size(), quarter = std::max(1, m / 4);
+    std::vector<double> arc(m + 1, 0.0);  // loop length from vertex 0 to vertex t
+    for (int t = 0; t < m; ++t)
+      arc[t + 1] = arc[t] + (point(V_, poly.vertices[(t + 1) % m]) - point(V_, poly.vertices[t])).norm();
+    double best = kInfinity;
+    std::pair<int, int> cut{-1, -1};
+    for (int a = 0; a < m; ++a)
+      for (int b = a + quarter + 1; b < m && (m - (b - a)) > quarter; ++b) {
+        const int u = poly.vertices[a], v = poly.vertices[b];
+        const double shorter_arc = std::min(arc[b] - arc[a], arc[m] - (arc[b] - arc[a]));
+        const double ratio = (point(V_, u) - point(V_, v)).norm() / shorter_arc;
+        if (ratio < best && admissible_diagonal(u, v)) best = ratio, cut = {a, b};
+      }
+    if (cut.first < 0)
+      throw InvalidMeshError("triangulate_hole: no admissible diagonal cuts a hole of " +
+                             std::to_string(m) + " edges (every candidate is a mesh edge)");
+    return cut;
+  }
+
+  // Normal of the triangle among out[begin..] that contains the directed edge a→b (the first
+  // piece's triangle on the cut; the second piece's triangle there will contain b→a).
+  Vec3 normal_on_cut(const std::vector<Eigen::Vector3i>& out, std::size_t begin, int a, int b) const {
+    for (std::size_t f = begin; f < out.size(); ++f)
+      for (int k = 0; k < 3; ++k)
+        if (out[f][k] == a && out[f][(k + 1) % 3] == b)
+          return triangle_normal(V_, out[f][0], out[f][1], out[f][2]);
+    return Vec3::Zero();
+  }
+
+  // Liepa's dynamic programme on one polygon.
+  void solve(const Polygon& poly, std::vector<Eigen::Vector3i>& out) {
+    const int m = poly.size();
+    std::vector<Weight> weight(static_cast<std::size_t>(m) * m);
+    std::vector<int> apex(static_cast<std::size_t>(m) * m, -1);
+    std::vector<Vec3> apex_normal(static_cast<std::size_t>(m) * m, Vec3::Zero());
+    const auto at = [m](int i, int k) { return static_cast<std::size_t>(i) * m + k; };
+    const auto vertex = [&](int i) { return poly.vertices[i]; };
+    // New triangles list the loop positions i < j < k as (k, j, i): reversed loop order.
+    const auto normal = [&](int i, int j, int k) { return triangle_normal(V_, vertex(k), vertex(j), vertex(i)); };
+    // Normal of the face across the side or diagonal (i, k) seen from inside [i, k].
+    const auto inner_normal = [&](int i, int k) -> const Vec3& {
+      return k == i + 1 ? poly.side_normals[i] : apex_normal[at(i, k)];
+    };
+    for (int span = 2; span < m; ++span)
+      for (int i = 0; i + span < m; ++i) {
+        const int k = i + span;
+        const bool top = i == 0 && k == m - 1;
+        Weight best{kInfinity, kInfinity};
+        if (top || admissible_diagonal(vertex(i), vertex(k)))
+          for (int j = i + 1; j < k; ++j) {
+            if (!forbidden_.triangles.empty() &&
+                forbidden_.triangles.contains(triangle_key(vertex(i), vertex(j), vertex(k))))
+              continue;
+            const Weight& left = weight[at(i, j)];
+            const Weight& right = weight[at(j, k)];
+            // The sub-polygons' angles bound this candidate's from below: skip hopeless ones
+            // before any trigonometry (this prunes most candidates).
+            if (std::max(left.angle, right.angle) > best.angle + kAngleTie) continue;
+            const Vec3 n = normal(i, j, k);
+            double angle = std::max({left.angle, right.angle, dihedral(n, inner_normal(i, j)),
+                                     dihedral(n, inner_normal(j, k))});
+            if (top && !poly.side_normals[m - 1].isZero())
+              angle = std::max(angle, dihedral(n, poly.side_normals[m - 1]));
+            const Weight w{angle, left.area + right.area + 0.5 * n.norm()};
+            if (lighter(w, best)) best = w, apex[at(i, k)] = j;
+          }
+        weight[at(i, k)] = best;
+        if (apex[at(i, k)] >= 0) apex_normal[at(i, k)] = normal(i, apex[at(i, k)], k);
+      }
+    if (apex[at(0, m - 1)] < 0)
+      throw InvalidMeshError("triangulate_hole: no admissible triangulation of a hole of " +
+                             std::to_string(m) + " edges (every candidate duplicates a mesh edge)");
+    std::vector<std::pair<int, int>> stack{{0, m - 1}};
+    while (!stack.empty()) {
+      const auto [i, k] = stack.back();
+      stack.pop_back();
+      if (k - i < 2) continue;
+      const int j = apex[at(i, k)];
+      out.emplace_back(vertex(k), vertex(j), vertex(i));
+      made_.insert(undirected_key(vertex(i), vertex(k)));
+      stack.emplace_back(i, j);
+      stack.emplace_back(j, k);
+    }
+  }
+
+  const Vertices& V_;
+  const Topology& topo_;
+  int threshold_;
+  const Forbidden& forbidden_;  // what crossed the mesh in an earlier round
+  bool divided_ = false;
+  std::unordered_set<std::uint64_t> made_;  // diagonals of the pieces solved so far
+};
+
+// The mesh's faces followed by `faces`; `added` receives the indices of the latter.
+Faces with_faces(const Faces& F, const std::vector<Eigen::Vector3i>& faces, std::vector<int>& added) {
+  Faces all(F.rows() + static_cast<Eigen::Index>(faces.size()), 3);
+  all.topRows(F.rows()) = F;
+  added.clear();
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    added.push_back(static_cast<int>(F.rows() + static_cast<Eigen::Index>(f)));
+    all.row(added.back()) = faces[f].transpose();
+  }
+  return all;
+}
+
+// Liepa's triangulation of `poly`, solved again with what crossed the mesh forbidden while it
+// crosses (HoleTriangulationOptions::max_crossing_rounds); the round with the fewest crossings wins.
+// Weights are left to the caller.
+HoleTriangulation triangulate_avoiding_crossings(const Vertices& V, const Faces& F, const Topology& topo,
+                                                 const Polygon& poly, const HoleTriangulationOptions& options) {
+  HoleTriangulation result;
+  Forbidden forbidden;
+  std::size_t fewest = std::numeric_limits<std::size_t>::max();
+  std::vector<int> added;
+  for (int round = 0; round <= options.max_crossing_rounds; ++round) {
+    Triangulator triangulator(V, topo, options.max_dynamic_programming_size, forbidden);
+    std::vector<Eigen::Vector3i> faces;
+    try {
+      triangulator.triangulate(poly, faces);
+    } catch (const InvalidMeshError&) {
+      if (round == 0) throw;
+      break;  // what is forbidden leaves no triangulation: keep the best one found
+    }
+    const Faces all = with_faces(F, faces, added);
+    const auto crossings = options.max_crossing_rounds > 0 ? find_face_intersections(V, all, added)
+                                                           : std::vector<FaceIntersection>{};
+    if (crossings.size() < fewest) {
+      fewest = crossings.size();
+      result.faces = all.bottomRows(static_cast<Eigen::Index>(faces.size()));
+      result.divided = triangulator.divided();
+      result.crossings = static_cast<int>(crossings.size());
+    }
+    if (crossings.empty()) break;
+    for (const FaceIntersection& c : crossings) {
+      forbid_crossing(V, topo, all, c.query_face, c.other_face, forbidden);
+      if (c.other_face >= F.rows()) forbid_crossing(V, topo, all, c.other_face, c.query_face, forbidden);
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
+HoleTriangulation triangulate_hole(const Vertices& V, const Faces& F, const Topology& topo,
+                                   std::span<const int> loop, const HoleTriangulationOptions& options) {
+  if (options.max_dynamic_programming_size < 3)
+    throw InvalidArgument("triangulate_hole: max_dynamic_programming_size must be at least 3, got " +
+                          std::to_string(options.max_dynamic_programming_size));
+  if (options.max_crossing_rounds < 0)
+    throw InvalidArgument("triangulate_hole: max_crossing_rounds must be at least 0, got " +
+                          std::to_string(options.max_crossing_rounds));
+  if (V.rows() != topo.num_vertices)
+    throw InvalidArgument("triangulate_hole: the topology is of another mesh");
+  const std::vector<int> across = detail::loop_edge_faces(F, topo, loop, "triangulate_hole");
+  const int n = static_cast<int>(loop.size());
+  Polygon poly;
+  poly.vertices.assign(loop.begin(), loop.end());
+  std::unordered_map<std::uint64_t, Vec3> outside;
+  for (int t = 0; t < n; ++t) {
+    const int f = across[t];
+    poly.side_normals.push_back(triangle_normal(V, F(f, 0), F(f, 1), F(f, 2)));
+    outside[edge_key(loop[t], loop[(t + 1) % n])] = poly.side_normals.back();
+  }
+
+  HoleTriangulation result = triangulate_avoiding_crossings(V, F, topo, poly, options);
+  const TriangulationWeight w = weigh(V, result.faces, outside);
+  result.max_dihedral_angle = w.max_dihedral_angle;
+  result.area = w.area;
+  return result;
+}
+
+TriangulationWeight triangulation_weight(const Vertices& V, const Faces& F, const Faces& faces) {
+  std::unordered_map<std::uint64_t, Vec3> outside;
+  for (int f = 0; f < F.rows(); ++f) {
+    const Vec3 n = triangle_normal(V, F(f, 0), F(f, 1), F(f, 2));
+    for (int k = 0; k < 3; ++k) outside[edge_key(F(f, k), F(f, (k + 1) % 3))] = n;
+  }
+  return weigh(V, faces, outside);
+}
+
+}  // namespace fairsurf

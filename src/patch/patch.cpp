@@ -1,0 +1,97 @@
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/topology.h>
+#include <fairsurf/patch/patch.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+#include <utility>
+
+namespace fairsurf {
+namespace {
+
+// Refines `patch` on (V, F), then relaxes its interior: the steps shared by holes and tubes.
+void refine_and_relax(const Vertices& V, const Faces& F, const Faces& patch, const PatchOptions& options,
+                      InitialPatch& out) {
+  out.refinement = refine_patch(V, F, patch, options.refinement);
+  out.mesh.V = std::move(out.refinement.V);
+  out.mesh.F = std::move(out.refinement.F);
+  out.refinement.V.resize(0, 3);
+  out.refinement.F.resize(0, 3);
+  out.free_vertices = out.refinement.free_vertices;
+  out.first_patch_face = out.refinement.first_patch_face;
+  // The patched mesh's connectivity, built once: the membrane reads it here, the caller's fairing later.
+  out.topology = build_topology(out.mesh.F, out.mesh.num_vertices());
+  if (options.relax && !out.free_vertices.empty())
+    out.membrane = relax_membrane(out.mesh.V, out.mesh.F, out.topology, out.free_vertices, options.membrane);
+}
+
+// The largest angle between the normals of a patch face and the mesh face across a border edge.
+double border_dihedral_angle(const Mesh& mesh, int first_patch_face) {
+  const Vertices& V = mesh.V;
+  const Faces& F = mesh.F;
+  const auto normal = [&](int f) {
+    const Eigen::Vector3d a = V.row(F(f, 0)).transpose(), b = V.row(F(f, 1)).transpose(), c = V.row(F(f, 2)).transpose();
+    return Eigen::Vector3d((b - a).cross(c - a));
+  };
+  std::unordered_map<std::uint64_t, int> mesh_face;  // directed edge -> mesh face
+  const auto key = [](int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  };
+  for (int f = 0; f < first_patch_face; ++f)
+    for (int k = 0; k < 3; ++k) mesh_face.emplace(key(F(f, k), F(f, (k + 1) % 3)), f);
+  double angle = 0.0;
+  for (int f = first_patch_face; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto it = mesh_face.find(key(F(f, (k + 1) % 3), F(f, k)));
+      if (it == mesh_face.end()) continue;
+      const Eigen::Vector3d n = normal(f), m = normal(it->second);
+      angle = std::max(angle, std::atan2(n.cross(m).norm(), n.dot(m)));
+    }
+  return angle;
+}
+
+}  // namespace
+
+InitialPatch hole_patch(const Mesh& mesh, const std::vector<std::vector<int>>& loops,
+                        const PatchOptions& options) {
+  if (loops.empty()) throw InvalidArgument("hole_patch: no hole given");
+  return hole_patch(mesh, build_topology(mesh.F, mesh.num_vertices()), loops, options);
+}
+
+InitialPatch hole_patch(const Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                        const PatchOptions& options) {
+  if (loops.empty()) throw InvalidArgument("hole_patch: no hole given");
+  if (topo.num_vertices != mesh.num_vertices() || topo.num_faces != mesh.num_faces())
+    throw InvalidArgument("hole_patch: the topology was built for another mesh");
+  InitialPatch out;
+  int rows = 0;
+  for (const auto& loop : loops) {
+    out.holes.push_back(triangulate_hole(mesh.V, mesh.F, topo, loop, options.triangulation));
+    rows += static_cast<int>(out.holes.back().faces.rows());
+  }
+  Faces patch(rows, 3);
+  rows = 0;
+  for (const auto& hole : out.holes) {
+    patch.middleRows(rows, hole.faces.rows()) = hole.faces;
+    rows += static_cast<int>(hole.faces.rows());
+  }
+  refine_and_relax(mesh.V, mesh.F, patch, options, out);
+  out.border_dihedral_angle = border_dihedral_angle(out.mesh, out.first_patch_face);
+  return out;
+}
+
+InitialPatch tube_patch(const Mesh& mesh, std::span<const int> loop_a, std::span<const int> loop_b,
+                        const PatchOptions& options) {
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  InitialPatch out;
+  out.tube = build_tube(mesh.V, mesh.F, topo, loop_a, loop_b, options.tube);
+  refine_and_relax(out.tube.V, mesh.F, out.tube.faces, options, out);
+  return out;
+}
+
+}  // namespace fairsurf

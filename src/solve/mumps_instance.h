@@ -1,0 +1,58 @@
+// fairsurf — private: one MUMPS instance (DMUMPS_STRUC_C) with the library's settings, shared by the
+// mumps and mumps-mpi back ends (linear_solver_mumps.cpp) and by the ranks that serve mumps-mpi
+// (distributed.h): every process of an instance must make the same calls in the same order.
+#pragma once
+
+#include <fairsurf/solve/linear_solver.h>
+
+#include <dmumps_c.h>
+
+#include <map>
+#include <string>
+
+namespace fairsurf::detail {
+
+/// What every process of one instance is created with.
+struct MumpsSettings {
+  int communicator = 0;  ///< Fortran handle of the processes' communicator
+  int sym = 0;           ///< 0: unsymmetric LU; 2: general symmetric LDLᵀ
+  int ordering = 7;      ///< ICNTL(7): 7 MUMPS chooses, 6 QAMD
+  const char* name = "mumps";  ///< the back end, for messages
+  std::map<int, int> controls{};  ///< LinearSolverOptions::mumps_controls, set after the library's
+};
+
+/// The settings `options` ask for (symmetric: LDLᵀ; minimum_degree: QAMD), named after options.kind.
+MumpsSettings mumps_settings(const LinearSolverOptions& options, int communicator);
+
+/// MUMPS's codes for "increase the workspace and retry" (INFOG(1) = −8, −9, −14, −15, −17, −20).
+bool is_workspace_error(int code);
+/// "SCOTCH", "QAMD", ... for INFOG(7).
+std::string ordering_name(int code);
+
+class MumpsInstance {
+ public:
+  /// Initializes (job −1) silent (ICNTL(1..4): the library never prints), with the host taking
+  /// part in the factorization (PAR = 1), a centralized matrix on the host (ICNTL(18) = 0) and
+  /// sequential analysis there (ICNTL(28) = 1). Throws NumericalError if MUMPS refuses.
+  explicit MumpsInstance(const MumpsSettings& settings);
+  ~MumpsInstance();  // job −2
+  MumpsInstance(const MumpsInstance&) = delete;
+  MumpsInstance& operator=(const MumpsInstance&) = delete;
+
+  DMUMPS_STRUC_C& id() { return id_; }
+  /// ICNTL(k), INFO(k), INFOG(k) in the 1-based numbering of the MUMPS manual.
+  int& icntl(int k) { return id_.icntl[k - 1]; }
+  int info(int k) const { return id_.info[k - 1]; }
+  int infog(int k) const { return id_.infog[k - 1]; }
+
+  /// Runs MUMPS's `job` (1 analyze, 2 factorize, 3 solve); returns INFOG(1), the same on every rank.
+  int call(int job);
+  /// Throws NumericalError "PHASE: NAME: <reason> (INFOG(1) = …, INFOG(2) = …)" if INFOG(1) < 0.
+  void check(const char* phase) const;
+
+ private:
+  DMUMPS_STRUC_C id_{};
+  const char* name_;
+};
+
+}  // namespace fairsurf::detail

@@ -1,0 +1,707 @@
+// Tests of hole filling end to end (fill.h): analytic holes against the exact surface, the G2 > G1 >
+// G0 > harmonic ordering, real meshes filled watertight, per-hole failures, and the pair test of
+// face_intersection.h.
+#include <fairsurf/applications/fill.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/face_intersection.h>
+#include <fairsurf/mesh/topology.h>
+#include <fairsurf/mesh/validate.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <numbers>
+#include <numeric>
+
+#include "analytic_meshes.h"
+#include "flow_meshes.h"
+#include "hole_meshes.h"
+#include "test_support.h"
+
+using namespace fairsurf;
+
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+FillOptions options_for(Continuity c, FairMethod method = FairMethod::flow) {
+  FillOptions o;
+  o.fairing.continuity = c;
+  o.fairing.method = method;
+  return o;
+}
+
+// Max |distance| of the new vertices to a reference surface given as signed distances.
+double max_new_vertex_deviation(const Mesh& filled, int input_vertices,
+                                const std::function<Eigen::VectorXd(const Vertices&)>& distances) {
+  const Eigen::VectorXd d = distances(filled.V.bottomRows(filled.num_vertices() - input_vertices));
+  return d.cwiseAbs().maxCoeff();
+}
+
+// What every successful fill guarantees, checked with validate and topology.
+void expect_watertight(const Mesh& input, const Mesh& filled) {
+  ASSERT_GE(filled.num_vertices(), input.num_vertices());
+  EXPECT_TRUE(filled.V.topRows(input.num_vertices()) == input.V) << "an input vertex moved";
+  EXPECT_TRUE(filled.F.topRows(input.num_faces()) == input.F) << "an input face changed";
+  const ValidationReport v = validate(filled);
+  EXPECT_TRUE(v.manifold());
+  EXPECT_EQ(v.degenerate_faces.count, 0);
+  EXPECT_EQ(v.inconsistent_orientation_edges.count, 0);
+  EXPECT_EQ(v.duplicate_faces.count, 0);
+  EXPECT_TRUE(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).empty());
+}
+
+struct SphereFill {
+  double deviation = 0;    // max |r − 1| over the new vertices
+  double h_jump = 0;       // max H jump across the border
+  double normal_angle = 0; // max normal angle across the border
+  HoleReport hole;
+};
+
+// The unit icosphere of `level` with the faces above z = 0.5 removed, filled.
+SphereFill fill_sphere_cap(int level, const FillOptions& options) {
+  const Mesh holed = test::cut_hole(test::icosphere(level), [](const Vec3& p) { return p.z() > 0.5; });
+  Mesh filled = holed;
+  const FillReport report = fill_holes(filled, options);
+  EXPECT_EQ(report.holes.size(), 1u);
+  EXPECT_EQ(report.filled, 1) << report.holes.front().reason;
+  expect_watertight(holed, filled);
+  SphereFill out;
+  out.hole = report.holes.front();
+  out.deviation = max_new_vertex_deviation(filled, holed.num_vertices(),
+                                           [](const Vertices& V) { return test::sphere_distances(V, 1.0); });
+  out.h_jump = out.hole.continuity.max_mean_curvature_jump;
+  out.normal_angle = out.hole.continuity.max_normal_angle;
+  return out;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Analytic holes
+
+TEST(FillSphere, G2CapConvergesToTheSphereAndBeatsTheHarmonicBaseline) {
+  const SphereFill coarse = fill_sphere_cap(3, options_for(Continuity::G2));
+  const SphereFill fine = fill_sphere_cap(4, options_for(Continuity::G2));
+  const SphereFill harmonic = fill_sphere_cap(4, options_for(Continuity::G2, FairMethod::harmonic));
+  std::cout << "sphere cap z > 0.5 removed, G2 fill: max|r-1| " << coarse.deviation << " (642 vertices), "
+            << fine.deviation << " (2562), harmonic " << harmonic.deviation << " (2562); max H jump "
+            << fine.h_jump << " vs harmonic " << harmonic.h_jump << "; " << fine.hole.steps << " steps, "
+            << fine.hole.vertices_added << " new vertices, " << fine.hole.harmonic_solves << " ∆³ solves first\n";
+  EXPECT_EQ(fine.hole.supported, Continuity::G2);
+  EXPECT_TRUE(fine.hole.note.empty()) << fine.hole.note;
+  // From the re-evaluated ∆³ start the flow settles in a few Newton-like steps (from the membrane
+  // with τ doubling from 1e-9 it took 145).
+  EXPECT_LE(fine.hole.steps, 15);
+  EXPECT_LT(fine.deviation, 5e-4);  // 2.8e-4 (5.3e-4 from the membrane in 145 steps)
+  EXPECT_LT(fine.deviation, 0.6 * coarse.deviation);
+  // The baseline is the re-evaluated cotangent ∆³ solution (3.7e-3; frozen at the membrane it was
+  // 0.13), the floor the G2 fill starts from and falls back to.
+  EXPECT_LT(fine.deviation, 0.1 * harmonic.deviation);
+  EXPECT_LT(fine.h_jump, 0.01);
+  EXPECT_LT(fine.h_jump, 0.1 * harmonic.h_jump);
+  EXPECT_FALSE(fine.hole.linear);
+  EXPECT_TRUE(harmonic.hole.linear);
+  EXPECT_EQ(delivered_label(harmonic.hole.supported, harmonic.hole.linear), "C2 (linear)");
+  EXPECT_TRUE(std::isnan(harmonic.hole.final_max_velocity));
+}
+
+// A sphere is stationary for f = H and for Willmore flow alike, so on the cap G2 and G1 both reach
+// the sphere (G1 slightly closer on the refined patch: 1.2e-3 vs 1.3e-3 here) while G0 stays flat.
+// A cylinder separates them: stationary for f = H, inflated by Willmore flow (method.md §8.5).
+TEST(FillOrdering, G2BeatsG1BeatsG0) {
+  const SphereFill g2 = fill_sphere_cap(3, options_for(Continuity::G2));
+  const SphereFill g1 = fill_sphere_cap(3, options_for(Continuity::G1));
+  const SphereFill g0 = fill_sphere_cap(3, options_for(Continuity::G0));
+  std::cout << "sphere cap, 642 vertices: max|r-1| G2 " << g2.deviation << ", G1 " << g1.deviation << ", G0 "
+            << g0.deviation << "; max normal angle G2 " << g2.normal_angle << ", G1 " << g1.normal_angle
+            << ", G0 " << g0.normal_angle << "\n";
+  EXPECT_LT(100 * g2.deviation, g0.deviation);
+  EXPECT_LT(100 * g1.deviation, g0.deviation);
+  EXPECT_LT(10 * g2.normal_angle, g0.normal_angle);
+  EXPECT_EQ(g1.hole.supported, Continuity::G1);
+
+  const Mesh holed = test::cut_hole(test::open_cylinder(32, 16, 1.0, 3.0),
+                                    [](const Vec3& p) { return (p - Vec3(1, 0, 1.5)).norm() < 0.6; });
+  auto radius_error = [](const Vertices& V) { return (test::axis_distances(V).array() - 1.0).matrix().eval(); };
+  std::vector<double> deviation;
+  for (const Continuity c : {Continuity::G2, Continuity::G1, Continuity::G0}) {
+    FillOptions o = options_for(c);
+    o.max_hole_edges = 31;  // the two open ends stay open
+    Mesh filled = holed;
+    ASSERT_EQ(fill_holes(filled, o).filled, 1);
+    deviation.push_back(max_new_vertex_deviation(filled, holed.num_vertices(), radius_error));
+  }
+  std::cout << "cylinder hole, 32 around: max|rho-1| G2 " << deviation[0] << ", G1 " << deviation[1] << ", G0 "
+            << deviation[2] << "\n";
+  EXPECT_LT(5 * deviation[0], deviation[1]);
+  EXPECT_LT(5 * deviation[1], deviation[2]);
+}
+
+TEST(FillCylinder, G2HoleStaysOnTheCylinder) {
+  // A cylinder is stationary for f = H (constant H): the G2 fill should reproduce it.
+  for (const int around : {32, 64}) {
+    const int along = around / 2;
+    const Mesh cylinder = test::open_cylinder(around, along, 1.0, 3.0);
+    const Mesh holed = test::cut_hole(cylinder, [](const Vec3& p) { return (p - Vec3(1, 0, 1.5)).norm() < 0.6; });
+    FillOptions o = options_for(Continuity::G2);
+    o.max_hole_edges = around - 1;  // the two open ends stay open
+    Mesh filled = holed, harmonic = holed;
+    const FillReport r = fill_holes(filled, o);
+    ASSERT_EQ(r.filled, 1);
+    EXPECT_EQ(r.skipped, 2);
+    o.fairing.method = FairMethod::harmonic;
+    ASSERT_EQ(fill_holes(harmonic, o).filled, 1);
+    auto radius_error = [](const Vertices& V) { return (test::axis_distances(V).array() - 1.0).matrix().eval(); };
+    const double g2 = max_new_vertex_deviation(filled, holed.num_vertices(), radius_error);
+    const double baseline = max_new_vertex_deviation(harmonic, holed.num_vertices(), radius_error);
+    std::cout << "cylinder " << around << " around: G2 max|rho-1| " << g2 << ", harmonic " << baseline << "\n";
+    EXPECT_LT(g2, 2e-3);
+    EXPECT_LT(g2, 0.2 * baseline);
+  }
+}
+
+TEST(FillTorus, G2HoleStaysCloseToTheTorus) {
+  for (const int n : {48, 96}) {
+    const Mesh torus = test::torus_grid(n, n / 2, 2.0, 1.0).mesh;
+    const Mesh holed = test::cut_hole(torus, [](const Vec3& p) { return (p - Vec3(3, 0, 0)).norm() < 0.7; });
+    Mesh filled = holed, harmonic = holed;
+    ASSERT_EQ(fill_holes(filled, options_for(Continuity::G2)).filled, 1);
+    ASSERT_EQ(fill_holes(harmonic, options_for(Continuity::G2, FairMethod::harmonic)).filled, 1);
+    auto torus_error = [](const Vertices& V) { return test::torus_distances(V, 2.0, 1.0); };
+    const double g2 = max_new_vertex_deviation(filled, holed.num_vertices(), torus_error);
+    const double baseline = max_new_vertex_deviation(harmonic, holed.num_vertices(), torus_error);
+    std::cout << "torus " << n << "x" << n / 2 << ": G2 max distance " << g2 << ", harmonic " << baseline << "\n";
+    EXPECT_LT(g2, 1e-2);
+    EXPECT_LT(g2, 0.5 * baseline);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Real meshes
+
+// The scans' noisy borders and the shark's sharp-edged holes make the G2 flow slow to settle (the
+// bunny's small holes run the full 200 steps, then fall back to G1: ~25 s); those two use G1 here
+// to keep the test in seconds, the shark's flows capped at 60 steps (its 365-vertex hole does not
+// settle in 200 G1 steps either). The airplane's 27 windows and doors are filled with G2.
+struct RealCase {
+  const char* name;
+  Continuity continuity;
+  int max_steps;  // 0: fair_region's default
+};
+class RealHoles : public ::testing::TestWithParam<RealCase> {};
+
+TEST_P(RealHoles, EveryHoleIsFilledWatertight) {
+  const auto [name, continuity, max_steps] = GetParam();
+  const Mesh input = read_mesh(test::data_path(name));
+  Mesh filled = input;
+  FillOptions o = options_for(continuity);
+  if (max_steps > 0) o.fairing.flow.max_steps = max_steps;
+  const FillReport r = fill_holes(filled, o);
+  for (const auto& h : r.holes) EXPECT_EQ(h.status, HoleStatus::filled) << "hole " << h.index << ": " << h.reason;
+  EXPECT_EQ(r.filled, static_cast<int>(r.holes.size()));
+  int fallbacks = 0;
+  for (const auto& h : r.holes) fallbacks += h.supported != continuity;
+  std::cout << name << ": " << r.filled << " holes filled with " << to_string(continuity) << " in " << r.seconds
+            << " s (" << fallbacks << " at a lower continuity)\n";
+  expect_watertight(input, filled);
+}
+
+INSTANTIATE_TEST_SUITE_P(Data, RealHoles,
+                         ::testing::Values(RealCase{"cgal_mech_holes_shark.off", Continuity::G1, 60},
+                                           RealCase{"airplane_holes.obj", Continuity::G2, 0},
+                                           RealCase{"stanford_bunny_zipper.obj", Continuity::G1, 0}));
+
+// A loop of three edges around a face of the mesh (here a lone triangle) already bounds that face:
+// filling it could only add the face again, reversed. It is skipped with the reason, and the mesh
+// is left as it was.
+TEST(FillLoneTriangle, ALoopAroundAFaceIsSkippedNotFilledWithTheFaceReversed) {
+  Mesh m;
+  m.V.resize(3, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0;
+  m.F.resize(1, 3);
+  m.F << 0, 1, 2;
+  const Mesh input = m;
+  const FillReport r = fill_holes(m);
+  ASSERT_EQ(r.holes.size(), 1u);
+  EXPECT_EQ(r.holes[0].status, HoleStatus::skipped);
+  EXPECT_EQ(r.holes[0].reason, "the loop runs around a lone triangle: filling it would add that face again, reversed");
+  EXPECT_EQ(r.filled, 0);
+  EXPECT_EQ(r.skipped, 1);
+  EXPECT_EQ(m.F, input.F);
+  EXPECT_EQ(m.V, input.V);
+}
+
+// The shark's hole 3 runs round a corner of the part. Its lightest triangulation crossed the
+// corner's fan, and both the G2 and the C2 fairing of it crossed the mesh, so the hole fell to C1;
+// the triangulation now avoids the crossing and the hole gets at least the C2 floor.
+TEST(FillShark, TheHoleRoundACornerGetsTheRequestedContinuityWithoutCrossing) {
+  const Mesh input = read_mesh(test::data_path("cgal_mech_holes_shark.off"));
+  Mesh filled = input;
+  FillOptions o;
+  o.holes = {3};
+  const FillReport r = fill_holes(filled, o);
+  const HoleReport& h = r.holes[3];
+  ASSERT_EQ(h.status, HoleStatus::filled) << h.reason;
+  EXPECT_EQ(h.supported, Continuity::G2) << delivered_label(h.supported, h.linear) << ": " << h.note;
+  std::vector<int> added(static_cast<std::size_t>(filled.num_faces() - input.num_faces()));
+  std::iota(added.begin(), added.end(), input.num_faces());
+  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, added, 1).empty());
+  EXPECT_LT(h.continuity.max_normal_angle, 45.0 * std::numbers::pi / 180);  // no fold (16° now)
+}
+
+// blub's 64-edge hole gets G2 (from the membrane with fair_region's defaults the G2 flow ran its
+// 200 steps without settling and fell back to G1).
+TEST(FillBlub, TheFilledHoleStaysCloseToTheOriginal) {
+  const Mesh open = read_mesh(test::data_path("blub_open.obj"));
+  const Mesh exact = read_mesh(test::data_path("blub.obj"));
+  const double diagonal = (exact.V.colwise().maxCoeff() - exact.V.colwise().minCoeff()).norm();
+  double flow_worst = 0, harmonic_worst = 0;
+  for (const FairMethod method : {FairMethod::flow, FairMethod::harmonic}) {
+    Mesh filled = open;
+    const FillReport r = fill_holes(filled, options_for(Continuity::G2, method));
+    ASSERT_EQ(r.filled, 1);
+    EXPECT_EQ(r.holes.front().supported, Continuity::G2) << r.holes.front().note;
+    expect_watertight(open, filled);
+    double worst = 0, mean = 0;
+    for (int v = open.num_vertices(); v < filled.num_vertices(); ++v) {
+      const double d = test::distance_to_mesh(filled.V.row(v).transpose(), exact);
+      worst = std::max(worst, d), mean += d;
+    }
+    mean /= filled.num_vertices() - open.num_vertices();
+    std::cout << "blub_open, " << to_string(method) << ": " << filled.num_vertices() - open.num_vertices()
+              << " new vertices, distance to blub max " << worst / diagonal << ", mean " << mean / diagonal
+              << " (of the bounding-box diagonal)\n";
+    EXPECT_LT(worst / diagonal, method == FairMethod::flow ? 0.05 : 0.12);
+    (method == FairMethod::flow ? flow_worst : harmonic_worst) = worst;
+  }
+  EXPECT_LT(flow_worst, harmonic_worst);
+}
+
+// The real-hole protocol's cut of blub at (-0.565203, -0.333718, 0.0970017), radius 4 h: a 29-edge
+// hole whose 6-ring fairing neighbourhood touches itself on its outer side (a vertex 6 rings out
+// had two fans of kept faces), so fair_region rejected it as "1 non-manifold vertex" although the
+// mesh and the patch are manifold. The neighbourhood now keeps every face of such a vertex.
+TEST(FillBlub, ABallHoleWhoseFairingRingsTouchThemselvesIsFilled) {
+  const Mesh holed = test::cut_ball(read_mesh(test::data_path("blub.obj")), Vec3(-0.565203, -0.333718, 0.0970017),
+                                    0.153956);
+  const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  ASSERT_EQ(loops.size(), 1u);
+  EXPECT_EQ(loops.front().size(), 29u);
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, options_for(Continuity::G2, FairMethod::harmonic));
+  ASSERT_EQ(r.filled, 1) << r.holes.front().reason;
+  EXPECT_EQ(r.holes.front().supported, Continuity::G2);
+  expect_watertight(holed, filled);
+  std::vector<int> new_faces(filled.num_faces() - holed.num_faces());
+  std::iota(new_faces.begin(), new_faces.end(), holed.num_faces());
+  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Selection, joint holes, per-hole failures
+
+TEST(FillSelection, ExplicitHolesMaxEdgesAndSkipLargest) {
+  // A cylinder with a hole: loops are the two ends (64 edges) and the hole.
+  const Mesh holed = test::cut_hole(test::open_cylinder(64, 24, 1.0, 3.0),
+                                    [](const Vec3& p) { return (p - Vec3(1, 0, 1.5)).norm() < 0.4; });
+  const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  ASSERT_EQ(loops.size(), 3u);
+  int hole = 0;
+  while (loops[hole].size() == 64) ++hole;
+
+  FillOptions o = options_for(Continuity::G0);
+  o.holes = {hole};
+  Mesh a = holed;
+  FillReport r = fill_holes(a, o);
+  EXPECT_EQ(r.filled, 1);
+  EXPECT_EQ(r.skipped, 2);
+  for (const auto& h : r.holes)
+    EXPECT_EQ(h.status == HoleStatus::filled, h.index == hole) << h.index;
+  EXPECT_EQ(r.holes[(hole + 1) % 3].reason, "not selected");
+
+  o.holes = {};
+  o.max_hole_edges = 63;
+  Mesh b = holed;
+  r = fill_holes(b, o);
+  EXPECT_EQ(r.filled, 1);
+  EXPECT_EQ(r.holes[(hole + 1) % 3].reason, "64 border edges, more than the maximum 63");
+
+  o.holes = {3};
+  Mesh c = holed;
+  EXPECT_THROW(
+      {
+        try {
+          fill_holes(c, o);
+        } catch (const InvalidArgument& e) {
+          EXPECT_STREQ(e.what(), "fill_holes: hole 3 is outside [0, 3) (the mesh has 3 boundary loops)");
+          throw;
+        }
+      },
+      InvalidArgument);
+}
+
+TEST(FillSelection, SkipLargestLeavesTheOuterBorderOfAGrid) {
+  Mesh grid = test::regular_grid(16, 16, 0.1);
+  const Mesh holed = test::cut_hole(grid, [](const Vec3& p) { return (p - Vec3(0.8, 0.8, 0)).norm() < 0.25; });
+  FillOptions o = options_for(Continuity::G2);
+  o.skip_largest = true;
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, o);
+  ASSERT_EQ(r.holes.size(), 2u);
+  EXPECT_EQ(r.filled, 1);
+  EXPECT_EQ(r.skipped, 1);
+  for (const auto& h : r.holes)
+    if (h.status == HoleStatus::skipped) {
+      EXPECT_EQ(h.reason, "the largest border, left open (skip largest)");
+    }
+  // The patch of a planar hole stays in the plane.
+  EXPECT_LT(filled.V.bottomRows(filled.num_vertices() - holed.num_vertices()).col(2).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+TEST(FillSelection, AHoleNearAnOpenBorderFallsBackAndSaysSo) {
+  // The hole's border is one row from the grid's outer border, which stays open: the open border
+  // falls inside the hole's three fixed rings (ring 2 or 3, depending on which border vertices touch
+  // a new interior vertex), so the data supports G0 or G1 only.
+  const Mesh holed = test::cut_hole(test::regular_grid(16, 16, 0.1), [](const Vec3& p) {
+    return p.x() > 0.25 && p.x() < 0.55 && p.y() > 1.25 && p.y() < 1.45;
+  });
+  FillOptions o = options_for(Continuity::G2);
+  o.skip_largest = true;
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, o);
+  ASSERT_EQ(r.filled, 1);
+  for (const auto& h : r.holes)
+    if (h.status == HoleStatus::filled) {  // NOLINT
+      EXPECT_EQ(h.requested, Continuity::G2);
+      EXPECT_LT(h.supported, Continuity::G2);
+      EXPECT_EQ(h.note.rfind("the mesh around the hole has fewer than 3 complete rings: faired with " +
+                                 std::string(to_string(h.supported)),
+                             0),
+                0u)
+          << h.note;
+    }
+}
+
+TEST(FillJoint, HolesWithOverlappingRingsAreFilledTogether) {
+  // Two holes three edges apart on a sphere: their three fixed rings overlap.
+  const Mesh sphere = test::icosphere(4);
+  const Mesh holed = test::cut_hole(sphere, [](const Vec3& p) {
+    return (p - Vec3(0.3, 0, 0.954)).norm() < 0.2 || (p - Vec3(-0.3, 0, 0.954)).norm() < 0.2;
+  });
+  ASSERT_EQ(boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices())).size(), 2u);
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, options_for(Continuity::G2));
+  ASSERT_EQ(r.filled, 2);
+  EXPECT_EQ(r.holes[0].filled_with, std::vector<int>{1});
+  EXPECT_EQ(r.holes[1].filled_with, std::vector<int>{0});
+  EXPECT_EQ(r.holes[0].supported, Continuity::G2);
+  EXPECT_GT(r.holes[0].vertices_added, 0);
+  EXPECT_GT(r.holes[1].vertices_added, 0);
+  EXPECT_EQ(r.holes[0].vertices_added + r.holes[1].vertices_added, filled.num_vertices() - holed.num_vertices());
+  EXPECT_EQ(r.holes[0].faces_added + r.holes[1].faces_added, filled.num_faces() - holed.num_faces());
+  expect_watertight(holed, filled);
+  EXPECT_LT(max_new_vertex_deviation(filled, holed.num_vertices(),
+                                     [](const Vertices& V) { return test::sphere_distances(V, 1.0); }),
+            1e-3);
+}
+
+// Two square holes of a grid that touch at the vertex (6, 6) (a pinch with four border edges), and
+// a third hole far from both. The faces are removed by their centroids.
+Mesh grid_with_pinched_holes() {
+  const Mesh grid = test::regular_grid(24, 12, 1.0);
+  auto removed = [](const Vec3& c) {
+    return (c.x() > 4 && c.x() < 6 && c.y() > 4 && c.y() < 6) || (c.x() > 6 && c.x() < 8 && c.y() > 6 && c.y() < 8) ||
+           (c.x() > 16 && c.x() < 18 && c.y() > 4 && c.y() < 6);
+  };
+  Mesh holed;
+  holed.V = grid.V;
+  std::vector<int> kept;
+  for (int f = 0; f < grid.num_faces(); ++f) {
+    const Vec3 c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0;
+    if (!removed(c)) kept.push_back(f);
+  }
+  holed.F.resize(static_cast<int>(kept.size()), 3);
+  for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
+  return holed;
+}
+
+// Both holes through the pinch are filled, and the pinch ends as an interior manifold vertex: each
+// patch joins one fan of the grid to the other (closing a fan onto itself would leave two cones
+// touching at the vertex).
+TEST(FillPinches, TwoHolesTouchingAtAVertexAreFilledManifold) {
+  const Mesh holed = grid_with_pinched_holes();
+  const int pinch = 6 * 25 + 6;
+  FillOptions o = options_for(Continuity::G2);
+  o.skip_largest = true;
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, o);
+  EXPECT_EQ(r.filled, 3);
+  for (const auto& h : r.holes)
+    if (h.status != HoleStatus::skipped) {
+      EXPECT_EQ(h.status, HoleStatus::filled) << h.reason;
+    }
+  EXPECT_TRUE(filled.F.topRows(holed.num_faces()) == holed.F);
+  EXPECT_TRUE(validate(filled).manifold());
+  const Topology topo = build_topology(filled.F, filled.num_vertices());
+  EXPECT_EQ(boundary_loops(filled.F, topo).size(), 1u);  // the grid's outer border
+  EXPECT_FALSE(boundary_vertex_flags(topo)[pinch]);
+  // Each hole's own patch is counted for it, though the two touch at the pinch.
+  int vertices = 0, faces = 0;
+  for (const auto& h : r.holes)
+    if (h.status == HoleStatus::filled) {
+      EXPECT_GT(h.faces_added, 0) << "hole " << h.index;
+      vertices += h.vertices_added, faces += h.faces_added;
+    }
+  EXPECT_EQ(vertices, filled.num_vertices() - holed.num_vertices());
+  EXPECT_EQ(faces, filled.num_faces() - holed.num_faces());
+  // The grid stays flat: every new vertex on z = 0.
+  EXPECT_LT(filled.V.bottomRows(filled.num_vertices() - holed.num_vertices()).col(2).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+// A pinch can only be filled with every loop through it: filling one alone fails, and says why.
+TEST(FillPinches, OneHoleOfAPinchAloneFailsAndTheOtherHoleIsFilled) {
+  const Mesh holed = grid_with_pinched_holes();
+  const int pinch = 6 * 25 + 6;
+  const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  std::vector<int> through_pinch, elsewhere;
+  for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
+    if (loops[i].size() > 20) continue;  // the outer border
+    (std::count(loops[i].begin(), loops[i].end(), pinch) ? through_pinch : elsewhere).push_back(i);
+  }
+  ASSERT_FALSE(through_pinch.empty());
+  ASSERT_EQ(elsewhere.size(), 1u);
+  FillOptions o = options_for(Continuity::G2);
+  o.holes = {through_pinch.front(), elsewhere.front()};
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, o);
+  EXPECT_EQ(r.filled, 1);
+  EXPECT_EQ(r.holes[elsewhere.front()].status, HoleStatus::filled);
+  const HoleReport& failed = r.holes[through_pinch.front()];
+  EXPECT_EQ(failed.status, HoleStatus::failed);
+  EXPECT_EQ(failed.reason.rfind("non-manifold border: vertex " + std::to_string(pinch) + " is also on hole ", 0), 0u)
+      << failed.reason;
+  const ValidationReport v = validate(filled);  // the pinch stays as it was, and nothing else is added
+  EXPECT_EQ(v.non_manifold_vertices.count, 1);
+  EXPECT_EQ(v.non_manifold_edges.count, 0);
+}
+
+// A square annulus cut round an island of a grid, the island still joined to the rest by one
+// triangle that touches it at a single vertex (4, 4): the hole's border passes through that vertex
+// twice. It must stay one loop there (each pass joining the island's fan to the triangle's):
+// splitting it would close the island's own fan into a cone, two disks touching at the vertex.
+TEST(FillPinches, AHoleRoundAnIslandJoinedAtOneVertexIsFilledManifold) {
+  const Mesh grid = test::regular_grid(12, 12, 1.0);
+  Mesh holed;
+  holed.V = grid.V;
+  std::vector<int> kept;
+  for (int f = 0; f < grid.num_faces(); ++f) {
+    const Vec3 c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0;
+    const bool annulus = c.x() > 3 && c.x() < 9 && c.y() > 3 && c.y() < 9 && !(c.x() > 4 && c.x() < 8 && c.y() > 4 && c.y() < 8);
+    const bool bridge = c.x() < 4 && c.y() < 3.5;  // the triangle (3,3), (4,3), (4,4)
+    if (!annulus || bridge) kept.push_back(f);
+  }
+  holed.F.resize(static_cast<int>(kept.size()), 3);
+  for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
+  const int pinch = 4 * 13 + 4;
+  ASSERT_FALSE(validate(holed).manifold());  // the pinch
+
+  FillOptions o = options_for(Continuity::G2);
+  o.skip_largest = true;
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, o);
+  for (const auto& h : r.holes)
+    if (h.status != HoleStatus::skipped) {
+      EXPECT_EQ(h.status, HoleStatus::filled) << h.reason;
+    }
+  EXPECT_GE(r.filled, 1);
+  EXPECT_TRUE(filled.F.topRows(holed.num_faces()) == holed.F);
+  EXPECT_TRUE(validate(filled).manifold());
+  const Topology topo = build_topology(filled.F, filled.num_vertices());
+  EXPECT_EQ(boundary_loops(filled.F, topo).size(), 1u);  // the grid's outer border
+  EXPECT_FALSE(boundary_vertex_flags(topo)[pinch]);
+  EXPECT_EQ(connected_components(filled.F, topo).count, 1);
+  EXPECT_LT(filled.V.bottomRows(filled.num_vertices() - holed.num_vertices()).col(2).cwiseAbs().maxCoeff(), 1e-9);
+  std::vector<int> new_faces(filled.num_faces() - holed.num_faces());
+  std::iota(new_faces.begin(), new_faces.end(), holed.num_faces());
+  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+}
+
+// The real-hole protocol's cut of blub at (-0.565203, -0.333718, 0.0970017), radius 8 h: two loops
+// (37 and 26 edges) through one pinch vertex with four border edges, both reported "non-manifold
+// border" before. Each loop joined a fan of the pinch to itself, so relinking makes them one loop
+// through the pinch twice (one patch, counted for one of the holes). Filled, watertight, manifold
+// and without crossings.
+TEST(FillPinches, BlubBallHoleThroughAPinchIsFilled) {
+  const Mesh holed = test::cut_ball(read_mesh(test::data_path("blub.obj")), Vec3(-0.565203, -0.333718, 0.0970017),
+                                    0.307912);
+  const Topology topo = build_topology(holed.F, holed.num_vertices());
+  std::vector<int> border_edges(holed.num_vertices(), 0);
+  for (int e = 0; e < topo.edges.rows(); ++e)
+    if (topo.is_boundary_edge(e)) ++border_edges[topo.edges(e, 0)], ++border_edges[topo.edges(e, 1)];
+  const auto pinches = std::count_if(border_edges.begin(), border_edges.end(), [](int c) { return c > 2; });
+  ASSERT_EQ(pinches, 1);
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, options_for(Continuity::G2, FairMethod::harmonic));
+  EXPECT_EQ(r.filled, static_cast<int>(r.holes.size()));
+  int vertices = 0;
+  for (const auto& h : r.holes) {
+    EXPECT_EQ(h.status, HoleStatus::filled) << h.reason;
+    vertices += h.vertices_added;
+  }
+  EXPECT_EQ(vertices, filled.num_vertices() - holed.num_vertices());
+  expect_watertight(holed, filled);
+  std::vector<int> new_faces(filled.num_faces() - holed.num_faces());
+  std::iota(new_faces.begin(), new_faces.end(), holed.num_faces());
+  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+}
+
+// "filled with G2" means a settled G2 flow: one that stops at its step limit is not G2. With the
+// linear floor (the default) the hole keeps the ∆³ solution the flow started from, labelled so.
+TEST(FillFailures, AFlowWithoutSteadyStateKeepsTheLinearFloorAndSaysSo) {
+  const Mesh holed = test::cut_hole(test::icosphere(3), [](const Vec3& p) { return p.z() > 0.5; });
+  FillOptions o = options_for(Continuity::G2);
+  o.fairing.flow.max_steps = 1;
+  o.fallback_on_failure = false;
+  o.fairing.held_out_rings = 0;  // the flow itself, not the held-out choice, meets the floor
+  Mesh filled = holed, floor = holed;
+  const FillReport r = fill_holes(filled, o);
+  ASSERT_EQ(r.filled, 1) << r.holes.front().reason;
+  const HoleReport& hole = r.holes.front();
+  EXPECT_TRUE(hole.linear);
+  EXPECT_EQ(hole.supported, Continuity::G2);
+  EXPECT_EQ(hole.steps, 0);
+  EXPECT_NE(hole.note.find("the sixth-order flow did not settle (1 steps without a steady state"),
+            std::string::npos) << hole.note;
+  EXPECT_NE(hole.note.find("kept the linear ∆3 solution it started from"), std::string::npos) << hole.note;
+  // Exactly the harmonic method's result.
+  o.fairing.method = FairMethod::harmonic;
+  fill_holes(floor, o);
+  EXPECT_TRUE(filled.V == floor.V);
+  EXPECT_TRUE(filled.F == floor.F);
+}
+
+// Without the floor, a flow that stops at its step limit fails the hole and leaves the mesh as it was.
+TEST(FillFailures, AFlowWithoutSteadyStateAndWithoutFloorIsNotAFill) {
+  const Mesh holed = test::cut_hole(test::icosphere(3), [](const Vec3& p) { return p.z() > 0.5; });
+  FillOptions o = options_for(Continuity::G2);
+  o.fairing.flow.max_steps = 1;
+  o.fairing.linear_floor = false;
+  o.fallback_on_failure = false;
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, o);
+  ASSERT_EQ(r.failed, 1);
+  EXPECT_EQ(r.holes.front().reason.rfind("the sixth-order flow did not settle (1 steps without a steady state, "
+                                         "max|V| ", 0), 0u) << r.holes.front().reason;
+  EXPECT_TRUE(filled.V == holed.V);
+  EXPECT_TRUE(filled.F == holed.F);
+}
+
+TEST(FillFailures, InvalidMeshIsRejectedWithAPreciseMessage) {
+  Mesh prout = read_mesh(test::data_path("lagrange_prout.obj"));
+  try {
+    fill_holes(prout);
+    FAIL() << "no throw";
+  } catch (const InvalidMeshError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("fill_holes: mesh has ", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("non-manifold edges"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FillFailures, APatchThatWouldCrossTheMeshIsRejectedAndTheMeshKept) {
+  // A sphere with its cap removed and a separate vertical sheet standing in the hole: the patch
+  // must cross the sheet.
+  const Mesh holed = test::cut_hole(test::icosphere(3), [](const Vec3& p) { return p.z() > 0.5; });
+  Mesh sheet = test::regular_grid(8, 8, 0.15);  // in z = 0 over [0, 1.2]^2
+  Mesh mesh;
+  mesh.V.resize(holed.num_vertices() + sheet.num_vertices(), 3);
+  mesh.V.topRows(holed.num_vertices()) = holed.V;
+  for (int v = 0; v < sheet.num_vertices(); ++v)  // rotate into the plane x = 0, centred over the hole
+    mesh.V.row(holed.num_vertices() + v) << 0.0, sheet.V(v, 0) - 0.6, sheet.V(v, 1) + 0.2;
+  mesh.F.resize(holed.num_faces() + sheet.num_faces(), 3);
+  mesh.F.topRows(holed.num_faces()) = holed.F;
+  mesh.F.bottomRows(sheet.num_faces()) = sheet.F.array() + holed.num_vertices();
+  const auto loops = boundary_loops(mesh.F, build_topology(mesh.F, mesh.num_vertices()));
+  ASSERT_EQ(loops.size(), 2u);
+  const int hole = loops[0].front() < holed.num_vertices() ? 0 : 1;
+
+  FillOptions o = options_for(Continuity::G0);
+  o.holes = {hole};
+  Mesh filled = mesh;
+  const FillReport r = fill_holes(filled, o);
+  EXPECT_EQ(r.failed, 1);
+  EXPECT_EQ(r.holes[hole].status, HoleStatus::failed);
+  EXPECT_NE(r.holes[hole].reason.find("the faired patch crosses the mesh: new face"), std::string::npos)
+      << r.holes[hole].reason;
+  EXPECT_TRUE(filled.V == mesh.V);
+  EXPECT_TRUE(filled.F == mesh.F);
+
+  o.check_intersections = false;  // without the check the crossing patch goes in
+  EXPECT_EQ(fill_holes(filled, o).filled, 1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The pair test
+
+TEST(FaceIntersection, CrossingTouchingAndDisjointTriangles) {
+  const Vec3 a0(0, 0, 0), a1(1, 0, 0), a2(0, 1, 0);
+  // A triangle piercing a's interior.
+  EXPECT_TRUE(triangles_cross(a0, a1, a2, Vec3(0.2, 0.2, -1), Vec3(0.3, 0.2, 1), Vec3(0.2, 0.3, 1)));
+  // Its edge only touches a's plane at z = 0 (endpoint on the plane): not a crossing.
+  EXPECT_FALSE(triangles_cross(a0, a1, a2, Vec3(0.2, 0.2, 0), Vec3(0.3, 0.2, 1), Vec3(0.2, 0.3, 1)));
+  // Passes beside a.
+  EXPECT_FALSE(triangles_cross(a0, a1, a2, Vec3(2, 2, -1), Vec3(3, 2, 1), Vec3(2, 3, 1)));
+  // A's edge pierces b although no edge of b pierces a.
+  EXPECT_TRUE(triangles_cross(a0, a1, a2, Vec3(0.5, -1, -1), Vec3(0.5, 2, -1), Vec3(0.5, 0.2, 3)));
+  // Parallel planes.
+  EXPECT_FALSE(triangles_cross(a0, a1, a2, Vec3(0, 0, 1e-3), Vec3(1, 0, 1e-3), Vec3(0, 1, 1e-3)));
+}
+
+TEST(FaceIntersection, FindsExactlyTheCrossingPairsOfTwoSheets) {
+  // Two 4x4 grids crossing at right angles: the query faces of one meet the other along a line.
+  const Mesh a = test::regular_grid(4, 4, 0.25);
+  Mesh m;
+  m.V.resize(2 * a.num_vertices(), 3);
+  m.V.topRows(a.num_vertices()) = a.V;
+  for (int v = 0; v < a.num_vertices(); ++v) m.V.row(a.num_vertices() + v) << a.V(v, 0) + 0.1, 0.4, a.V(v, 1) - 0.45;
+  m.F.resize(2 * a.num_faces(), 3);
+  m.F.topRows(a.num_faces()) = a.F;
+  m.F.bottomRows(a.num_faces()) = a.F.array() + a.num_vertices();
+  std::vector<int> query(a.num_faces());
+  for (int f = 0; f < a.num_faces(); ++f) query[f] = f;
+  const auto found = find_face_intersections(m.V, m.F, query);
+  ASSERT_FALSE(found.empty());
+  for (const auto& c : found) {
+    EXPECT_LT(c.query_face, a.num_faces());
+    EXPECT_GE(c.other_face, a.num_faces());
+  }
+  // Each query face on the line y = 0.4 crosses some face of the other sheet; none elsewhere.
+  std::vector<char> crossed(a.num_faces(), 0);
+  for (const auto& c : found) crossed[c.query_face] = 1;
+  for (int f = 0; f < a.num_faces(); ++f) {
+    double lo = 1e9, hi = -1e9;
+    for (int k = 0; k < 3; ++k) lo = std::min(lo, a.V(a.F(f, k), 1)), hi = std::max(hi, a.V(a.F(f, k), 1));
+    EXPECT_EQ(crossed[f] != 0, lo < 0.4 && hi > 0.4) << f;
+  }
+  EXPECT_EQ(find_face_intersections(m.V, m.F, query, 2).size(), 2u);
+}
+
+// A loop small enough that its patch has no interior vertex is closed by its triangulation alone:
+// nothing is faired, so it is labelled C0 (linear), not the continuity that was asked for.
+TEST(FillLabels, APatchWithoutInteriorVertexIsLabelledC0Linear) {
+  const Mesh sphere = test::icosphere(2);
+  Mesh holed = sphere;
+  holed.F = sphere.F.bottomRows(sphere.num_faces() - 1);  // one triangle removed: a 3-edge hole
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, FillOptions{});
+  ASSERT_EQ(r.filled, 1) << r.holes.front().reason;
+  const HoleReport& hole = r.holes.front();
+  EXPECT_EQ(hole.vertices_added, 0);
+  EXPECT_EQ(hole.faces_added, 1);
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "C0 (linear)");
+  EXPECT_NE(hole.note.find("the patch has no interior vertex"), std::string::npos) << hole.note;
+}

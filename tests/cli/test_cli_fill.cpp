@@ -1,0 +1,127 @@
+// End-to-end tests of `fairsurf fill`: per-hole lines, hole selection, the JSON log, exit codes.
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/topology.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "scratch_dir.h"
+#include "test_support.h"
+
+namespace fs = std::filesystem;
+using namespace fairsurf;
+
+namespace {
+
+class CliFill : public test::ScratchDirTest {
+ protected:
+  std::string path(const std::string& name) const { return file(name); }
+  static std::string quoted(const std::string& s) { return "'" + s + "'"; }
+};
+
+int loop_count(const Mesh& m) {
+  return static_cast<int>(boundary_loops(m.F, build_topology(m.F, m.num_vertices())).size());
+}
+
+}  // namespace
+
+TEST_F(CliFill, SelectedHolesAreFilledOneLineEachWithALog) {
+  const std::string in = test::data_path("airplane_holes.obj");
+  const auto run = test::run_cli("fill " + quoted(in) + " -o " + quoted(path("out.ply")) + " --holes 0,3 --log " +
+                                 quoted(path("log.json")));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  for (const char* line : {"hole 0 (", "hole 3 ("}) {
+    const auto at = run.out.find(line);
+    ASSERT_NE(at, std::string::npos) << run.out;
+    EXPECT_NE(run.out.substr(at, run.out.find('\n', at) - at).find("): filled, +"), std::string::npos) << run.out;
+  }
+  EXPECT_NE(run.out.find("border edges): skipped: not selected"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("filled 2 of 2 selected holes"), std::string::npos) << run.out;
+
+  const Mesh input = read_mesh(in), output = read_mesh(path("out.ply"));
+  EXPECT_EQ(loop_count(input), 27);
+  EXPECT_EQ(loop_count(output), 25);
+  EXPECT_GT(output.num_vertices(), input.num_vertices());
+
+  std::ifstream log_file(path("log.json"));
+  const auto log = nlohmann::json::parse(log_file);
+  ASSERT_EQ(log["holes"].size(), 27u);
+  EXPECT_EQ(log["holes"][0]["status"], "filled");
+  EXPECT_EQ(log["holes"][1]["status"], "skipped");
+  // The hole gets the flow or its linear floor, whichever re-predicts the held-out rings better.
+  const auto& hole = log["holes"][0];
+  ASSERT_TRUE(hole["held_out_flow_error"].is_number()) << hole.dump();
+  ASSERT_TRUE(hole["held_out_linear_error"].is_number()) << hole.dump();
+  const bool flow_wins = hole["held_out_flow_error"].get<double>() <= hole["held_out_linear_error"].get<double>();
+  EXPECT_EQ(hole["delivered"], flow_wins ? "G2" : "C2 (linear)") << hole.dump();
+  EXPECT_EQ(hole["linear"], !flow_wins);
+  EXPECT_EQ(hole.contains("steps_log"), flow_wins);
+  EXPECT_GE(hole["harmonic_solves"].get<int>(), 1);  // the flow's ∆³ start, or the floor itself
+  EXPECT_EQ(log["filled"], 2);
+}
+
+TEST_F(CliFill, ExitCodes) {
+  const std::string out = quoted(path("out.obj"));
+  auto run = test::run_cli("fill /nonexistent/mesh.obj -o " + out);
+  EXPECT_EQ(run.exit_code, 2) << run.out;
+
+  run = test::run_cli("fill " + quoted(test::data_path("lagrange_prout.obj")) + " -o " + out);
+  EXPECT_EQ(run.exit_code, 3) << run.out;
+  EXPECT_NE(run.out.find("fairsurf: error: fill_holes: mesh has "), std::string::npos) << run.out;
+  EXPECT_FALSE(fs::exists(path("out.obj")));
+
+  const std::string copy = path("in.off");
+  fs::copy_file(test::data_path("cgal_mech_holes_shark.off"), copy);
+  run = test::run_cli("fill " + quoted(copy) + " -o " + quoted(copy));
+  EXPECT_EQ(run.exit_code, 5) << run.out;
+
+  run = test::run_cli("fill " + quoted(copy) + " -o " + out + " --holes 9");
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_NE(run.out.find("fill_holes: hole 9 is outside [0, 4)"), std::string::npos) << run.out;
+}
+
+TEST_F(CliFill, SomeHolesFailingExitsFourAndKeepsTheFilledOnes) {
+  // A grid with two square holes pinched at one vertex and one clean hole; one pinched hole is
+  // selected without the other (unfillable alone) and the clean one.
+  const Mesh grid = test::regular_grid(24, 12, 1.0);
+  Mesh holed;
+  holed.V = grid.V;
+  std::vector<int> kept;
+  for (int f = 0; f < grid.num_faces(); ++f) {
+    const Eigen::RowVector3d c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3;
+    const bool removed = (c.x() > 4 && c.x() < 6 && c.y() > 4 && c.y() < 6) ||
+                         (c.x() > 6 && c.x() < 8 && c.y() > 6 && c.y() < 8) ||
+                         (c.x() > 16 && c.x() < 18 && c.y() > 4 && c.y() < 6);
+    if (!removed) kept.push_back(f);
+  }
+  holed.F.resize(static_cast<int>(kept.size()), 3);
+  for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
+  write_mesh(path("pinched.obj"), holed);
+
+  const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  const int pinch = 6 * 25 + 6;
+  int pinched = -1, clean = -1;
+  for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
+    if (loops[i].size() > 20) continue;  // the outer border
+    if (std::count(loops[i].begin(), loops[i].end(), pinch) == 0)
+      clean = i;
+    else if (pinched < 0)
+      pinched = i;
+  }
+  ASSERT_GE(pinched, 0);
+  ASSERT_GE(clean, 0);
+  const auto run = test::run_cli("fill " + quoted(path("pinched.obj")) + " -o " + quoted(path("out.obj")) +
+                                 " --holes " + std::to_string(pinched) + "," + std::to_string(clean));
+  EXPECT_EQ(run.exit_code, 4) << run.out;
+  EXPECT_NE(run.out.find("failed: non-manifold border: vertex " + std::to_string(pinch) + " is also on hole "),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("still holds the 1 holes that were filled"), std::string::npos) << run.out;
+  const Mesh out = read_mesh(path("out.obj"));
+  EXPECT_GT(out.num_faces(), holed.num_faces());
+}

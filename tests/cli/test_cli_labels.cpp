@@ -1,0 +1,176 @@
+// End-to-end tests that results are labelled as what they are and that data is not lost silently
+// (issue #16): no fill that only duplicates a face, no curvature of the old shape on a moved mesh, no
+// "steady" that was not, no region property dropped by the output format, true STL counts.
+#include <fairsurf/io/io.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "analytic_meshes.h"
+#include "scratch_dir.h"
+#include "test_support.h"
+
+namespace fs = std::filesystem;
+using namespace fairsurf;
+
+namespace {
+
+class CliLabels : public test::ScratchDirTest {
+ protected:
+  // Built with append: GCC 12 warns falsely (-Wrestrict) on "'" + a temporary string.
+  std::string path(const std::string& name) const { return std::string("'").append(file(name)).append("'"); }
+};
+
+}  // namespace
+
+// The loop around a lone triangle bounds that triangle already: filling it would add the same
+// face reversed, which is a duplicate, not a G2 (or any) patch.
+TEST_F(CliLabels, LoneTriangleIsNotFilledWithItsOwnFaceReversed) {
+  std::ofstream(file("tri.obj")) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const auto run = test::run_cli("fill " + path("tri.obj") + " -o " + path("out.obj"));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("hole 0 (3 border edges): skipped: the loop runs around a lone triangle"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("filled 0 of 0 selected holes"), std::string::npos) << run.out;
+  EXPECT_EQ(read_mesh(file("out.obj")).num_faces(), 1);
+}
+
+// Curvatures written by `curvature` describe the input's shape: a command that moves vertices
+// drops them (and says so) but keeps the properties that are not derived from the shape.
+TEST_F(CliLabels, CommandsThatMoveVerticesDropStaleCurvatures) {
+  Mesh sphere = test::icosphere(2);
+  sphere.vertex_scalars["label"] = Eigen::VectorXd::LinSpaced(sphere.num_vertices(), 0, 1);
+  write_mesh(file("sphere.ply"), sphere);
+  auto run = test::run_cli("curvature " + path("sphere.ply") + " -o " + path("c.ply"));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  ASSERT_TRUE(read_mesh(file("c.ply")).vertex_scalars.count("H"));
+
+  run = test::run_cli("smooth " + path("c.ply") + " -o " + path("s.ply") + " --steps 1 --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("dropped the vertex properties H, K, k1, k2, fit_status"), std::string::npos) << run.out;
+  const Mesh smoothed = read_mesh(file("s.ply"));
+  for (const char* name : {"H", "K", "k1", "k2", "fit_status"}) EXPECT_FALSE(smoothed.vertex_scalars.count(name)) << name;
+  EXPECT_TRUE(smoothed.vertex_scalars.count("label"));
+
+  run = test::run_cli("fair " + path("c.ply") + " -o " + path("f.ply") + " --region-sphere 0,0,1,0.5 --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_FALSE(read_mesh(file("f.ply")).vertex_scalars.count("H"));
+}
+
+// --steady that stops at --max-steps has not reached a steady state, and says so.
+TEST_F(CliLabels, SteadyRunStoppedAtMaxStepsSaysNotSteady) {
+  const auto run = test::run_cli("smooth '" + test::data_path("torus.obj") + "' -o " + path("t.obj") +
+                                 " --steady --max-steps 2 --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("(max steps)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("NOT steady: --steady stopped at --max-steps 2"), std::string::npos) << run.out;
+}
+
+// The follow-up command that `scene` prints reaches what it reports: no false "NOT steady".
+TEST_F(CliLabels, SceneFollowUpCommandIsNotFlaggedNotSteady) {
+  auto run = test::run_cli("scene fig8 -o " + path("fig8.ply"));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  ASSERT_NE(run.out.find("--region-property free"), std::string::npos) << run.out;
+  run = test::run_cli("fair " + path("fig8.ply") + " -o " + path("out.ply") + " --region-property free --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_EQ(run.out.find("NOT steady"), std::string::npos) << run.out;
+}
+
+// A region scene's free region is the vertex property 'free', which only PLY stores: another
+// format would drop it silently and the printed `fair --region-property free` would then fail.
+TEST_F(CliLabels, RegionSceneRefusesFormatsWithoutProperties) {
+  const auto run = test::run_cli("scene fig7 -o " + path("fig7.obj"));
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_NE(run.out.find("which only PLY carries"), std::string::npos) << run.out;
+  EXPECT_FALSE(fs::exists(file("fig7.obj")));
+}
+
+// STL shares no vertices: the summary counts what the file holds.
+TEST_F(CliLabels, ConvertToStlReportsWhatTheFileHolds) {
+  write_mesh(file("sphere.obj"), test::icosphere(1));
+  const auto run = test::run_cli("convert " + path("sphere.obj") + " -o " + path("sphere.stl"));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find(": 80 triangles (STL stores 3 corners per triangle, no shared vertices)"), std::string::npos)
+      << run.out;
+  EXPECT_EQ(run.out.find("42 vertices"), std::string::npos) << run.out;
+}
+
+// fill drops every vertex property when it adds vertices (they have no values): it says so.
+TEST_F(CliLabels, FillSaysItDropsVertexProperties) {
+  Mesh open = test::icosphere(2);
+  open.F = open.F.bottomRows(open.F.rows() - 1).eval();
+  open.vertex_scalars["label"] = Eigen::VectorXd::Zero(open.num_vertices());
+  write_mesh(file("open.ply"), open);
+  const auto run = test::run_cli("fill " + path("open.ply") + " -o " + path("f.ply") + " --max-steps 5 --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("the output has no vertex properties or colours"), std::string::npos) << run.out;
+  EXPECT_TRUE(read_mesh(file("f.ply")).vertex_scalars.empty());
+}
+
+TEST_F(CliLabels, BlendSaysItDropsVertexProperties) {
+  ASSERT_EQ(test::run_cli("scene fig8 -o " + path("fig8.ply")).exit_code, 0);  // carries 'free'
+  const auto run = test::run_cli("blend " + path("fig8.ply") + " -o " + path("b.ply") + " --max-steps 1 --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("so blend drops them all"), std::string::npos) << run.out;
+  EXPECT_TRUE(read_mesh(file("b.ply")).vertex_scalars.empty());
+}
+
+// f = K is ill-posed where K <= 0 (method.md §4): blend says so as smooth does.
+TEST_F(CliLabels, BlendWarnsWhenFIsNotParabolic) {
+  ASSERT_EQ(test::run_cli("scene fig3 -o " + path("fig3.ply") + " --edge-length 0.3").exit_code, 0);
+  const auto run =
+      test::run_cli("blend " + path("fig3.ply") + " -o " + path("b.ply") + " --f K --max-steps 5 --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("fairsurf: warning: the chosen f is not parabolic at "), std::string::npos) << run.out;
+}
+
+// fill warns per hole when f is not parabolic on the flow's input (f = K on blub's hole region),
+// whether the hole then got the flow or the linear floor, and its log says where.
+TEST_F(CliLabels, FillWarnsWhenFIsNotParabolic) {
+  const auto run = test::run_cli("fill " + test::data_path("blub_open.obj") + " -o " + path("f.ply") +
+                                 " --f K --log " + path("f.json") + " --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("fairsurf: warning: hole 0: the chosen f is not parabolic at "), std::string::npos)
+      << run.out;
+  std::ifstream in(file("f.json"));
+  const nlohmann::json log = nlohmann::json::parse(in);
+  const auto& w = log["holes"][0]["well_posedness"];
+  EXPECT_GT(w["violating_vertices"].get<int>(), 0);
+  EXPECT_LE(w["violating_vertices"].get<int>(), w["vertices"].get<int>());
+  const auto quiet_h = test::run_cli("fill " + test::data_path("blub_open.obj") + " -o " + path("h.ply") + " --quiet");
+  EXPECT_EQ(quiet_h.out.find("not parabolic"), std::string::npos) << quiet_h.out;
+}
+
+// The summary counts the filled holes by what each got; the harmonic method is linear C2, not G2.
+TEST_F(CliLabels, FillSummaryCountsHolesPerDeliveredContinuity) {
+  // A sphere without its cap z > 0.7: one hole wide enough for interior vertices.
+  const Mesh sphere = test::icosphere(3);
+  Mesh open;
+  open.V = sphere.V;
+  std::vector<int> kept;
+  for (int f = 0; f < sphere.num_faces(); ++f)
+    if (sphere.V(sphere.F(f, 0), 2) + sphere.V(sphere.F(f, 1), 2) + sphere.V(sphere.F(f, 2), 2) < 3 * 0.7)
+      kept.push_back(f);
+  open.F.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (std::size_t k = 0; k < kept.size(); ++k) open.F.row(static_cast<Eigen::Index>(k)) = sphere.F.row(kept[k]);
+  write_mesh(file("open.obj"), open);
+  const auto run = test::run_cli("fill " + path("open.obj") + " -o " + path("f.obj") + " --method harmonic --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("filled 1 of 1 selected holes of " + file("open.obj") + " (1 C2 (linear); 0 failed"),
+            std::string::npos)
+      << run.out;
+}
+
+// Without --continuity G1/G0 a fill runs no lower-order flow: hand_lowres's hole once got a flat G0
+// lid at 117° after G2 and G1 had failed, with exit 0.
+TEST_F(CliLabels, FillRunsNoLowerContinuityUnlessAsked) {
+  const auto run = test::run_cli("fill '" + test::data_path("hand_lowres.obj") + "' -o " + path("h.obj"));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_EQ(run.out.find(" G1"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find(" G0"), std::string::npos) << run.out;
+}

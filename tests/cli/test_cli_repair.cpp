@@ -1,0 +1,121 @@
+// End-to-end tests of `fairsurf repair`, of --repair on the other commands, of the hint that
+// refusals of repairable meshes end with, and of the inputs that once crashed the CLI
+// (tests/regressions/: every command must exit with a documented code on each).
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/validate.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "scratch_dir.h"
+#include "test_support.h"
+
+namespace fs = std::filesystem;
+using namespace fairsurf;
+
+namespace {
+
+class CliRepair : public test::ScratchDirTest {
+ protected:
+  std::string path(const std::string& name) const { return file(name); }
+  static std::string quoted(const std::string& s) { return "'" + s + "'"; }
+  static std::string data(const std::string& name) { return quoted(test::data_path(name)); }
+};
+
+TEST_F(CliRepair, RepairsTheHourglassAndSaysWhat) {
+  const auto r = test::run_cli("repair " + data("hourglass_ico.obj") + " -o " + quoted(path("out.obj")));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("1 vertex split, 1 vertex copy added"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("23 -> 24 vertices"), std::string::npos) << r.out;
+  const ValidationReport v = validate(read_mesh(path("out.obj")));
+  EXPECT_TRUE(v.manifold());
+  EXPECT_EQ(v.duplicate_vertex_positions.count, 1);
+}
+
+TEST_F(CliRepair, JsonHasEveryCountAndTheFindingsLeft) {
+  const auto r = test::run_cli("repair --json " + data("moebius_160_10.ply") + " -o " + quoted(path("out.ply")));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"vertices_merged", "duplicate_faces_removed", "caps_flipped", "non_manifold_edges",
+                          "vertices_split", "faces_flipped", "non_orientable_components", "changed"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["non_orientable_components"], 1);
+  EXPECT_EQ(j["remaining_findings"]["non_orientable_components"], 1);
+}
+
+TEST_F(CliRepair, RefusesToOverwriteItsInputAndAnEmptyResult) {
+  const std::string copy = path("in.obj");
+  fs::copy_file(test::data_path("hourglass_ico.obj"), copy);
+  EXPECT_EQ(test::run_cli("repair " + quoted(copy) + " -o " + quoted(copy)).exit_code, 5);
+  const auto r = test::run_cli("repair " + quoted(FAIRSURF_REGRESSIONS_DIR "/all_faces_invalid.obj") + " -o " +
+                               quoted(path("out.obj")));
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_NE(r.out.find("no valid face"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(path("out.obj")));
+}
+
+TEST_F(CliRepair, RefusalsOfRepairableMeshesEndWithTheHintAndRepairMakesThemPass) {
+  const std::string hint = "(run with --repair, or `fairsurf repair`)";
+  auto r = test::run_cli("smooth " + data("hourglass_ico.obj") + " -o " + quoted(path("s.obj")) + " --steps 1");
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.out.find("smooth: mesh has 1 non-manifold vertex (first: 22) " + hint), std::string::npos) << r.out;
+  // Non-orientable: repair cannot help, so no hint.
+  r = test::run_cli("smooth " + data("moebius_160_10.ply") + " -o " + quoted(path("m.obj")) + " --steps 1");
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_EQ(r.out.find(hint), std::string::npos) << r.out;
+
+  r = test::run_cli("smooth --repair " + data("hourglass_ico.obj") + " -o " + quoted(path("s.obj")) +
+                    " --steps 1 --fixed-rings 0 --quiet --log " + quoted(path("s.json")));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("repaired "), std::string::npos) << r.out;
+  std::ifstream log(path("s.json"));
+  const auto j = nlohmann::json::parse(log);
+  EXPECT_EQ(j["repair"]["vertices_split"], 1);
+
+  r = test::run_cli("fill --repair --method harmonic " + data("lagrange_prout.obj") + " -o " + quoted(path("f.obj")) +
+                    " --quiet --log " + quoted(path("f.json")));
+  EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 4) << r.out;  // every refusal is gone; holes may fail
+  EXPECT_EQ(r.out.find("mesh has"), std::string::npos) << r.out;
+  std::ifstream fill_log(path("f.json"));
+  EXPECT_GT(nlohmann::json::parse(fill_log)["repair"]["non_manifold_edges"].get<int>(), 0);
+
+  r = test::run_cli("curvature --repair --json " + data("cube_soup.obj") + " -o " + quoted(path("c.ply")));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["repair"]["vertices_merged"], 16);
+}
+
+TEST_F(CliRepair, EveryCommandExitsWithACodeOnEveryRegressionInput) {
+  for (const auto& entry : fs::directory_iterator(FAIRSURF_REGRESSIONS_DIR)) {
+    const std::string in = quoted(entry.path().string());
+    const std::string ext = entry.path().extension().string();
+    SCOPED_TRACE(entry.path().filename().string());
+    const std::string force = " --force";
+    for (const std::string& command :
+         {"info " + in, "info --strict --json " + in, "curvature " + in + " -o " + quoted(path("c.ply")) + force,
+          "smooth " + in + " -o " + quoted(path("s" + ext)) + " --steps 2 --quiet" + force,
+          "smooth --repair " + in + " -o " + quoted(path("s" + ext)) + " --steps 2 --quiet" + force,
+          "fill --method harmonic " + in + " -o " + quoted(path("f" + ext)) + " --quiet" + force,
+          "fair " + in + " -o " + quoted(path("r" + ext)) + " --region-sphere 0,0,0,0.5 --max-steps 2 --quiet" + force,
+          "blend " + in + " -o " + quoted(path("b" + ext)) + " --max-steps 2 --quiet" + force,
+          "render " + in + " -o " + quoted(path("r.png")) + force, "repair " + in + " -o " + quoted(path("p" + ext)) + force,
+          "convert " + in + " -o " + quoted(path("v.off")) + force}) {
+      const auto r = test::run_cli(command);
+      EXPECT_GE(r.exit_code, 0) << command << "\n" << r.out;  // -1: killed by a signal
+      EXPECT_LE(r.exit_code, 5) << command << "\n" << r.out;
+    }
+  }
+}
+
+TEST_F(CliRepair, SmoothingAMeshWithoutFacesFailsCleanly) {
+  for (const char* name : {"empty.off", "all_faces_invalid.obj", "zero_triangles.stl"}) {
+    const auto r = test::run_cli("smooth " + quoted(std::string(FAIRSURF_REGRESSIONS_DIR "/") + name) + " -o " +
+                                 quoted(path("out.obj")));
+    EXPECT_EQ(r.exit_code, 3) << name << ": " << r.out;
+    EXPECT_FALSE(fs::exists(path("out.obj"))) << name;
+  }
+}
+
+}  // namespace
