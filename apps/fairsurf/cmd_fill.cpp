@@ -10,7 +10,6 @@
 #include <memory>
 #include <numbers>
 
-#include <unistd.h>
 
 #include "command.h"
 #include "flow_log.h"
@@ -140,13 +139,11 @@ void run_fill(const FillArgs& args) {
   Mesh mesh = read_input(args.input);
   drop_shape_properties(mesh, args.input);
   const auto repaired = repair_input(mesh, args.repair, args.input);
-  const bool progress = !args.quiet && ::isatty(STDERR_FILENO);
+  const bool progress = progress_wanted(args.quiet);
   std::map<int, nlohmann::json> steps;  // by the first hole of each jointly faired group
   const FillObserver observer = [&](std::span<const int> holes, const StepRecord& r) {
     steps[holes.front()].push_back(to_json(r));
-    if (progress)
-      std::fprintf(stderr, "\r  hole %d  step %d  tau %.3g  max|V| %.3g%s   ", holes.front(), r.step, r.tau,
-                   r.max_velocity, r.accepted ? "" : "  (rejected)");
+    if (progress) print_progress(r, "hole " + std::to_string(holes.front()) + "  ");
   };
   const bool had_vertex_data = has_vertex_data(mesh);
   FillReport report = fill_holes(mesh, options, observer);

@@ -62,20 +62,25 @@ void warn_if_not_parabolic(const WellPosedness& w, const std::string& where) {
 
 void warn_if_not_parabolic(const FlowReport& report) { warn_if_not_parabolic(report.well_posedness, ""); }
 
+bool progress_wanted(bool quiet) { return !quiet && ::isatty(STDERR_FILENO); }
+
+void print_progress(const StepRecord& r, const std::string& prefix) {
+  std::fprintf(stderr, "\r  %sstep %d  t %.3g  tau %.3g  E %.4g  max|V| %.3g%s   ", prefix.c_str(), r.step, r.time,
+               r.tau, r.energy, r.max_velocity, r.accepted ? "" : "  (rejected)");
+}
+
 FlowCommandRun::FlowCommandRun(std::string command, std::string log_path, bool quiet, nlohmann::json log,
                                FlowStepKind step_kind)
     : command_(std::move(command)),
       log_path_(std::move(log_path)),
-      progress_(!quiet && ::isatty(STDERR_FILENO)),
+      progress_(progress_wanted(quiet)),
       watch_stagnation_(step_kind == FlowStepKind::implicit_flow),
       log_(std::move(log)) {}
 
 FlowObserver FlowCommandRun::observer() {
   return [this](const StepRecord& r) {
     steps_.push_back(to_json(r));
-    if (progress_)
-      std::fprintf(stderr, "\r  step %d  t %.3g  tau %.3g  E %.4g  max|V| %.3g%s   ", r.step, r.time, r.tau,
-                   r.energy, r.max_velocity, r.accepted ? "" : "  (rejected)");
+    if (progress_) print_progress(r);
     if (r.attempt == 1) recent_times_.clear();  // a new run (blend's descent continuation): its own window
     if (!r.accepted || !watch_stagnation_) return;
     recent_times_.push_back(r.time);

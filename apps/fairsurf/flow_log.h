@@ -26,6 +26,12 @@ void warn_if_not_parabolic(const FlowReport& report);
 /// The same with a prefix naming where (fill: "hole N: ").
 void warn_if_not_parabolic(const WellPosedness& w, const std::string& where);
 
+/// Whether to draw a progress line: not --quiet, and stderr is a terminal.
+bool progress_wanted(bool quiet);
+/// Redraws the progress line on stderr for one trial step: "\r  <prefix>step N  t  tau  E  max|V|".
+/// `prefix` names the part when a command runs several flows (fill: "hole 3  ").
+void print_progress(const StepRecord& r, const std::string& prefix = "");
+
 /// One flow command's run: a progress line on a terminal (unless quiet), every trial step kept for
 /// the log, and the log written to `log_path` (none if empty) when the run ends either way.
 class FlowCommandRun {

@@ -1,5 +1,6 @@
 #include "energy_descent.h"
 #include "flow_failure.h"
+#include "flow_options.h"
 #include "flow_step.h"
 #include "stopwatch.h"
 
@@ -29,31 +30,6 @@ std::string format(const char* fmt, double a, double b = 0, double c = 0) {
   char buffer[160];
   std::snprintf(buffer, sizeof buffer, fmt, a, b, c);
   return buffer;
-}
-
-void check_options(const FlowOptions& o) {
-  const auto& c = o.step_control;
-  const char* problem = nullptr;
-  if (!(o.tau > 0)) problem = "tau must be positive";
-  else if (!(o.tau_max >= o.tau)) problem = "tau_max must be at least tau";
-  else if (o.max_steps < 0) problem = "max_steps must be non-negative";
-  else if (!(o.end_time > 0)) problem = "end_time must be positive";
-  else if (!(o.steady_tolerance >= 0)) problem = "steady_tolerance must be non-negative";
-  else if (!(o.steady_relative_tolerance >= 0)) problem = "steady_relative_tolerance must be non-negative";
-  else if (!(o.relative_epsilon >= 0)) problem = "relative_epsilon must be non-negative";
-  else if (!(o.curvature_scale >= 0)) problem = "curvature_scale must be non-negative";
-  else if (!(o.runaway_energy_factor > 1)) problem = "runaway_energy_factor must exceed 1";
-  else if (!(o.tangential_relaxation >= 0 && o.tangential_relaxation <= 1))
-    problem = "tangential_relaxation must lie in [0, 1]";
-  else if (o.refactor_interval < 1) problem = "refactor_interval must be at least 1";
-  else if (!(o.steady_energy_tolerance >= 0)) problem = "steady_energy_tolerance must be non-negative";
-  else if (!(c.max_displacement_ratio > 0)) problem = "step_control.max_displacement_ratio must be positive";
-  else if (std::isnan(c.jacobian_dominance)) problem = "step_control.jacobian_dominance must not be NaN";
-  else if (!(c.max_energy_growth >= 1)) problem = "step_control.max_energy_growth must be at least 1";
-  else if (!(c.reject_factor > 0 && c.reject_factor < 1)) problem = "step_control.reject_factor must lie in (0, 1)";
-  else if (!(c.accept_factor >= 1)) problem = "step_control.accept_factor must be at least 1";
-  else if (c.max_consecutive_rejections < 0) problem = "step_control.max_consecutive_rejections must be non-negative";
-  if (problem) throw InvalidArgument(std::string("run_flow: ") + problem);
 }
 
 // The map between the caller's coordinates and the flow's: x_flow = (x − centre) · scale.
@@ -465,44 +441,15 @@ FlowReport FlowRun::run() {
 
 }  // namespace
 
-const char* to_string(StepRejection reason) {
-  switch (reason) {
-    case StepRejection::none: return "none";
-    case StepRejection::displacement: return "displacement";
-    case StepRejection::energy: return "energy";
-    case StepRejection::non_finite: return "non-finite";
-    case StepRejection::inverted_face: return "inverted face";
-    case StepRejection::solver: return "solver";
-  }
-  return "?";
-}
-
-const char* to_string(FlowStopReason reason) {
-  switch (reason) {
-    case FlowStopReason::max_steps: return "max steps";
-    case FlowStopReason::end_time: return "end time";
-    case FlowStopReason::steady: return "steady";
-    case FlowStopReason::interrupted: return "interrupted";
-  }
-  return "?";
-}
-
-std::string unsettled_reason(const FlowReport& report) {
-  const bool diverged = !(report.final_max_velocity <= report.initial_max_velocity);
-  return std::string(diverged ? "diverged" : "did not settle") + " (" +
-         std::to_string(report.accepted_steps) + " steps without a steady state, max|V| " +
-         format("%.3g -> %.3g", report.initial_max_velocity, report.final_max_velocity) + ")";
-}
-
 FlowReport run_flow(Vertices& V, const Faces& F, const Region& region, const FlowOptions& options,
                     const FlowObserver& observer) {
-  check_options(options);  // before the faces, as always
+  flow_detail::check_options(options);  // before the faces, as always
   return run_flow(V, F, build_topology(F, static_cast<int>(V.rows())), region, options, observer);
 }
 
 FlowReport run_flow(Vertices& V, const Faces& F, const Topology& topo, const Region& region,
                     const FlowOptions& options, const FlowObserver& observer) {
-  check_options(options);
+  flow_detail::check_options(options);
   if (topo.num_vertices != V.rows() || topo.num_faces != F.rows())
     throw InvalidArgument("run_flow: the topology was built for another mesh");
   FlowRun run(V, F, topo, region, options, observer);
@@ -522,7 +469,7 @@ FlowReport run_flow(Vertices& V, const Faces& F, const Topology& topo, const Reg
 
 FlowReport run_flow(Vertices& V, const Faces& F, const FlowOptions& options,
                     const FlowObserver& observer) {
-  check_options(options);
+  flow_detail::check_options(options);
   const Topology topo = build_topology(F, static_cast<int>(V.rows()));
   const int rings = rings_needed(Continuity::G2);
   const std::vector<int> free = interior_vertices(topo, rings);

@@ -1,0 +1,36 @@
+#include <fairsurf/flow/flow.h>
+#include <fairsurf/mesh/errors.h>
+
+#include "flow_options.h"
+
+#include <cmath>
+#include <string>
+
+namespace fairsurf::flow_detail {
+
+void check_options(const FlowOptions& o) {
+  const auto& c = o.step_control;
+  const char* problem = nullptr;
+  if (!(o.tau > 0)) problem = "tau must be positive";
+  else if (!(o.tau_max >= o.tau)) problem = "tau_max must be at least tau";
+  else if (o.max_steps < 0) problem = "max_steps must be non-negative";
+  else if (!(o.end_time > 0)) problem = "end_time must be positive";
+  else if (!(o.steady_tolerance >= 0)) problem = "steady_tolerance must be non-negative";
+  else if (!(o.steady_relative_tolerance >= 0)) problem = "steady_relative_tolerance must be non-negative";
+  else if (!(o.relative_epsilon >= 0)) problem = "relative_epsilon must be non-negative";
+  else if (!(o.curvature_scale >= 0)) problem = "curvature_scale must be non-negative";
+  else if (!(o.runaway_energy_factor > 1)) problem = "runaway_energy_factor must exceed 1";
+  else if (!(o.tangential_relaxation >= 0 && o.tangential_relaxation <= 1))
+    problem = "tangential_relaxation must lie in [0, 1]";
+  else if (o.refactor_interval < 1) problem = "refactor_interval must be at least 1";
+  else if (!(o.steady_energy_tolerance >= 0)) problem = "steady_energy_tolerance must be non-negative";
+  else if (!(c.max_displacement_ratio > 0)) problem = "step_control.max_displacement_ratio must be positive";
+  else if (std::isnan(c.jacobian_dominance)) problem = "step_control.jacobian_dominance must not be NaN";
+  else if (!(c.max_energy_growth >= 1)) problem = "step_control.max_energy_growth must be at least 1";
+  else if (!(c.reject_factor > 0 && c.reject_factor < 1)) problem = "step_control.reject_factor must lie in (0, 1)";
+  else if (!(c.accept_factor >= 1)) problem = "step_control.accept_factor must be at least 1";
+  else if (c.max_consecutive_rejections < 0) problem = "step_control.max_consecutive_rejections must be non-negative";
+  if (problem) throw InvalidArgument(std::string("run_flow: ") + problem);
+}
+
+}  // namespace fairsurf::flow_detail
