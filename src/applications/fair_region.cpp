@@ -180,6 +180,11 @@ FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<con
                                  bool* whole) {
   const auto start = detail::Clock::now();
   if (free_vertices.empty()) throw InvalidArgument("fair_region: the free region is empty");
+  const FlowKind wanted = flow_for(options.continuity);
+  if (options.flow.kind && *options.flow.kind != wanted)
+    throw InvalidArgument(std::string("fair_region: flow.kind ") + to_string(*options.flow.kind) + " cannot reach " +
+                          to_string(options.continuity) + ", which needs the " + to_string(wanted) +
+                          " flow; leave flow.kind unset");
   const bool uncut = whole_neighbourhood(mesh, topo, free_vertices, options.submesh_rings);
   if (whole) *whole = uncut;
   Submesh sub = uncut ? whole_submesh(mesh, free_vertices)

@@ -64,7 +64,7 @@ Eigen::VectorXd local_edge_lengths(const Vertices& X, const Topology& topo) {
 
 // The energy descent applies to the sixth-order flow only; the other flows step in time.
 bool descends(const FlowOptions& options) {
-  return options.step_kind == FlowStepKind::energy_descent && options.kind == FlowKind::sixth_order;
+  return options.step_kind == FlowStepKind::energy_descent && options.kind.value_or(FlowKind::sixth_order) == FlowKind::sixth_order;
 }
 
 // The energy descent's matrix N + diag(A)/(2τ) is symmetric: MUMPS factors it as LDLᵀ.
@@ -150,7 +150,7 @@ void FlowRun::initialize() {
   X_ = (V_.rowwise() - norm_.centre) * norm_.scale;
   report_.length_scale = norm_.scale;
 
-  problem_.kind = options_.kind;
+  problem_.kind = options_.kind.value_or(FlowKind::sixth_order);
   problem_.region = &region_;
   problem_.energy_weight.resize(n);
   for (int v = 0; v < n; ++v) problem_.energy_weight[v] = region_.ring[v] >= 0 ? 1.0 : 0.0;
@@ -161,7 +161,7 @@ void FlowRun::initialize() {
   input_face_direction_ = face_directions(X_, F_, moving_faces_);
   flow_detail::initialize_geometry(X_, F_, topo_, options_.fit, state_);
   const SurfaceGeometry& geo = state_.ops.geometry;
-  if (options_.kind == FlowKind::sixth_order) {
+  if (problem_.kind == FlowKind::sixth_order) {
     problem_.functions = parse_energy_functions(options_.functions);
     problem_.scale.curvature =
         options_.curvature_scale > 0 ? options_.curvature_scale : curvature_scale(geo.H, geo.K);
@@ -178,7 +178,7 @@ void FlowRun::initialize() {
   // Energy changes below the floor are round-off: 1e-12 of κ² Σ_l ∫ f_l² dA for the sixth order
   // (the size ‖∇f‖² would have if f varied on the curvature scale), of the energy itself otherwise.
   double energy_scale = state_.energy;
-  if (options_.kind == FlowKind::sixth_order) {
+  if (problem_.kind == FlowKind::sixth_order) {
     energy_scale = 0;
     for (const EnergyTerms& t : state_.evaluation.terms)
       energy_scale += problem_.energy_weight.dot(geo.area.cwiseProduct(t.values.f.cwiseAbs2()));

@@ -178,6 +178,20 @@ TEST(FairRegion, RejectsBadInput) {
   } catch (const InvalidArgument& e) {
     EXPECT_STREQ(e.what(), "parse_fair_method: 'spline' is not a method (expected flow or harmonic)");
   }
+  // The flow follows from the continuity; a kind that contradicts it is refused, not replaced.
+  FairRegionOptions contradicting;
+  contradicting.flow.kind = FlowKind::mean_curvature;
+  try {
+    fair_region(m, std::vector<int>{1}, contradicting);
+    FAIL() << "no exception";
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "fair_region: flow.kind mean-curvature cannot reach G2, which needs the sixth-order "
+                           "flow; leave flow.kind unset");
+  }
+  FairRegionOptions agreeing;
+  agreeing.continuity = Continuity::G0;
+  agreeing.flow.kind = FlowKind::mean_curvature;
+  EXPECT_EQ(fair_region(m, std::vector<int>{1}, agreeing).flow_kind, FlowKind::mean_curvature);
   m.F(0, 1) = m.F(0, 0);
   EXPECT_THROW(fair_region(m, std::vector<int>{1}), InvalidMeshError);
 }

@@ -31,8 +31,10 @@ FairMethod parse_fair_method(const std::string& name);
 struct FairRegionOptions {
   Continuity continuity = Continuity::G2;
   FairMethod method = FairMethod::flow;
-  /// Flow settings; `kind` is chosen from the continuity, the rest is used as given. The defaults
-  /// here run to a steady state: max|V| under steady_tolerance, at most max_steps steps.
+  /// Flow settings, used as given. Leave `kind` unset: the flow follows from the continuity
+  /// (flow_for; the supported one where the fixed rings fall short), and a kind that contradicts
+  /// the requested continuity is refused (InvalidArgument). The defaults here run to a steady state:
+  /// max|V| under steady_tolerance, at most max_steps steps.
   FlowOptions flow = default_fair_flow_options();
   LinearSolverOptions harmonic_solver;  ///< for method == harmonic (and harmonic_start)
   /// method == flow: start the flow from the cotangent ∆^k x = 0 solution (k = supported
@@ -110,8 +112,8 @@ FlowKind flow_for(Continuity c);
 
 /// Fairs the vertices `free_vertices` of `mesh` (mesh.V updated in place; only free vertices move).
 /// Requires a manifold, consistently oriented mesh without degenerate faces (InvalidMeshError).
-/// Throws InvalidArgument for an empty or out-of-range free set, NumericalError if the flow or the
-/// solve fails — with mesh.V at the last accepted state.
+/// Throws InvalidArgument for an empty or out-of-range free set or a flow.kind that contradicts the
+/// continuity, NumericalError if the flow or the solve fails — with mesh.V at the last accepted state.
 FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
                              const FairRegionOptions& options = {},
                              const FlowObserver& observer = {});

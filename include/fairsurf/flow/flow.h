@@ -67,6 +67,7 @@
 
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -115,7 +116,10 @@ struct StepControlOptions {
 };
 
 struct FlowOptions {
-  FlowKind kind = FlowKind::sixth_order;
+  /// The flow to run. Unset: the sixth-order flow (run_flow, smooth), or in fair_region (and fill
+  /// and blend, which call it) the flow that reaches the requested continuity (flow_for); there a
+  /// kind that contradicts the continuity is refused rather than replaced.
+  std::optional<FlowKind> kind;
   /// The functions f_l of the sixth-order energy (energy_function.h names or formulas).
   std::vector<std::string> functions{"H"};
   /// Regularization ε = relative_epsilon · κ of singular functions (energy_function.h).
