@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "real_holes.h"
+#include "real_holes_rows.h"
 #include "smooth_reference.h"
 #ifdef FAIRSURF_BENCH_CGAL
 #include "cgal_reference.h"
@@ -35,7 +36,7 @@ namespace {
 using namespace fairsurf;
 using bench::DistanceStats;
 
-constexpr double kDegrees = 180.0 / std::numbers::pi;
+using bench::kDegrees;
 constexpr double kNoise = 0.1;  // σ of the normal noise, in h
 // Butterfly rounds of the smooth stand-in: its faces then cut the chord between the mesh's vertices
 // 64 times less deep than the mesh's own (on data/torus.obj it reads a fill's distance to the exact
@@ -144,34 +145,22 @@ std::uint64_t noise_seed(int centre, int radius_h) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Rows, CSV and summaries
+// Rows (bench/support/real_holes_rows.h) and the CSV of every row
 
-std::string csv_text =
-    "section,mesh,centre,radius_h,noise_h,size,status,continuity,steps,seconds,mean_h,max_h,"
-    "baseline_mean_h,baseline_max_h,cgal_mean_h,cgal_max_h,ratio,angle_deg,uncut_angle_deg,fold,cgal_angle_deg,cgal_fold,"
-    "smooth_mean_h,baseline_smooth_mean_h,cgal_smooth_mean_h,smooth_ratio,disks,note\n";
+using bench::add_note;
+using bench::cgal_angle_text;
+using bench::flag_fold;
+using bench::number;
+using bench::pair_text;
+using bench::percent;
+using bench::Row;
+using bench::set_ratios;
+using bench::smooth_text;
+using bench::Tally;
 
-std::string csv_escape(std::string s) {
-  std::replace(s.begin(), s.end(), '"', '\'');
-  return "\"" + s + "\"";
-}
+std::string csv_text = bench::csv_header();
 
-std::string number(double x, const char* format = "%.4g") {
-  if (std::isnan(x)) return "";
-  char text[64];
-  std::snprintf(text, sizeof text, format, x);
-  return text;
-}
-
-struct Row {
-  std::string section, mesh, status, continuity, note, size;
-  int centre = 0, radius_h = 0, steps = 0;
-  double noise = 0, seconds = 0;
-  DistanceStats ours, baseline, cgal;
-  bool has_baseline = false, has_cgal = false, cgal_ok = false, fold = false, cgal_fold = false;
-  bool disks = true;  // fill: the cut removed disks only (a ball across a thin tube removes an annulus)
-  double ratio = NAN, smooth_ratio = NAN, angle = NAN, uncut_angle = NAN, cgal_angle = NAN;
-};
+void add_csv(const Row& row) { csv_text += bench::csv_line(row); }
 
 using Clock = std::chrono::steady_clock;
 
@@ -189,109 +178,6 @@ Row ball_row(const char* section, const Loaded& m, int centre, int radius_h, boo
   row.radius_h = radius_h;
   row.noise = noisy ? kNoise : 0.0;
   return row;
-}
-
-// FOLD: a border angle above 1.5 times the uncut mesh's reading at the same place, or 5°. CGAL's
-// result is judged by the same rule, so that a fold count can be told from the measure's own floor
-// (one-sided fits on a coarse or noisy ring read tens of degrees on any smooth fill).
-bool folds(double angle, double uncut_angle) {
-  return !std::isnan(angle) && !std::isnan(uncut_angle) && angle > std::max(1.5 * uncut_angle, 5.0 / kDegrees);
-}
-
-void flag_fold(Row& row) {
-  row.fold = folds(row.angle, row.uncut_angle);
-  row.cgal_fold = folds(row.cgal_angle, row.uncut_angle);
-}
-
-void set_ratios(Row& row) {
-  row.ratio = row.ours.mean / row.cgal.mean;
-  row.smooth_ratio = row.ours.smooth_mean / row.cgal.smooth_mean;
-}
-
-void add_note(Row& row, const std::string& note) { row.note += (row.note.empty() ? "" : "; ") + note; }
-
-void add_csv(const Row& r) {
-  const auto stat = [](bool has, double x) { return has ? number(x) : std::string(); };
-  csv_text += r.section + "," + r.mesh + "," + std::to_string(r.centre) + "," + std::to_string(r.radius_h) + "," +
-              number(r.noise) + "," + csv_escape(r.size) + "," + csv_escape(r.status) + "," +
-              csv_escape(r.continuity) + "," + std::to_string(r.steps) + "," + number(r.seconds) + "," +
-              stat(r.ours.count > 0, r.ours.mean) + "," + stat(r.ours.count > 0, r.ours.max) + "," +
-              stat(r.has_baseline, r.baseline.mean) + "," + stat(r.has_baseline, r.baseline.max) + "," +
-              stat(r.has_cgal, r.cgal.mean) + "," + stat(r.has_cgal, r.cgal.max) + "," + number(r.ratio) + "," +
-              number(r.angle * kDegrees) + "," + number(r.uncut_angle * kDegrees) + "," + (r.fold ? "1" : "0") +
-              "," + number(r.cgal_angle * kDegrees) + "," + (r.cgal_fold ? "1" : "0") + "," +
-              stat(r.ours.count > 0, r.ours.smooth_mean) + "," + stat(r.has_baseline, r.baseline.smooth_mean) + "," +
-              stat(r.has_cgal, r.cgal.smooth_mean) + "," + number(r.smooth_ratio) + "," + (r.disks ? "1" : "0") +
-              "," + csv_escape(r.note) + "\n";
-}
-
-// CGAL's border angle in degrees, starred when it folds by the same rule.
-std::string cgal_angle_text(const Row& r) {
-  return number(r.cgal_angle * kDegrees, "%.1f") + (r.cgal_fold ? "*" : "");
-}
-
-// The smooth-surface means of fairsurf, the ∆³ baseline and CGAL, and fairsurf's ratio to CGAL's.
-std::string smooth_text(const Row& r) {
-  const auto mean = [](bool has, const DistanceStats& s) { return has ? number(s.smooth_mean, "%.3f") : "-"; };
-  char text[80];
-  std::snprintf(text, sizeof text, "%6s %6s %6s %5s", mean(r.ours.count > 0, r.ours).c_str(),
-                mean(r.has_baseline, r.baseline).c_str(), mean(r.has_cgal, r.cgal).c_str(),
-                number(r.smooth_ratio, "%.2f").c_str());
-  return text;
-}
-
-std::string pair_text(bool has, const DistanceStats& s) {
-  if (!has) return "     -     -";
-  char text[32];
-  std::snprintf(text, sizeof text, "%6.3f %5.2f", s.mean, s.max);
-  return text;
-}
-
-// Ratios of fairsurf's mean distance to CGAL's, and comparisons with the ∆³ baseline's, by one
-// measure (to the uncut mesh, or to its smooth stand-in).
-struct Comparison {
-  int compared = 0, below = 0, baseline_compared = 0, below_baseline = 0;
-  double log_ratio = 0, worst = 0;
-  void ratio(double r) {
-    if (std::isnan(r) || r <= 0) return;
-    ++compared;
-    below += r < 1;
-    log_ratio += std::log(r);
-    worst = std::max(worst, r);
-  }
-  void baseline(double ours, double baseline) {
-    ++baseline_compared;
-    below_baseline += ours < baseline;
-  }
-  std::string text() const {
-    std::string t = "no CGAL comparison";
-    if (compared > 0) {
-      char text[160];
-      std::snprintf(text, sizeof text, "mean distance below CGAL on %d of %d (%.0f%%), geo-mean ratio %.2f, worst %.2fx",
-                    below, compared, 100.0 * below / compared, std::exp(log_ratio / compared), worst);
-      t = text;
-    }
-    return t + ", below D3 on " + std::to_string(below_baseline) + " of " + std::to_string(baseline_compared);
-  }
-};
-
-// Counts over the rows of one section and noise level.
-struct Tally {
-  int rows = 0, failed = 0, g2 = 0, folds = 0, cgal_folds = 0, steady = 0, excluded = 0;
-  Comparison faceted, smooth;
-  // The ratios to CGAL and the comparison with the ∆³ baseline on the same input, by both measures.
-  void compare(const Row& row) {
-    faceted.ratio(row.ratio);
-    smooth.ratio(row.smooth_ratio);
-    if (row.ours.count == 0 || !row.has_baseline) return;
-    faceted.baseline(row.ours.mean, row.baseline.mean);
-    smooth.baseline(row.ours.smooth_mean, row.baseline.smooth_mean);
-  }
-  std::string comparison_text() const { return faceted.text() + "; to the smooth surface: " + smooth.text(); }
-};
-
-std::string percent(int part, int whole) {
-  return whole > 0 ? number(100.0 * part / whole, "%.0f") + "%" : "-";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -314,7 +200,10 @@ std::vector<std::vector<int>> loops_of(const Mesh& mesh) {
 
 std::string border_sizes(const Mesh& cut) {
   std::string text;
-  for (const auto& loop : loops_of(cut)) text += (text.empty() ? "" : "+") + std::to_string(loop.size());
+  for (const auto& loop : loops_of(cut)) {
+    if (!text.empty()) text += '+';
+    text += std::to_string(loop.size());
+  }
   return text;
 }
 

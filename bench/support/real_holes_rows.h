@@ -1,0 +1,95 @@
+// The rows of bench_real_holes: one case's figures, its CSV line and printed columns, and the
+// counts and ratios that a section's summary line gives (docs/fill.md, "Real holes benchmark").
+#pragma once
+
+#include "real_holes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+namespace fairsurf::bench {
+
+inline constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+struct Row {
+  std::string section, mesh, status, continuity, note, size;
+  int centre = 0, radius_h = 0, steps = 0;
+  double noise = 0, seconds = 0;
+  DistanceStats ours, baseline, cgal;
+  bool has_baseline = false, has_cgal = false, cgal_ok = false, fold = false, cgal_fold = false;
+  bool disks = true;  // fill: the cut removed disks only (a ball across a thin tube removes an annulus)
+  double ratio = NAN, smooth_ratio = NAN, angle = NAN, uncut_angle = NAN, cgal_angle = NAN;
+};
+
+// Ratios of fairsurf's mean distance to CGAL's, and comparisons with the ∆³ baseline's, by one
+// measure (to the uncut mesh, or to its smooth stand-in).
+struct Comparison {
+  int compared = 0, below = 0, baseline_compared = 0, below_baseline = 0;
+  double log_ratio = 0, worst = 0;
+  void ratio(double r) {
+    if (std::isnan(r) || r <= 0) return;
+    ++compared;
+    below += r < 1;
+    log_ratio += std::log(r);
+    worst = std::max(worst, r);
+  }
+  void baseline(double ours, double baseline) {
+    ++baseline_compared;
+    below_baseline += ours < baseline;
+  }
+  std::string text() const {
+    std::string t = "no CGAL comparison";
+    if (compared > 0) {
+      char text[160];
+      std::snprintf(text, sizeof text, "mean distance below CGAL on %d of %d (%.0f%%), geo-mean ratio %.2f, worst %.2fx",
+                    below, compared, 100.0 * below / compared, std::exp(log_ratio / compared), worst);
+      t = text;
+    }
+    return t + ", below D3 on " + std::to_string(below_baseline) + " of " + std::to_string(baseline_compared);
+  }
+};
+
+// Counts over the rows of one section and noise level.
+struct Tally {
+  int rows = 0, failed = 0, g2 = 0, folds = 0, cgal_folds = 0, steady = 0, excluded = 0;
+  Comparison faceted, smooth;
+  // The ratios to CGAL and the comparison with the ∆³ baseline on the same input, by both measures.
+  void compare(const Row& row) {
+    faceted.ratio(row.ratio);
+    smooth.ratio(row.smooth_ratio);
+    if (row.ours.count == 0 || !row.has_baseline) return;
+    faceted.baseline(row.ours.mean, row.baseline.mean);
+    smooth.baseline(row.ours.smooth_mean, row.baseline.smooth_mean);
+  }
+  std::string comparison_text() const { return faceted.text() + "; to the smooth surface: " + smooth.text(); }
+};
+
+/// The CSV's header line and one row's line (all sections share the columns).
+std::string csv_header();
+std::string csv_line(const Row& row);
+
+/// `x` printed with `format`; empty for NaN.
+std::string number(double x, const char* format = "%.4g");
+
+/// FOLD: a border angle above 1.5 times the uncut mesh's reading at the same place, or 5°. CGAL's
+/// result is judged by the same rule, so that a fold count can be told from the measure's own floor
+/// (one-sided fits on a coarse or noisy ring read tens of degrees on any smooth fill).
+bool folds(double angle, double uncut_angle);
+/// Sets row.fold and row.cgal_fold by that rule.
+void flag_fold(Row& row);
+/// fairsurf's mean distance over CGAL's, by both measures.
+void set_ratios(Row& row);
+void add_note(Row& row, const std::string& note);
+
+/// CGAL's border angle in degrees, starred when it folds by the same rule.
+std::string cgal_angle_text(const Row& r);
+/// The smooth-surface means of fairsurf, the ∆³ baseline and CGAL, and fairsurf's ratio to CGAL's.
+std::string smooth_text(const Row& r);
+/// "mean max" of a distance, or dashes.
+std::string pair_text(bool has, const DistanceStats& s);
+std::string percent(int part, int whole);
+
+}  // namespace fairsurf::bench
