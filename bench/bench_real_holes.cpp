@@ -19,14 +19,12 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
-#include <numbers>
 #include <string>
 #include <vector>
 
 #include "real_holes.h"
+#include "real_holes_cases.h"
 #include "real_holes_rows.h"
-#include "smooth_reference.h"
 #ifdef FAIRSURF_BENCH_CGAL
 #include "cgal_reference.h"
 #endif
@@ -38,106 +36,23 @@ using bench::DistanceStats;
 
 using bench::kDegrees;
 constexpr double kNoise = 0.1;  // σ of the normal noise, in h
-// Butterfly rounds of the smooth stand-in: its faces then cut the chord between the mesh's vertices
-// 64 times less deep than the mesh's own (on data/torus.obj it reads a fill's distance to the exact
-// torus to 2%).
-constexpr int kSmoothLevels = 3;
 
 struct Args {
   std::string section = "all", mesh, csv;
   bool cgal = true, quick = false;
 };
 
-// A clean closed mesh and the ball centres of docs/fill.md (cases/real_holes.md's first).
-struct MeshCase {
-  std::string name, file;
-  std::vector<Eigen::Vector3d> centres;  // nearest vertices are used; more are added by rule
-};
-
-std::vector<MeshCase> mesh_cases() {
-  return {{"spot", "spot.obj",
-           {{0.112515, -0.451919, 0.0935688}, {0.312594, 0.674309, -0.341185}, {-0.178799, 0.187723, 0.48375}}},
-          {"blub", "blub.obj",
-           {{0.00697216, -0.181279, -1.03702}, {-0.565203, -0.333718, 0.0970017}, {0.176282, 0.148983, -0.699856}}},
-          {"bunny", "stanford_bunny_remesh_closed.obj", {{-0.417303, 0.45242, 0.224485}}},
-          {"airplane", "airplane.obj", {}},
-          {"torus", "torus.obj", {}}};
-}
-
 // ---------------------------------------------------------------------------------------------
-// Loaded meshes and their ball centres
+// Loaded meshes, their ball centres and the truth (bench/support/real_holes_cases.h)
 
-struct Loaded {
-  std::string name;
-  Mesh mesh;
-  double h = 0;
-  std::vector<int> centres;  // vertex indices
-  // The mesh refined kSmoothLevels times by the butterfly scheme (smooth_reference.h); its faces
-  // have edges of h/8, and cubes of h/2 hold a few dozen of them.
-  bench::GridSurfaceDistance smooth;
-};
-
-int nearest_vertex(const Mesh& mesh, const Eigen::Vector3d& p) {
-  int best = 0;
-  for (int v = 1; v < mesh.num_vertices(); ++v)
-    if ((mesh.V.row(v).transpose() - p).squaredNorm() < (mesh.V.row(best).transpose() - p).squaredNorm())
-      best = v;
-  return best;
-}
-
-// The vertex farthest along `direction`.
-int extreme_vertex(const Mesh& mesh, const Eigen::Vector3d& direction) {
-  int best = 0;
-  for (int v = 1; v < mesh.num_vertices(); ++v)
-    if (mesh.V.row(v).dot(direction) > mesh.V.row(best).dot(direction)) best = v;
-  return best;
-}
-
-// The given centres, then the vertices farthest along three fixed skew directions, until there are
-// three (--quick: one).
-std::vector<int> centre_vertices(const MeshCase& c, const Mesh& mesh, bool quick) {
-  const std::size_t wanted = quick ? 1 : 3;
-  const Eigen::Vector3d directions[] = {{1, 0.3, 0.1}, {-0.2, 1, 0.5}, {0.3, -0.6, 1}};
-  std::vector<int> centres;
-  for (const auto& p : c.centres)
-    if (centres.size() < wanted) centres.push_back(nearest_vertex(mesh, p));
-  for (int k = 0; centres.size() < wanted; ++k) centres.push_back(extreme_vertex(mesh, directions[k].normalized()));
-  return centres;
-}
-
-std::vector<Loaded> load_meshes(const Args& args) {
-  std::vector<Loaded> out;
-  for (const MeshCase& c : mesh_cases()) {
-    if (!args.mesh.empty() && c.file.find(args.mesh) == std::string::npos) continue;
-    const std::filesystem::path path = std::filesystem::path(FAIRSURF_DATA_DIR) / c.file;
-    if (!std::filesystem::exists(path)) {
-      std::printf("%s: not found in %s, skipped\n", c.file.c_str(), FAIRSURF_DATA_DIR);
-      continue;
-    }
-    Mesh mesh = read_mesh(path);
-    const double h = bench::mean_edge_length(mesh);
-    std::vector<int> centres = centre_vertices(c, mesh, args.quick);
-    bench::GridSurfaceDistance smooth(bench::butterfly_refined(mesh, kSmoothLevels), h / 2);
-    out.push_back({c.name, std::move(mesh), h, std::move(centres), std::move(smooth)});
-  }
-  return out;
-}
-
-// What a result is measured against: the uncut mesh, as the protocol says, and its butterfly
-// refinement, which passes through the same vertices but is not flat between them.
-struct Truth {
-  bench::SurfaceDistance faceted;
-  const bench::GridSurfaceDistance& smooth;
-  Truth(const Loaded& m, const Eigen::Vector3d& centre) : faceted(m.mesh, centre), smooth(m.smooth) {}
-};
-
-DistanceStats measure(const Truth& truth, const Vertices& V, const std::vector<int>& rows, double h) {
-  DistanceStats stats = bench::distance_stats(truth.faceted, V, rows, h);
-  double sum = 0;
-  for (int v : rows) sum += truth.smooth(V.row(v).transpose()) / h;
-  if (!rows.empty()) stats.smooth_mean = sum / static_cast<double>(rows.size());
-  return stats;
-}
+using bench::blend_slabs;
+using bench::border_sizes;
+using bench::Loaded;
+using bench::measure;
+using bench::removed_disks;
+using bench::rows_from;
+using bench::Slab;
+using bench::Truth;
 
 // Deterministic per case, independent of which other cases run.
 std::uint64_t noise_seed(int centre, int radius_h) {
@@ -194,31 +109,9 @@ std::string continuity_text(const FillReport& report) {
   return text;
 }
 
-std::vector<std::vector<int>> loops_of(const Mesh& mesh) {
-  return boundary_loops(mesh.F, build_topology(mesh.F, mesh.num_vertices()));
-}
 
-std::string border_sizes(const Mesh& cut) {
-  std::string text;
-  for (const auto& loop : loops_of(cut)) {
-    if (!text.empty()) text += '+';
-    text += std::to_string(loop.size());
-  }
-  return text;
-}
 
-// Removing k disks from a surface lowers its Euler characteristic by k; an annulus (a ball across a
-// tube thinner than it) lowers it by 0 and leaves two loops that no hole filling should close.
-bool removed_disks(const Mesh& uncut, const Mesh& cut) {
-  const int loops = static_cast<int>(loops_of(cut).size());
-  return bench::euler_characteristic(uncut) - bench::euler_characteristic(cut) == loops;
-}
 
-std::vector<int> rows_from(int first, int end) {
-  std::vector<int> rows;
-  for (int v = first; v < end; ++v) rows.push_back(v);
-  return rows;
-}
 
 // fill_holes on a copy of `cut`; the new vertices' distances. Throws what fill_holes throws.
 FillReport run_fill(const Mesh& cut, const FillOptions& options, const Truth& truth, double h,
@@ -481,33 +374,8 @@ std::string fair_section(const std::vector<Loaded>& meshes, bool cgal) {
 // ---------------------------------------------------------------------------------------------
 // Blend: a slab of width 4h removed, the two loops joined again
 
-struct Slab {
-  int vertex = 0, axis = 0;
-};
 
-constexpr int kMaxBlendLoop = 200;  // border edges; larger loops make the default run too slow
 
-// Planes through the vertex at the 50%, 35%, 65%, 20%, 80%, 10%, 90%, 95% quantile of x, y, z whose
-// slab (bench::cut_slab) leaves exactly two loops of at most kMaxBlendLoop edges; at most one per
-// axis, the first `wanted` of them.
-std::vector<Slab> blend_slabs(const Loaded& m, std::size_t wanted) {
-  std::vector<Slab> slabs;
-  for (int axis = 0; axis < 3 && slabs.size() < wanted; ++axis) {
-    std::vector<int> order(m.mesh.num_vertices());
-    for (int v = 0; v < m.mesh.num_vertices(); ++v) order[v] = v;
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return m.mesh.V(a, axis) < m.mesh.V(b, axis); });
-    for (double q : {0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0.95}) {
-      const int vertex = order[static_cast<std::size_t>(q * (order.size() - 1))];
-      const bench::CutMesh cut = bench::cut_slab(m.mesh, vertex, Eigen::Vector3d::Unit(axis), 2 * m.h);
-      const auto loops = loops_of(cut.mesh);
-      if (loops.size() == 2 && std::max(loops[0].size(), loops[1].size()) <= kMaxBlendLoop) {
-        slabs.push_back({vertex, axis});
-        break;  // one plane per axis
-      }
-    }
-  }
-  return slabs;
-}
 
 Row blend_case(const Loaded& m, const Slab& slab) {
   Row row;
@@ -599,7 +467,7 @@ int main(int argc, char** argv) {
     if (args.cgal) std::printf("CGAL was not found at configure time: no CGAL columns\n");
     args.cgal = false;
 #endif
-    const std::vector<Loaded> meshes = load_meshes(args);
+    const std::vector<Loaded> meshes = bench::load_meshes(args.mesh, args.quick);
     for (const Loaded& m : meshes) {
       std::printf("%s: %d vertices, %d faces, h = %.6g; centres", m.name.c_str(), m.mesh.num_vertices(),
                   m.mesh.num_faces(), m.h);

@@ -170,4 +170,28 @@ DistanceStats distance_stats(const SurfaceDistance& distance, const Vertices& V,
   return s;
 }
 
+std::vector<std::vector<int>> loops_of(const Mesh& mesh) {
+  return boundary_loops(mesh.F, build_topology(mesh.F, mesh.num_vertices()));
+}
+
+std::string border_sizes(const Mesh& cut) {
+  std::string text;
+  for (const auto& loop : loops_of(cut)) {
+    if (!text.empty()) text += '+';
+    text += std::to_string(loop.size());
+  }
+  return text;
+}
+
+bool removed_disks(const Mesh& uncut, const Mesh& cut) {
+  const int loops = static_cast<int>(loops_of(cut).size());
+  return euler_characteristic(uncut) - euler_characteristic(cut) == loops;
+}
+
+std::vector<int> rows_from(int first, int end) {
+  std::vector<int> rows;
+  for (int v = first; v < end; ++v) rows.push_back(v);
+  return rows;
+}
+
 }  // namespace fairsurf::bench

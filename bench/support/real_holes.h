@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace fairsurf::bench {
@@ -34,6 +35,16 @@ CutMesh cut_ball(const Mesh& mesh, const Eigen::Vector3d& centre, double radius)
 /// and that are connected, through shared edges of such faces, to a face at `vertex`: the band the
 /// slab cuts across one neck or tube, not every place the plane meets the mesh.
 CutMesh cut_slab(const Mesh& mesh, int vertex, const Eigen::Vector3d& axis, double half_width);
+
+/// The boundary loops of `mesh` (topology.h's order).
+std::vector<std::vector<int>> loops_of(const Mesh& mesh);
+/// The loops' sizes in border edges, "a+b+...".
+std::string border_sizes(const Mesh& cut);
+/// Removing k disks from a surface lowers its Euler characteristic by k; an annulus (a ball across a
+/// tube thinner than it) lowers it by 0 and leaves two loops that no hole filling should close.
+bool removed_disks(const Mesh& uncut, const Mesh& cut);
+/// first, first + 1, ..., end − 1: the rows a fill appended.
+std::vector<int> rows_from(int first, int end);
 
 /// Moves every vertex used by a face along its area-weighted unit normal by a Gaussian of standard
 /// deviation `sigma`, drawn by Box–Muller from std::mt19937_64(seed), so the same seed gives the

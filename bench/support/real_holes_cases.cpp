@@ -1,0 +1,106 @@
+#include "real_holes_cases.h"
+
+#include <fairsurf/io/io.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+namespace fairsurf::bench {
+namespace {
+
+constexpr int kMaxBlendLoop = 200;  // border edges; larger loops make the default run too slow
+
+// A clean closed mesh and the ball centres of docs/fill.md (cases/real_holes.md's first).
+struct MeshCase {
+  std::string name, file;
+  std::vector<Eigen::Vector3d> centres;  // nearest vertices are used; more are added by rule
+};
+
+std::vector<MeshCase> mesh_cases() {
+  return {{"spot", "spot.obj",
+           {{0.112515, -0.451919, 0.0935688}, {0.312594, 0.674309, -0.341185}, {-0.178799, 0.187723, 0.48375}}},
+          {"blub", "blub.obj",
+           {{0.00697216, -0.181279, -1.03702}, {-0.565203, -0.333718, 0.0970017}, {0.176282, 0.148983, -0.699856}}},
+          {"bunny", "stanford_bunny_remesh_closed.obj", {{-0.417303, 0.45242, 0.224485}}},
+          {"airplane", "airplane.obj", {}},
+          {"torus", "torus.obj", {}}};
+}
+
+int nearest_vertex(const Mesh& mesh, const Eigen::Vector3d& p) {
+  int best = 0;
+  for (int v = 1; v < mesh.num_vertices(); ++v)
+    if ((mesh.V.row(v).transpose() - p).squaredNorm() < (mesh.V.row(best).transpose() - p).squaredNorm())
+      best = v;
+  return best;
+}
+
+// The vertex farthest along `direction`.
+int extreme_vertex(const Mesh& mesh, const Eigen::Vector3d& direction) {
+  int best = 0;
+  for (int v = 1; v < mesh.num_vertices(); ++v)
+    if (mesh.V.row(v).dot(direction) > mesh.V.row(best).dot(direction)) best = v;
+  return best;
+}
+
+// The given centres, then the vertices farthest along three fixed skew directions, until there are
+// three (--quick: one).
+std::vector<int> centre_vertices(const MeshCase& c, const Mesh& mesh, bool quick) {
+  const std::size_t wanted = quick ? 1 : 3;
+  const Eigen::Vector3d directions[] = {{1, 0.3, 0.1}, {-0.2, 1, 0.5}, {0.3, -0.6, 1}};
+  std::vector<int> centres;
+  for (const auto& p : c.centres)
+    if (centres.size() < wanted) centres.push_back(nearest_vertex(mesh, p));
+  for (int k = 0; centres.size() < wanted; ++k) centres.push_back(extreme_vertex(mesh, directions[k].normalized()));
+  return centres;
+}
+
+}  // namespace
+
+std::vector<Loaded> load_meshes(const std::string& filter, bool quick) {
+  std::vector<Loaded> out;
+  for (const MeshCase& c : mesh_cases()) {
+    if (!filter.empty() && c.file.find(filter) == std::string::npos) continue;
+    const std::filesystem::path path = std::filesystem::path(FAIRSURF_DATA_DIR) / c.file;
+    if (!std::filesystem::exists(path)) {
+      std::printf("%s: not found in %s, skipped\n", c.file.c_str(), FAIRSURF_DATA_DIR);
+      continue;
+    }
+    Mesh mesh = read_mesh(path);
+    const double h = mean_edge_length(mesh);
+    std::vector<int> centres = centre_vertices(c, mesh, quick);
+    GridSurfaceDistance smooth(butterfly_refined(mesh, kSmoothLevels), h / 2);
+    out.push_back({c.name, std::move(mesh), h, std::move(centres), std::move(smooth)});
+  }
+  return out;
+}
+
+DistanceStats measure(const Truth& truth, const Vertices& V, const std::vector<int>& rows, double h) {
+  DistanceStats stats = distance_stats(truth.faceted, V, rows, h);
+  double sum = 0;
+  for (int v : rows) sum += truth.smooth(V.row(v).transpose()) / h;
+  if (!rows.empty()) stats.smooth_mean = sum / static_cast<double>(rows.size());
+  return stats;
+}
+
+std::vector<Slab> blend_slabs(const Loaded& m, std::size_t wanted) {
+  std::vector<Slab> slabs;
+  for (int axis = 0; axis < 3 && slabs.size() < wanted; ++axis) {
+    std::vector<int> order(m.mesh.num_vertices());
+    for (int v = 0; v < m.mesh.num_vertices(); ++v) order[v] = v;
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return m.mesh.V(a, axis) < m.mesh.V(b, axis); });
+    for (double q : {0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0.95}) {
+      const int vertex = order[static_cast<std::size_t>(q * (order.size() - 1))];
+      const CutMesh cut = cut_slab(m.mesh, vertex, Eigen::Vector3d::Unit(axis), 2 * m.h);
+      const auto loops = loops_of(cut.mesh);
+      if (loops.size() == 2 && std::max(loops[0].size(), loops[1].size()) <= kMaxBlendLoop) {
+        slabs.push_back({vertex, axis});
+        break;  // one plane per axis
+      }
+    }
+  }
+  return slabs;
+}
+
+
+}  // namespace fairsurf::bench

@@ -1,0 +1,59 @@
+// The meshes, ball centres and reference surfaces of bench_real_holes (docs/fill.md, "Real holes
+// benchmark"): what every case is cut from and measured against.
+#pragma once
+
+#include <fairsurf/mesh/mesh.h>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+#include "real_holes.h"
+#include "smooth_reference.h"
+
+namespace fairsurf::bench {
+
+// Butterfly rounds of the smooth stand-in: its faces then cut the chord between the mesh's vertices
+// 64 times less deep than the mesh's own (on data/torus.obj it reads a fill's distance to the exact
+// torus to 2%).
+constexpr int kSmoothLevels = 3;
+
+/// A clean closed mesh of data/ with its ball centres.
+struct Loaded {
+  std::string name;
+  Mesh mesh;
+  double h = 0;
+  std::vector<int> centres;  // vertex indices
+  // The mesh refined kSmoothLevels times by the butterfly scheme (smooth_reference.h); its faces
+  // have edges of h/8, and cubes of h/2 hold a few dozen of them.
+  GridSurfaceDistance smooth;
+};
+
+/// spot, blub, the closed remeshed bunny, airplane and torus (those whose file name contains
+/// `filter`, all if empty), with three ball centres each (--quick: one); a missing file is skipped
+/// with a printed note.
+std::vector<Loaded> load_meshes(const std::string& filter, bool quick);
+
+// What a result is measured against: the uncut mesh, as the protocol says, and its butterfly
+// refinement, which passes through the same vertices but is not flat between them.
+struct Truth {
+  SurfaceDistance faceted;
+  const GridSurfaceDistance& smooth;
+  Truth(const Loaded& m, const Eigen::Vector3d& centre) : faceted(m.mesh, centre), smooth(m.smooth) {}
+};
+
+/// Distances of rows `rows` of V to both surfaces of `truth`, in h.
+DistanceStats measure(const Truth& truth, const Vertices& V, const std::vector<int>& rows, double h);
+
+/// A blend case: the plane through `vertex` normal to coordinate axis `axis` (0 x, 1 y, 2 z).
+struct Slab {
+  int vertex = 0, axis = 0;
+};
+
+/// Planes through the vertex at the 50%, 35%, 65%, 20%, 80%, 10%, 90%, 95% quantile of x, y, z
+/// whose slab of width 4h (cut_slab) leaves exactly two loops of at most 200 edges; at most one per
+/// axis, the first `wanted` of them.
+std::vector<Slab> blend_slabs(const Loaded& m, std::size_t wanted);
+
+}  // namespace fairsurf::bench
