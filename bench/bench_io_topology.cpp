@@ -22,7 +22,7 @@
 #include <iostream>
 #include <string>
 
-#include "loop_subdivision.h"
+#include "subdivision.h"
 
 namespace {
 

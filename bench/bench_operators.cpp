@@ -36,7 +36,7 @@
 #include <thread>
 #include <vector>
 
-#include "loop_subdivision.h"
+#include "subdivision.h"
 
 using namespace fairsurf;
 

@@ -12,7 +12,7 @@
 
 #include <filesystem>
 
-#include "loop_subdivision.h"
+#include "subdivision.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <iostream>
 #include <string>
 
-#include "loop_subdivision.h"
+#include "subdivision.h"
 
 namespace {
 

@@ -11,6 +11,7 @@
 
 #include "real_holes.h"
 #include "smooth_reference.h"
+#include "subdivision.h"
 
 namespace fairsurf::bench {
 

@@ -4,9 +4,6 @@
 
 #include <fairsurf/mesh/errors.h>
 
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,52 +13,9 @@
 namespace fairsurf::bench {
 namespace {
 
-struct Traits : public OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;
-};
-using TriMesh = OpenMesh::TriMesh_ArrayKernelT<Traits>;
-
-TriMesh to_openmesh(const Mesh& mesh) {
-  TriMesh out;
-  std::vector<TriMesh::VertexHandle> handle(mesh.num_vertices());
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    handle[v] = out.add_vertex(TriMesh::Point(mesh.V(v, 0), mesh.V(v, 1), mesh.V(v, 2)));
-  for (int f = 0; f < mesh.num_faces(); ++f)
-    if (!out.add_face(handle[mesh.F(f, 0)], handle[mesh.F(f, 1)], handle[mesh.F(f, 2)]).is_valid())
-      throw InvalidArgument("butterfly_refined: face " + std::to_string(f) + " is not manifold");
-  return out;
-}
-
-Mesh from_openmesh(const TriMesh& in) {
-  Mesh out;
-  out.V.resize(static_cast<Eigen::Index>(in.n_vertices()), 3);
-  for (const auto v : in.vertices()) {
-    const TriMesh::Point& p = in.point(v);
-    out.V.row(v.idx()) << p[0], p[1], p[2];
-  }
-  out.F.resize(static_cast<Eigen::Index>(in.n_faces()), 3);
-  for (const auto f : in.faces()) {
-    int k = 0;
-    for (const auto v : in.fv_range(f)) out.F(f.idx(), k++) = v.idx();
-  }
-  return out;
-}
-
 Eigen::Vector3d corner(const Mesh& m, int f, int k) { return m.V.row(m.F(f, k)).transpose(); }
 
 }  // namespace
-
-Mesh butterfly_refined(const Mesh& mesh, int levels) {
-  if (levels < 0) throw InvalidArgument("butterfly_refined: levels must be >= 0, got " + std::to_string(levels));
-  TriMesh om = to_openmesh(mesh);
-  if (levels > 0) {
-    OpenMesh::Subdivider::Uniform::ModifiedButterflyT<TriMesh> butterfly;
-    butterfly.attach(om);
-    butterfly(static_cast<size_t>(levels));
-    butterfly.detach();
-  }
-  return from_openmesh(om);
-}
 
 GridSurfaceDistance::GridSurfaceDistance(Mesh surface, double cell) : surface_(std::move(surface)), cell_(cell) {
   if (!(cell > 0)) throw InvalidArgument("GridSurfaceDistance: cell must be positive, got " + std::to_string(cell));

@@ -1,7 +1,7 @@
 // A smooth stand-in for a mesh's surface, for measuring how far a fill lies from it: the mesh
-// refined by the modified butterfly scheme (OpenMesh's ModifiedButterflyT). The scheme interpolates:
-// every vertex of the mesh stays where it is, and the new faces bulge between them as a smooth
-// surface does, where the mesh's own flat faces cut the chord (on data/torus.obj, 64 × 36 faces,
+// refined by the modified butterfly scheme (subdivision.h's butterfly_refined). The scheme
+// interpolates: every vertex of the mesh stays where it is, and the new faces bulge between them as
+// a smooth surface does, where the mesh's own flat faces cut the chord (on data/torus.obj, 64 × 36 faces,
 // they lie up to 0.04 mean edges inside the torus its vertices lie on).
 #pragma once
 
@@ -14,11 +14,6 @@
 #include <vector>
 
 namespace fairsurf::bench {
-
-/// `mesh` (manifold, closed or open) after `levels` rounds of modified butterfly subdivision; each
-/// round splits every triangle into four. Attributes are dropped. Throws InvalidArgument for
-/// negative `levels` or a face OpenMesh cannot add (a non-manifold one).
-Mesh butterfly_refined(const Mesh& mesh, int levels);
 
 /// Exact distance from any point to the faces of a surface, through a uniform grid of cubes of side
 /// `cell` that lists the faces whose bounding box meets each cube. A query visits the cubes in
