@@ -206,6 +206,13 @@ FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<con
   return report;
 }
 
+FairRegionReport fair_checked_mesh(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                   const FairRegionOptions& options, const FlowObserver& observer, bool measure,
+                                   bool* whole) {
+  require_valid(validate(mesh, topo), Requirements{}, "fair_region");
+  return fair_valid_mesh(mesh, topo, free_vertices, options, observer, measure, whole);
+}
+
 }  // namespace fair_detail
 
 FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
@@ -217,8 +224,7 @@ FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
 
 FairRegionReport fair_region(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                              const FairRegionOptions& options, const FlowObserver& observer) {
-  require_valid(validate(mesh, topo), Requirements{}, "fair_region");
-  return fair_detail::fair_valid_mesh(mesh, topo, free_vertices, options, observer);
+  return fair_detail::fair_checked_mesh(mesh, topo, free_vertices, options, observer);
 }
 
 }  // namespace fairsurf

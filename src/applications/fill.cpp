@@ -236,9 +236,8 @@ FairRegionReport fair_patch(InitialPatch& patch, const FillOptions& options, con
                               options.fairing.submesh_rings);
   // The neighbourhood's connectivity, built once: validation, fairing and its held-out trials read it.
   const Topology local = build_topology(sub.mesh.F, sub.mesh.num_vertices());
-  require_valid(validate(sub.mesh, local), Requirements{}, "fair_region");
-  fairing = fair_detail::fair_valid_mesh(sub.mesh, local, sub.free_local, fairing_options, step_observer, true, &whole);
-  return fairing;
+  return fair_detail::fair_checked_mesh(sub.mesh, local, sub.free_local, fairing_options, step_observer, true,
+                                       &whole);
 }
 
 // What the group's fairing did, in the report of one of its holes (`flowed`: the flow's result).

@@ -44,9 +44,8 @@ double held_out_error(const Mesh& mesh, const Topology& topo, const std::vector<
                       const FairRegionOptions& fairing, WellPosedness* well_posedness = nullptr) {
   Mesh trial = mesh;
   try {
-    // As fair_region(trial, free, fairing), without rebuilding the connectivity or measuring the
-    // continuity of a result that is discarded.
-    require_valid(validate(trial, topo), Requirements{}, "fair_region");
+    // As fair_region(trial, free, fairing) on a mesh held_out_errors validated, without rebuilding
+    // the connectivity or measuring the continuity of a result that is discarded.
     const FairRegionReport report = fair_valid_mesh(trial, topo, free, fairing, {}, false);
     if (well_posedness) *well_posedness = report.flow.well_posedness;
     if (fairing.method == FairMethod::flow && report.linear) return std::numeric_limits<double>::infinity();
@@ -69,6 +68,12 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
                       std::back_inserter(held_out));
   HeldOutErrors errors;
   if (held_out.empty()) return errors;
+  try {  // once for both trials, which fair copies of this mesh: a mesh that fails fails both
+    require_valid(validate(sub.mesh, topo), Requirements{}, "fair_region");
+  } catch (const Error&) {
+    errors.flow = errors.linear = std::numeric_limits<double>::infinity();
+    return errors;
+  }
   const Vertices normal = vertex_normals(sub.mesh.V, sub.mesh.F);
   const double edge = mean_edge_length(sub.mesh.V, topo, held_out);
   FairRegionOptions flow = fairing;

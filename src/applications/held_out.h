@@ -32,4 +32,10 @@ FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<con
                                  const FairRegionOptions& options, const FlowObserver& observer = {},
                                  bool measure = true, bool* whole = nullptr);
 
+/// fair_valid_mesh after require_valid(validate(mesh, topo)): fair_region(mesh, topo, ...) with
+/// fair_valid_mesh's further arguments.
+FairRegionReport fair_checked_mesh(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                   const FairRegionOptions& options, const FlowObserver& observer = {},
+                                   bool measure = true, bool* whole = nullptr);
+
 }  // namespace fairsurf::fair_detail
