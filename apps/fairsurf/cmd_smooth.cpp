@@ -74,7 +74,7 @@ void run_smooth(const SmoothArgs& args) {
   FlowCommandRun run("smooth", args.log, args.quiet,
                      {{"command", "smooth"},
                       {"input", args.input},
-                      {"flow", to_string(options.flow.kind.value_or(FlowKind::sixth_order))},
+                      {"flow", to_string(options.flow.kind_to_run())},
                       {"functions", options.flow.functions},
                       {"repair", repair_json(repaired)}},
                      options.flow.step_kind);
@@ -84,7 +84,7 @@ void run_smooth(const SmoothArgs& args) {
   run.finish(to_json(report));
   std::printf("smoothed %s: %s flow, %d steps (%d rejected) to t = %.3g (%s); energy %.4g -> %.4g; "
               "max|V| %.3g -> %.3g; %d free vertices; wrote %s\n",
-              args.input.c_str(), to_string(options.flow.kind.value_or(FlowKind::sixth_order)), report.accepted_steps,
+              args.input.c_str(), to_string(options.flow.kind_to_run()), report.accepted_steps,
               report.rejected_steps, report.time, to_string(report.stop_reason), report.initial_energy,
               report.final_energy, report.initial_max_velocity, report.final_max_velocity,
               report.free_vertices, args.output.c_str());

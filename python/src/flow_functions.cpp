@@ -87,7 +87,7 @@ py::tuple smooth_binding(const py::handle& V, const py::handle& F, const SmoothA
   progress.attach(options.flow);
   const FlowReport report = keeping_last_state(mesh, [&] { return smooth(mesh, options, progress.flow_observer()); });
   progress.rethrow();
-  py::dict d("flow"_a = to_string(options.flow.kind.value_or(FlowKind::sixth_order)), "functions"_a = options.flow.functions);
+  py::dict d("flow"_a = to_string(options.flow.kind_to_run()), "functions"_a = options.flow.functions);
   for (const auto item : to_dict(report)) d[item.first] = item.second;
   return py::make_tuple(to_numpy(std::move(mesh.V)), d);
 }

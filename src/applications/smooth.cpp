@@ -56,7 +56,7 @@ SmoothOptions scan_smoothing_options(const Mesh& mesh, FlowKind kind) {
 void steady_smoothing(FlowOptions& flow, double velocity_tolerance) {
   flow.end_time = std::numeric_limits<double>::infinity();
   flow.steady_tolerance = velocity_tolerance;
-  if (flow.kind.value_or(FlowKind::sixth_order) != FlowKind::sixth_order) return;
+  if (flow.kind_to_run() != FlowKind::sixth_order) return;
   flow.step_kind = FlowStepKind::energy_descent;
   flow.steady_energy_tolerance = 1e-7;
   flow.step_control.max_consecutive_rejections = 30;
@@ -103,7 +103,7 @@ FlowReport smooth(Mesh& mesh, const SmoothOptions& options, const FlowObserver& 
   FlowOptions flow = options.flow;
   if (options.default_time && !std::isfinite(flow.end_time) && flow.steady_tolerance <= 0 &&
       flow.steady_relative_tolerance <= 0)
-    flow.end_time = smoothing_time(mesh, topo, flow.kind.value_or(FlowKind::sixth_order));
+    flow.end_time = smoothing_time(mesh, topo, flow.kind_to_run());
   const Region region = make_region(topo, free, Continuity::G2);
   return run_flow(mesh.V, mesh.F, topo, region, flow, observer);
 }

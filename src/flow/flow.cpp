@@ -64,7 +64,7 @@ Eigen::VectorXd local_edge_lengths(const Vertices& X, const Topology& topo) {
 
 // The energy descent applies to the sixth-order flow only; the other flows step in time.
 bool descends(const FlowOptions& options) {
-  return options.step_kind == FlowStepKind::energy_descent && options.kind.value_or(FlowKind::sixth_order) == FlowKind::sixth_order;
+  return options.step_kind == FlowStepKind::energy_descent && options.kind_to_run() == FlowKind::sixth_order;
 }
 
 // The energy descent's matrix N + diag(A)/(2τ) is symmetric: MUMPS factors it as LDLᵀ.
@@ -150,7 +150,7 @@ void FlowRun::initialize() {
   X_ = (V_.rowwise() - norm_.centre) * norm_.scale;
   report_.length_scale = norm_.scale;
 
-  problem_.kind = options_.kind.value_or(FlowKind::sixth_order);
+  problem_.kind = options_.kind_to_run();
   problem_.region = &region_;
   problem_.energy_weight.resize(n);
   for (int v = 0; v < n; ++v) problem_.energy_weight[v] = region_.ring[v] >= 0 ? 1.0 : 0.0;

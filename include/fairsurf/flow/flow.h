@@ -120,6 +120,8 @@ struct FlowOptions {
   /// and blend, which call it) the flow that reaches the requested continuity (flow_for); there a
   /// kind that contradicts the continuity is refused rather than replaced.
   std::optional<FlowKind> kind;
+  /// The flow run_flow runs: `kind`, or the sixth-order flow where it is unset.
+  FlowKind kind_to_run() const { return kind.value_or(FlowKind::sixth_order); }
   /// The functions f_l of the sixth-order energy (energy_function.h names or formulas).
   std::vector<std::string> functions{"H"};
   /// Regularization ε = relative_epsilon · κ of singular functions (energy_function.h).
