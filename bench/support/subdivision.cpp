@@ -43,30 +43,28 @@ Mesh from_openmesh(const TriMesh& in) {
   return out;
 }
 
-}  // namespace
-
-Mesh butterfly_refined(const Mesh& mesh, int levels) {
-  if (levels < 0) throw InvalidArgument("butterfly_refined: levels must be >= 0, got " + std::to_string(levels));
-  TriMesh om = to_openmesh(mesh, "butterfly_refined");
+// `levels` rounds of OpenMesh's uniform subdivider `Scheme` on `mesh`; `caller` names the errors.
+template <template <class, class> class Scheme>
+Mesh subdivided(const Mesh& mesh, int levels, const char* caller) {
+  if (levels < 0) throw InvalidArgument(std::string(caller) + ": levels must be >= 0, got " + std::to_string(levels));
+  TriMesh om = to_openmesh(mesh, caller);
   if (levels > 0) {
-    OpenMesh::Subdivider::Uniform::ModifiedButterflyT<TriMesh> butterfly;
-    butterfly.attach(om);
-    butterfly(static_cast<size_t>(levels));
-    butterfly.detach();
+    Scheme<TriMesh, double> scheme;
+    scheme.attach(om);
+    scheme(static_cast<size_t>(levels));
+    scheme.detach();
   }
   return from_openmesh(om);
 }
 
+}  // namespace
+
+Mesh butterfly_refined(const Mesh& mesh, int levels) {
+  return subdivided<OpenMesh::Subdivider::Uniform::ModifiedButterflyT>(mesh, levels, "butterfly_refined");
+}
+
 Mesh loop_subdivide(const Mesh& mesh, int levels) {
-  if (levels < 0) throw InvalidArgument("loop_subdivide: levels must be >= 0, got " + std::to_string(levels));
-  TriMesh om = to_openmesh(mesh, "loop_subdivide");
-  if (levels > 0) {
-    OpenMesh::Subdivider::Uniform::LoopT<TriMesh> loop;
-    loop.attach(om);
-    loop(static_cast<size_t>(levels));
-    loop.detach();
-  }
-  return from_openmesh(om);
+  return subdivided<OpenMesh::Subdivider::Uniform::LoopT>(mesh, levels, "loop_subdivide");
 }
 
 }  // namespace fairsurf::bench

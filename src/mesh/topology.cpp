@@ -242,8 +242,6 @@ void face_normals_and_areas(const Vertices& V, const Faces& F, Eigen::MatrixX3d&
   }
 }
 
-// The face areas (the costly part: three gathered corners per face) are computed in parallel; the
-// scatter to the corners stays serial and in face order, so the sums do not depend on threads.
 double mean_edge_length(const Vertices& V, const Topology& topo) {
   double sum = 0;
   int measured = 0;
@@ -256,6 +254,8 @@ double mean_edge_length(const Vertices& V, const Topology& topo) {
   return measured > 0 ? sum / measured : 0.0;
 }
 
+// The face areas (the costly part: three gathered corners per face) are computed in parallel; the
+// scatter to the corners stays serial and in face order, so the sums do not depend on threads.
 Eigen::VectorXd vertex_areas(const Vertices& V, const Faces& F) {
   const int num_faces = static_cast<int>(F.rows());
   Eigen::VectorXd thirds(num_faces);
