@@ -90,6 +90,13 @@ def test_bad_options(hand):
     with pytest.raises(fairsurf.InvalidArgument) as error:
         fairsurf.smooth(V, F, steps=3, time=0.1)
     assert str(error.value) == "smooth: give at most one of steps, time and steady"
+    with pytest.raises(fairsurf.InvalidArgument) as error:
+        fairsurf.smooth(V, F, steps=0)
+    assert str(error.value) == "smooth: steps must be >= 1"
+    for bad in ({"time": 0.0}, {"tau": -1e-3}):
+        with pytest.raises(fairsurf.InvalidArgument) as error:
+            fairsurf.smooth(V, F, **bad)
+        assert str(error.value) == "smooth: time and tau must be positive"
     with pytest.raises(ValueError) as error:
         fairsurf.fair(V, F, region=np.ones(5, dtype=bool))
     assert str(error.value) == "region: a boolean mask must have one entry per vertex (810), got 5"
