@@ -109,6 +109,8 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"linear", r.linear},
                    {"held_out_flow_error", r.held_out_flow_error},
                    {"held_out_linear_error", r.held_out_linear_error},
+                   {"held_out_two_ring_flow_error", r.held_out_two_ring_flow_error},
+                   {"two_ring_boundary_fits", r.two_ring_boundary_fits},
                    {"note", r.note},
                    {"steps", r.steps},
                    {"harmonic_solves", r.harmonic_solves},

@@ -60,6 +60,8 @@ nlohmann::json to_json(const FairRegionReport& r) {
     j["harmonic_start_solves"] = r.harmonic.iterations;  // 0: the flow started from the input
     j["held_out_flow_error"] = r.held_out_flow_error;      // NaN, ∞ (a failed fairing) -> null
     j["held_out_linear_error"] = r.held_out_linear_error;
+    j["held_out_two_ring_flow_error"] = r.held_out_two_ring_flow_error;
+    j["two_ring_boundary_fits"] = r.two_ring_boundary_fits;
   }
   if (r.has_flow_report()) {
     j.update(to_json(r.flow));

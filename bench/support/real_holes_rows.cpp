@@ -13,7 +13,7 @@ std::string csv_escape(std::string s) {
 std::string csv_header() {
   return "section,mesh,centre,radius_h,noise_h,size,status,continuity,steps,seconds,mean_h,max_h,"
          "baseline_mean_h,baseline_max_h,cgal_mean_h,cgal_max_h,ratio,angle_deg,uncut_angle_deg,fold,"
-         "cgal_angle_deg,cgal_fold,smooth_mean_h,baseline_smooth_mean_h,cgal_smooth_mean_h,smooth_ratio,disks,note\n";
+         "cgal_angle_deg,cgal_fold,smooth_mean_h,baseline_smooth_mean_h,cgal_smooth_mean_h,smooth_ratio,disks,new_vertices,cgal_new_vertices,note\n";
 }
 
 std::string number(double x, const char* format) {
@@ -52,6 +52,7 @@ std::string csv_line(const Row& r) {
               "," + number(r.cgal_angle * kDegrees) + "," + (r.cgal_fold ? "1" : "0") + "," +
               stat(r.ours.count > 0, r.ours.smooth_mean) + "," + stat(r.has_baseline, r.baseline.smooth_mean) + "," +
               stat(r.has_cgal, r.cgal.smooth_mean) + "," + number(r.smooth_ratio) + "," + (r.disks ? "1" : "0") +
+              "," + std::to_string(r.ours.count) + "," + (r.has_cgal ? std::to_string(r.cgal.count) : std::string()) +
               "," + csv_escape(r.note) + "\n";
 }
 

@@ -54,6 +54,8 @@ py::dict to_dict(const FairRegionReport& r) {
     d["harmonic_start_solves"] = r.harmonic.iterations;
     d["held_out_flow_error"] = r.held_out_flow_error;
     d["held_out_linear_error"] = r.held_out_linear_error;
+    d["held_out_two_ring_flow_error"] = r.held_out_two_ring_flow_error;
+    d["two_ring_boundary_fits"] = r.two_ring_boundary_fits;
   }
   if (r.has_flow_report()) {
     for (const auto item : to_dict(r.flow)) d[item.first] = item.second;
@@ -78,7 +80,9 @@ py::dict hole_dict(const HoleReport& r) {
                   "supported_continuity"_a = to_string(r.supported),
                   "delivered"_a = delivered_label(r.supported, r.linear), "linear"_a = r.linear,
                   "held_out_flow_error"_a = r.held_out_flow_error,
-                  "held_out_linear_error"_a = r.held_out_linear_error, "note"_a = r.note, "steps"_a = r.steps,
+                  "held_out_linear_error"_a = r.held_out_linear_error,
+                  "held_out_two_ring_flow_error"_a = r.held_out_two_ring_flow_error,
+                  "two_ring_boundary_fits"_a = r.two_ring_boundary_fits, "note"_a = r.note, "steps"_a = r.steps,
                   "harmonic_solves"_a = r.harmonic_solves, "seconds"_a = r.seconds,
                   "final_max_velocity"_a = r.final_max_velocity,
                   "well_posedness"_a = py::dict("vertices"_a = r.well_posedness.vertices,

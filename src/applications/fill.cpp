@@ -250,6 +250,8 @@ void report_fairing(const FairRegionReport& fairing, bool flowed, HoleReport& r)
   if (!fairing.note.empty()) r.note += (r.note.empty() ? "" : "; ") + fairing.note;
   r.held_out_flow_error = fairing.held_out_flow_error;
   r.held_out_linear_error = fairing.held_out_linear_error;
+  r.held_out_two_ring_flow_error = fairing.held_out_two_ring_flow_error;
+  r.two_ring_boundary_fits = flowed && fairing.two_ring_boundary_fits;
   r.steps = flowed ? fairing.flow.accepted_steps : 0;
   r.harmonic_solves = fairing.harmonic.iterations;
   r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();

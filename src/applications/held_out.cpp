@@ -68,10 +68,12 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
                       std::back_inserter(held_out));
   HeldOutErrors errors;
   if (held_out.empty()) return errors;
-  try {  // once for both trials, which fair copies of this mesh: a mesh that fails fails both
+  const bool weigh_two_ring = fairing.held_out_two_ring_fits && !fairing.flow.two_ring_boundary_fits;
+  try {  // once for every trial, each fairing a copy of this mesh: a mesh that fails fails them all
     require_valid(validate(sub.mesh, topo), Requirements{}, "fair_region");
   } catch (const Error&) {
     errors.flow = errors.linear = std::numeric_limits<double>::infinity();
+    if (weigh_two_ring) errors.two_ring_flow = errors.flow;
     return errors;
   }
   const Vertices normal = vertex_normals(sub.mesh.V, sub.mesh.F);
@@ -82,6 +84,11 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
   linear.method = FairMethod::harmonic;
   errors.flow = held_out_error(sub.mesh, topo, free, held_out, normal, edge, flow, &errors.flow_well_posedness);
   errors.linear = held_out_error(sub.mesh, topo, free, held_out, normal, edge, linear);
+  if (weigh_two_ring) {
+    FairRegionOptions two_ring = flow;
+    two_ring.flow.two_ring_boundary_fits = true;
+    errors.two_ring_flow = held_out_error(sub.mesh, topo, free, held_out, normal, edge, two_ring);
+  }
   return errors;
 }
 

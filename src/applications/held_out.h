@@ -6,6 +6,8 @@
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/mesh/submesh.h>
 
+#include <limits>
+
 namespace fairsurf::fair_detail {
 
 /// Mean normal distance of the held-out input vertices from where each fairing puts them, in units
@@ -13,12 +15,16 @@ namespace fairsurf::fair_detail {
 struct HeldOutErrors {
   double flow = 0;
   double linear = 0;
+  /// FairRegionOptions::held_out_two_ring_fits: the flow with FlowOptions::two_ring_boundary_fits;
+  /// NaN when not weighed.
+  double two_ring_flow = std::numeric_limits<double>::quiet_NaN();
   /// Of the flow's trial on the enlarged region (its report's, or its error's when the flow threw).
   WellPosedness flow_well_posedness;
 };
 
 /// Frees the `rings` rings of fixed vertices around the free vertices in a copy of `sub`, fairs that
-/// larger region with `fairing` (the flow with its linear floor; held_out_rings ignored) and with its
+/// larger region with `fairing` (the flow with its linear floor; held_out_rings ignored), with the
+/// same flow on 2-ring boundary fits where fairing.held_out_two_ring_fits asks, and with its
 /// linear ∆^k solution alone, and measures how far each moved the held-out vertices off the input's
 /// tangent planes there.
 /// `local`: the connectivity of sub.mesh.

@@ -159,7 +159,11 @@ void FlowRun::initialize() {
       moving_faces_.push_back(f);
 
   input_face_direction_ = face_directions(X_, F_, moving_faces_);
-  flow_detail::initialize_geometry(X_, F_, topo_, options_.fit, state_);
+  std::vector<int> fixed;  // FlowOptions::two_ring_boundary_fits
+  if (options_.two_ring_boundary_fits)
+    for (int v = 0; v < n; ++v)
+      if (!region_.is_free(v)) fixed.push_back(v);
+  flow_detail::initialize_geometry(X_, F_, topo_, options_.fit, fixed, state_);
   const SurfaceGeometry& geo = state_.ops.geometry;
   if (problem_.kind == FlowKind::sixth_order) {
     problem_.functions = parse_energy_functions(options_.functions);

@@ -167,9 +167,9 @@ void add_sixth_order(const FlowState& state, const Region& region, const EnergyT
 
 }  // namespace
 
-void initialize_geometry(const Vertices& X, const Faces& F, const Topology& topo,
-                         const FitOptions& fit, FlowState& state) {
-  state.fits = fit_quadratics(X, F, topo, fit);
+void initialize_geometry(const Vertices& X, const Faces& F, const Topology& topo, const FitOptions& fit,
+                         std::span<const int> two_ring_vertices, FlowState& state) {
+  state.fits = fit_quadratics(X, F, topo, fit, {}, two_ring_vertices);
   state.ops = compute_operators(state.fits, X);
 }
 

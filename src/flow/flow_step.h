@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <span>
 #include <vector>
 
 namespace fairsurf::flow_detail {
@@ -35,10 +36,11 @@ struct FlowState {
   double max_velocity = 0;      ///< max over free vertices of |V|
 };
 
-/// First evaluation: builds the fits' neighbourhoods and the operators' patterns at X. Leaves the
-/// velocity and energy to evaluate_flow_terms (the energy scale may depend on the geometry).
-void initialize_geometry(const Vertices& X, const Faces& F, const Topology& topo,
-                         const FitOptions& fit, FlowState& state);
+/// First evaluation: builds the fits' neighbourhoods and the operators' patterns at X, the vertices
+/// of `two_ring_vertices` fitted over their 2-ring (fit_quadratics). Leaves the velocity and energy
+/// to evaluate_flow_terms (the energy scale may depend on the geometry).
+void initialize_geometry(const Vertices& X, const Faces& F, const Topology& topo, const FitOptions& fit,
+                         std::span<const int> two_ring_vertices, FlowState& state);
 /// Refits and re-evaluates the operators in place at X (same connectivity).
 void update_geometry(const Vertices& X, FlowState& state);
 /// Velocity, energy and max |V| from the state's operators.

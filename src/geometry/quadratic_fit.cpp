@@ -323,6 +323,7 @@ const char* to_string(Neighbourhood reason) {
     case Neighbourhood::kTwoRingLowValence: return "2-ring (valence < 5)";
     case Neighbourhood::kTwoRingBorder: return "2-ring (border)";
     case Neighbourhood::kTwoRingIllConditioned: return "2-ring (ill-conditioned 1-ring)";
+    case Neighbourhood::kTwoRingRequested: return "2-ring (requested)";
   }
   return "unknown";
 }
@@ -346,7 +347,8 @@ std::vector<int> QuadraticFits::status_counts() const {
 }
 
 QuadraticFits fit_quadratics(const Vertices& V, const Faces& F, const Topology& topo,
-                             const FitOptions& options, std::span<const int> vertices) {
+                             const FitOptions& options, std::span<const int> vertices,
+                             std::span<const int> two_ring_vertices) {
   const int n = static_cast<int>(V.rows());
   if (topo.num_vertices != n || topo.num_faces != F.rows())
     throw InvalidArgument("fit_quadratics: the topology was built for " +
@@ -367,6 +369,12 @@ QuadraticFits fit_quadratics(const Vertices& V, const Faces& F, const Topology& 
   fits.faces = F;
   fits.vertex_faces = topo.vertex_faces;
   fits.neighbourhood = topological_neighbourhoods(topo, fitted);
+  for (int v : two_ring_vertices) {
+    if (v < 0 || v >= n)
+      throw InvalidArgument("fit_quadratics: two-ring vertex " + std::to_string(v) + " out of range [0, " +
+                            std::to_string(n) + ")");
+    if (fits.neighbourhood[v] == Neighbourhood::kOneRing) fits.neighbourhood[v] = Neighbourhood::kTwoRingRequested;
+  }
   allocate_neighbourhoods(fits, topo);
   refit_quadratics(fits, V);
   // 1-rings whose fit is ill-conditioned (or singular) switch to the 2-ring; usually none do, so

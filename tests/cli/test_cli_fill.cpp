@@ -53,13 +53,18 @@ TEST_F(CliFill, SelectedHolesAreFilledOneLineEachWithALog) {
   ASSERT_EQ(log["holes"].size(), 27u);
   EXPECT_EQ(log["holes"][0]["status"], "filled");
   EXPECT_EQ(log["holes"][1]["status"], "skipped");
-  // The hole gets the flow or its linear floor, whichever re-predicts the held-out rings better.
+  // The hole gets the flow (on 1-ring or 2-ring boundary fits) or its linear floor, whichever
+  // re-predicts the held-out rings best.
   const auto& hole = log["holes"][0];
   ASSERT_TRUE(hole["held_out_flow_error"].is_number()) << hole.dump();
   ASSERT_TRUE(hole["held_out_linear_error"].is_number()) << hole.dump();
-  const bool flow_wins = hole["held_out_flow_error"].get<double>() <= hole["held_out_linear_error"].get<double>();
+  ASSERT_TRUE(hole["held_out_two_ring_flow_error"].is_number()) << hole.dump();
+  const double one_ring = hole["held_out_flow_error"].get<double>();
+  const double two_ring = hole["held_out_two_ring_flow_error"].get<double>();
+  const bool flow_wins = std::min(one_ring, two_ring) <= hole["held_out_linear_error"].get<double>();
   EXPECT_EQ(hole["delivered"], flow_wins ? "G2" : "C2 (linear)") << hole.dump();
   EXPECT_EQ(hole["linear"], !flow_wins);
+  EXPECT_EQ(hole["two_ring_boundary_fits"], flow_wins && two_ring < one_ring) << hole.dump();
   EXPECT_EQ(hole.contains("steps_log"), flow_wins);
   EXPECT_GE(hole["harmonic_solves"].get<int>(), 1);  // the flow's ∆³ start, or the floor itself
   EXPECT_EQ(log["filled"], 2);

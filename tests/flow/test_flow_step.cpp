@@ -91,7 +91,7 @@ void prepare(Case& s, FlowKind kind, const std::vector<int>& free) {
   s.problem.kind = kind;
   s.problem.region = &s.region;
   s.problem.energy_weight = Eigen::VectorXd::Ones(s.mesh.V.rows());
-  flow_detail::initialize_geometry(s.mesh.V, s.mesh.F, s.topo, FitOptions{}, s.state);
+  flow_detail::initialize_geometry(s.mesh.V, s.mesh.F, s.topo, FitOptions{}, {}, s.state);
   if (kind == FlowKind::sixth_order) {
     s.problem.functions = parse_energy_functions({"H", "K"});
     s.problem.scale.curvature = curvature_scale(s.state.ops.geometry.H, s.state.ops.geometry.K);

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "analytic_meshes.h"
@@ -202,6 +203,37 @@ TEST(QuadraticFit, SubsetFitsOnlyTheListedVertices) {
   EXPECT_EQ(s.laplace.nonZeros(), expected);
   EXPECT_THROW(fit_quadratics(m.V, m.F, all.topo, {}, std::vector<int>{m.num_vertices()}),
                InvalidArgument);
+}
+
+// FlowOptions::two_ring_boundary_fits: listed vertices are fitted over their 2-ring. On a noisy sphere
+// the wider fit averages the noise: its mean curvature is closer to the sphere's on average.
+TEST(QuadraticFit, RequestedTwoRingFitsReadTheSurfaceOverTwoRings) {
+  const Mesh m = test::jittered_sphere(3, 1.0, 0.0);
+  Mesh noisy = m;
+  std::mt19937 random(7);
+  std::normal_distribution<double> deviate(0.0, 0.01);  // radial, about a tenth of an edge
+  for (int v = 0; v < m.num_vertices(); ++v) noisy.V.row(v) *= 1.0 + deviate(random);
+  const Fitted one = fit(noisy);
+  std::vector<int> listed;
+  for (int v = 0; v < m.num_vertices(); v += 3) listed.push_back(v);
+  const QuadraticFits two = fit_quadratics(noisy.V, noisy.F, one.topo, {}, {}, listed);
+  const SurfaceOperators a = compute_operators(one.fits, noisy.V), b = compute_operators(two, noisy.V);
+  double error_one = 0, error_two = 0;
+  for (int v = 0; v < m.num_vertices(); ++v) {
+    const bool is_listed = v % 3 == 0;
+    EXPECT_EQ(two.neighbourhood[v], is_listed ? Neighbourhood::kTwoRingRequested : one.fits.neighbourhood[v]);
+    EXPECT_EQ(two.neighbours.size(v), is_listed ? static_cast<int>(k_ring(one.topo, std::vector<int>{v}, 2).size()) - 1
+                                                : one.fits.neighbours.size(v));
+    if (!is_listed) {
+      EXPECT_DOUBLE_EQ(b.geometry.H[v], a.geometry.H[v]);
+      continue;
+    }
+    error_one += std::abs(std::abs(a.geometry.H[v]) - 1.0);
+    error_two += std::abs(std::abs(b.geometry.H[v]) - 1.0);
+  }
+  EXPECT_LT(error_two, 0.5 * error_one);
+  EXPECT_STREQ(to_string(Neighbourhood::kTwoRingRequested), "2-ring (requested)");
+  EXPECT_THROW(fit_quadratics(m.V, m.F, one.topo, {}, {}, std::vector<int>{-1}), InvalidArgument);
 }
 
 TEST(QuadraticFit, RefitReusesBuffersAndMatchesAFreshFit) {

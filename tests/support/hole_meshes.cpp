@@ -1,7 +1,10 @@
 #include "hole_meshes.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <limits>
+#include <random>
 #include <vector>
 
 namespace fairsurf::test {
@@ -48,6 +51,21 @@ Mesh cut_ball(const Mesh& mesh, const Vec3& centre, double radius) {
       if ((mesh.V.row(mesh.F(f, k)).transpose() - centre).norm() > radius) return true;
     return false;
   });
+}
+
+void add_normal_noise(Mesh& mesh, double sigma, unsigned seed) {
+  Vertices normal = Vertices::Zero(mesh.num_vertices(), 3);
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const Vec3 a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+    const Vec3 area_normal = (b - a).cross(c - a);
+    for (int k = 0; k < 3; ++k) normal.row(mesh.F(f, k)) += area_normal.transpose();
+  }
+  std::mt19937 random(seed);
+  std::normal_distribution<double> deviate(0.0, sigma);
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const double length = normal.row(v).norm();
+    if (length > 0) mesh.V.row(v) += deviate(random) * normal.row(v) / length;
+  }
 }
 
 // Ericson, Real-Time Collision Detection, 5.1.5: the closest point by Voronoi regions.

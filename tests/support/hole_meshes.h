@@ -18,6 +18,10 @@ Mesh cut_hole(const Mesh& mesh, const std::function<bool(const Eigen::Vector3d&)
 /// measurement protocol.
 Mesh cut_ball(const Mesh& mesh, const Eigen::Vector3d& centre, double radius);
 
+/// Moves every vertex of `mesh` along its area-weighted normal by a normal deviate of standard
+/// deviation `sigma` (a scan's noise; the same `seed` gives the same draw).
+void add_normal_noise(Mesh& mesh, double sigma, unsigned seed);
+
 /// Distance from p to the triangle (a, b, c).
 double point_triangle_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                const Eigen::Vector3d& c);

@@ -61,6 +61,12 @@ struct FairRegionOptions {
   /// surrounding surface worse (on real meshes the fitted energy can prefer shapes the surface does
   /// not have; docs/fill.md). Costs two more fairings of a slightly larger region. 0: off.
   int held_out_rings = 0;
+  /// With held_out_rings: also weigh the flow with its boundary data fitted over 2-rings
+  /// (FlowOptions::two_ring_boundary_fits, unless flow already sets it) and deliver whichever of the
+  /// three fairings re-predicts the held-out rings best. On noisy surroundings the 2-ring fits
+  /// average out the noise the flow would otherwise carry into the region (docs/fill.md, "Boundary
+  /// data over two rings"). Costs one more fairing of the enlarged region.
+  bool held_out_two_ring_fits = false;
 
   static FlowOptions default_fair_flow_options();
   /// The options that settle a disk-like region (a hole's patch, a marked region) in a few steps:
@@ -71,8 +77,9 @@ struct FairRegionOptions {
   /// sixth-order flow descends the energy (FlowStepKind::energy_descent, steady once a step lowers E
   /// by less than 1e-5 of itself, 30 rejections in a row allowed), keeps the ∆³ solution as its
   /// floor (linear_floor) and delivers it where it re-predicts 2 held-out rings better
-  /// (held_out_rings); and both linear solvers use the minimum-degree ordering, whose analysis
-  /// is far cheaper on patch-sized systems. From a flattened cap the plain defaults do not settle
+  /// (held_out_rings), the flow weighed also on 2-ring boundary fits (held_out_two_ring_fits);
+  /// and both linear solvers use the minimum-degree ordering, whose analysis is far cheaper on
+  /// patch-sized systems. From a flattened cap the plain defaults do not settle
   /// beyond about a thousand free vertices (docs/blend.md). Used by fill_holes and `fairsurf fair`; not
   /// by blend, whose tubes' ∆³ re-evaluation can fold a tube around a corner (fairing_cross).
   static FairRegionOptions harmonic_started();
@@ -97,6 +104,10 @@ struct FairRegionReport {
   /// after the linear solution, in mean edge lengths (∞: that fairing failed; NaN: not measured).
   double held_out_flow_error = std::numeric_limits<double>::quiet_NaN();
   double held_out_linear_error = std::numeric_limits<double>::quiet_NaN();
+  /// held_out_two_ring_fits: the same after the flow with its boundary data fitted over 2-rings.
+  double held_out_two_ring_flow_error = std::numeric_limits<double>::quiet_NaN();
+  /// The flow ran with FlowOptions::two_ring_boundary_fits (given, or chosen by the held-out rings).
+  bool two_ring_boundary_fits = false;
   ContinuityMeasure continuity;                ///< measured after fairing
   double seconds = 0;                          ///< wall time of the whole call
 

@@ -99,6 +99,10 @@ struct HoleReport {
   /// measured).
   double held_out_flow_error = std::numeric_limits<double>::quiet_NaN();
   double held_out_linear_error = std::numeric_limits<double>::quiet_NaN();
+  /// FairRegionOptions::held_out_two_ring_fits: the same after the flow on 2-ring boundary fits.
+  double held_out_two_ring_flow_error = std::numeric_limits<double>::quiet_NaN();
+  /// The delivered flow read its boundary data from 2-ring fits (FlowOptions::two_ring_boundary_fits).
+  bool two_ring_boundary_fits = false;
   /// Why `supported` is below `requested` (too few complete rings around the hole, or a failed
   /// attempt at a higher continuity — a throw, no steady state, a crossing: FillOptions::
   /// fallback_on_failure). Empty otherwise.

@@ -41,6 +41,7 @@ enum class Neighbourhood : std::uint8_t {
   kTwoRingLowValence,       ///< interior vertex of valence < 5
   kTwoRingBorder,           ///< an incident edge has one face (border) or more than two
   kTwoRingIllConditioned,   ///< the 1-ring fit's condition exceeded max_one_ring_condition
+  kTwoRingRequested,        ///< the caller asked for the 2-ring (fit_quadratics' two_ring_vertices)
 };
 
 /// Whether the fit at a vertex is well posed. Ordered by precedence: a vertex gets the first that
@@ -97,11 +98,15 @@ struct QuadraticFits {
   std::vector<int> status_counts() const;
 };
 
-/// Builds N(i) and fits every vertex (when `vertices` is empty) or only the listed ones.
+/// Builds N(i) and fits every vertex (when `vertices` is empty) or only the listed ones. The
+/// vertices in `two_ring_vertices` are fitted over their 2-ring whatever their valence: a fit over
+/// about 18 neighbours instead of 6 reads the surface at twice the mesh's scale and averages out
+/// noise at the scale of one edge (the flow's boundary data, FlowOptions::two_ring_boundary_fits).
 /// Throws InvalidArgument if V and `topo` disagree or a listed vertex is out of range, and
 /// InvalidMeshError if V contains a non-finite coordinate.
 QuadraticFits fit_quadratics(const Vertices& V, const Faces& F, const Topology& topo,
-                             const FitOptions& options = {}, std::span<const int> vertices = {});
+                             const FitOptions& options = {}, std::span<const int> vertices = {},
+                             std::span<const int> two_ring_vertices = {});
 
 /// Re-fits with new positions on the same connectivity and the same neighbourhoods, writing into
 /// the existing buffers (no allocation). Throws InvalidArgument if V has the wrong size.
