@@ -52,6 +52,16 @@ TEST(EnergyDescent, ARealRegionSettlesWithEveryAcceptedStepLoweringTheEnergy) {
   const FairRegionReport again = fair_region(second, region, options);
   EXPECT_TRUE(first.V == second.V) << "two identical runs differ";
   EXPECT_EQ(again.flow.accepted_steps, report.flow.accepted_steps);
+
+  // With its boundary data fitted over 2-rings (wider stencils at the fixed vertices) the descent
+  // is as monotone and ends as steady.
+  options.flow.two_ring_boundary_fits = true;
+  Mesh wide = mesh;
+  const FairRegionReport two_ring = fair_region(wide, region, options);
+  EXPECT_TRUE(two_ring.two_ring_boundary_fits);
+  EXPECT_EQ(two_ring.flow.stop_reason, FlowStopReason::steady);
+  expect_energy_monotone(two_ring.flow);
+  EXPECT_LT(two_ring.flow.final_energy, two_ring.flow.initial_energy);
 }
 
 // `fairsurf smooth --steady` on a noisy sphere: ends steady and round, E monotone, and two runs give
