@@ -115,7 +115,7 @@ FairRegionOptions descent_options(const FairRegionOptions& fair) {
   FairRegionOptions o = fair;
   o.flow.step_kind = FlowStepKind::energy_descent;
   o.flow.steady_energy_tolerance = 1e-5;
-  o.flow.step_control.max_consecutive_rejections = 30;
+  o.flow.max_consecutive_rejections = 30;
   o.harmonic_start_iterations = 0;  // from the time-stepped flow's last state
   return o;
 }
