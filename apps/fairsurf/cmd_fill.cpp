@@ -31,12 +31,12 @@ struct FillArgs {
 
 FillOptions fill_options(const FillArgs& args) {
   FillOptions o;
-  o.fairing.continuity = parse_continuity(args.continuity);
-  o.fairing.method = parse_fair_method(args.method);
-  o.fairing.flow.functions = args.functions;
-  if (args.max_steps > 0) o.fairing.flow.max_steps = args.max_steps;
+  o.continuity = parse_continuity(args.continuity);
+  o.method = parse_fair_method(args.method);
+  o.flow.functions = args.functions;
+  if (args.max_steps > 0) o.flow.max_steps = args.max_steps;
   // Every solve of the fill (membrane, harmonic start or floor, flow), each keeping its ordering.
-  for (LinearSolverOptions* solver : {&o.fairing.flow.solver, &o.fairing.harmonic_solver, &o.patch.membrane.solver})
+  for (LinearSolverOptions* solver : {&o.flow.solver, &o.harmonic_solver, &o.patch.membrane.solver})
     apply_solver_args(args.solver, *solver);
   o.holes = args.holes;
   o.max_hole_edges = args.max_hole_edges;

@@ -28,14 +28,13 @@ void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args) {
   cmd->add_flag("--force", args.force, "Allow outputs to overwrite an input");
 }
 
-FairRegionOptions region_fairing_options(const RegionFairingArgs& args, FairRegionOptions o) {
+void apply_region_fairing_args(const RegionFairingArgs& args, FairRegionOptions& o) {
   o.continuity = parse_continuity(args.continuity);
   o.method = parse_fair_method(args.method);
   o.flow.functions = args.functions;
   o.flow.max_steps = args.max_steps;
   apply_solver_args(args.solver, o.flow.solver);
   apply_solver_args(args.solver, o.harmonic_solver);
-  return o;
 }
 
 nlohmann::json to_json(const ContinuityMeasure& m) {

@@ -97,15 +97,15 @@ py::tuple fill_binding(const py::handle& V, const py::handle& F, const std::stri
                        int max_hole_edges, bool skip_largest, std::optional<int> max_steps, py::object callback) {
   Mesh mesh = to_mesh(V, F);
   FillOptions o;
-  o.fairing.continuity = parse_continuity(continuity);
-  o.fairing.method = parse_fair_method(method);
-  o.fairing.flow.functions = f;
-  if (max_steps) o.fairing.flow.max_steps = *max_steps;
+  o.continuity = parse_continuity(continuity);
+  o.method = parse_fair_method(method);
+  o.flow.functions = f;
+  if (max_steps) o.flow.max_steps = *max_steps;
   if (holes) o.holes = to_indices(*holes, "holes");
   o.max_hole_edges = max_hole_edges;
   o.skip_largest = skip_largest;
   Progress progress(std::move(callback));
-  progress.attach(o.fairing.flow);
+  progress.attach(o.flow);
   FillReport report;
   {
     py::gil_scoped_release release;
@@ -138,13 +138,13 @@ struct FairingArgs {
   int max_steps;
 };
 
-// As region_fairing_options in the CLI: continuity, method, f and the step limit on `base`.
-FairRegionOptions fairing_options(const FairingArgs& a, FairRegionOptions o) {
+// As apply_region_fairing_args in the CLI: continuity, method, f and the step limit on `o` (a
+// FairRegionOptions, or the BlendOptions that derive from it).
+void set_fairing(const FairingArgs& a, FairRegionOptions& o) {
   o.continuity = parse_continuity(a.continuity);
   o.method = parse_fair_method(a.method);
   o.flow.functions = a.f;
   o.flow.max_steps = a.max_steps;
-  return o;
 }
 
 py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handle& region, const FairingArgs& args,
@@ -154,7 +154,8 @@ py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handl
   Mesh mesh = to_mesh(V, F);
   const std::vector<int> free = region_vertices(region, mesh.num_vertices());
   FairRegionOptions options =
-      fairing_options(args, start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{});
+      start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{};
+  set_fairing(args, options);
   Progress progress(std::move(callback));
   progress.attach(options.flow);
   const FairRegionReport report =
@@ -169,11 +170,11 @@ py::tuple blend_binding(const py::handle& V, const py::handle& F, const std::opt
                         const FairingArgs& args, bool relax, py::object callback) {
   Mesh mesh = to_mesh(V, F);
   BlendOptions options;
-  options.fair = fairing_options(args, FairRegionOptions{});
+  set_fairing(args, options);
   options.patch.relax = relax;
   if (loops) std::tie(options.loop_a, options.loop_b) = *loops;
   Progress progress(std::move(callback));
-  progress.attach(options.fair.flow);
+  progress.attach(options.flow);
   const BlendReport report =
       keeping_last_state(mesh, [&] { return blend_loops(mesh, options, progress.flow_observer()); });
   progress.rethrow();
