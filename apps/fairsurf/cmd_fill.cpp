@@ -198,9 +198,7 @@ void setup_fill(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "Output mesh")->required();
   cmd->add_option("--continuity", args->continuity,
                   "G2 (default: sixth-order flow, three fixed rings), G1 (Willmore) or G0 (mean curvature)");
-  cmd->add_option("--f", args->functions,
-                  "Energy function(s) f(H,K) of the sixth-order flow, repeatable: one per --f (default H)")
-      ->allow_extra_args(false);
+  add_functions_option(cmd, args->functions);
   cmd->add_option("--holes", args->holes,
                   "Fill only these boundary loops (0-based, comma separated, or one per --holes)")
       ->delimiter(',')

@@ -25,11 +25,12 @@ struct RegionFairingArgs {
   bool force = false, quiet = false, repair = false;
 };
 
-/// Adds --continuity, --f, --method, --solver, --mumps-icntl, --max-steps, --log, --force, --quiet, --repair to `cmd`.
+/// Adds --continuity, --functions, --method, --solver, --mumps-controls, --max-steps, --log, --force,
+/// --quiet, --repair to `cmd`.
 void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args);
 
 /// Sets what the flags ask for on `options` (throws InvalidArgument for a bad name): a
-/// FairRegionOptions, or the BlendOptions that derive from it. --solver and --mumps-icntl set the
+/// FairRegionOptions, or the BlendOptions that derive from it. --solver and --mumps-controls set the
 /// flow's and the harmonic solves' solver, keeping their ordering. `fair` starts from
 /// FairRegionOptions::harmonic_started(), `blend` from the plain defaults (fair_region.h says why).
 void apply_region_fairing_args(const RegionFairingArgs& args, FairRegionOptions& options);
