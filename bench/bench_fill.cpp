@@ -47,7 +47,7 @@ int run_case(int subdivisions, double cap, FairMethod method) {
   Mesh mesh = holed_sphere(subdivisions, cap);
   const int input_vertices = mesh.num_vertices();
   FillOptions o;
-  o.fairing.method = method;
+  o.method = method;
   int attempts = 0;
   double step_seconds = 0;
   const FillObserver observer = [&](std::span<const int>, const StepRecord& s) {

@@ -149,7 +149,7 @@ void fill_ours(const Mesh& cut, const Truth& truth, double h, Row& row) {
 
 void fill_baseline(const Mesh& cut, const Truth& truth, double h, Row& row) {
   FillOptions options;
-  options.fairing.method = FairMethod::harmonic;  // cotangent ∆³ at G2
+  options.method = FairMethod::harmonic;  // cotangent ∆³ at G2
   try {
     const FillReport report = run_fill(cut, options, truth, h, row.baseline);
     row.has_baseline = report.failed == 0;

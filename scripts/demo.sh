@@ -22,7 +22,7 @@ wrote out/spot_curvature.ply
 echo; echo "\$ python3 scripts/add_noise.py data/torus.obj out/torus_noisy.obj --amplitude 0.15 --seed 1"
 python3 scripts/add_noise.py data/torus.obj out/torus_noisy.obj --amplitude 0.15 --seed 1
 wrote out/torus_noisy.obj
-run smooth out/torus_noisy.obj -o out/torus_smooth.obj --f H --log out/torus_smooth.json --force
+run smooth out/torus_noisy.obj -o out/torus_smooth.obj --functions H --log out/torus_smooth.json --force
 wrote out/torus_smooth.obj; wrote out/torus_smooth.json
 
 # 3. Before and after, coloured by mean curvature on one range.
@@ -32,7 +32,7 @@ wrote out/torus_before_after.png
 
 # 4. Hole filling and blending, when this build has them.
 if has_command fill; then
-  run fill data/blub_open.obj -o out/blub_filled.obj --f H --force
+  run fill data/blub_open.obj -o out/blub_filled.obj --functions H --force
   run render out/blub_filled.obj --compare data/blub.obj -o out/blub_filled.png --size 900x400 \
     --title "blub_open.obj filled (G2 requested; the fill reports what it reached) beside blub.obj" --force
   wrote out/blub_filled.obj; wrote out/blub_filled.png
@@ -40,7 +40,7 @@ else
   echo; echo "demo: fairsurf fill is not in this build yet; skipping hole filling"
 fi
 if has_command blend; then
-  run blend data/cgal_blobby_3cc.off -o out/blobby_blended.obj --f H --force
+  run blend data/cgal_blobby_3cc.off -o out/blobby_blended.obj --functions H --force
   run render out/blobby_blended.obj -o out/blobby_blended.png --size 900x400 \
     --title "cgal_blobby_3cc.off: a gap closed by a G2 blend (f = H)" --force
   wrote out/blobby_blended.obj; wrote out/blobby_blended.png

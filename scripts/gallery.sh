@@ -121,9 +121,9 @@ run noise python3 scripts/add_noise.py "$noisy_source" "$work/input.obj" --ampli
 curv clean; curv input
 range=$(measure range "$work/clean.json" --around-median)
 sixth=()
-smooth_run "sixth_H" --f H && sixth+=(sixth_H)
-smooth_run "sixth_absHpH0.5" --f absHpH:0.5 && sixth+=(sixth_absHpH0.5)
-smooth_run "sixth_H+K" --f H --f K --max-steps "$cap_pair" && sixth+=(sixth_H+K)
+smooth_run "sixth_H" --functions H && sixth+=(sixth_H)
+smooth_run "sixth_absHpH0.5" --functions absHpH:0.5 && sixth+=(sixth_absHpH0.5)
+smooth_run "sixth_H+K" --functions H --functions K --max-steps "$cap_pair" && sixth+=(sixth_H+K)
 mean=()
 if smooth_run "mcf_t" --flow mean; then
   mean+=(mcf_t)
@@ -143,10 +143,10 @@ cp "$work/input.obj" "$work/clean.obj"
 curv input
 range=$(measure range "$work/input.json")
 scan_runs=()
-if smooth_run "scan_H" --f H --max-steps "$cap"; then
+if smooth_run "scan_H" --functions H --max-steps "$cap"; then
   scan_runs+=(scan_H)
-  smooth_run "scan_absHpH0.5" --f absHpH:0.5 --max-steps "$cap" && scan_runs+=(scan_absHpH0.5)
-  smooth_run "scan_H+K" --f H --f K --max-steps "$cap_pair" && scan_runs+=(scan_H+K)
+  smooth_run "scan_absHpH0.5" --functions absHpH:0.5 --max-steps "$cap" && scan_runs+=(scan_absHpH0.5)
+  smooth_run "scan_H+K" --functions H --functions K --max-steps "$cap_pair" && scan_runs+=(scan_H+K)
   if smooth_run "scan_mcf_t" --flow mean --max-steps "$cap"; then
     scan_runs+=(scan_mcf_t)
     t3=$(python3 -c "print(3 * $(measure time "$work/scan_mcf_t.log"))")
@@ -171,7 +171,7 @@ curv clean; curv input
 range=$(measure range "$work/clean.json" --around-median)
 fig6=()
 smooth_run willmore --flow willmore --max-steps "$cap" && fig6+=(willmore)
-smooth_run sixth_H --f H --max-steps "$cap" && fig6+=(sixth_H)
+smooth_run sixth_H --functions H --max-steps "$cap" && fig6+=(sixth_H)
 end_commands
 render_row "$images/fig6_willmore.png" "$range" "noisy torus, Willmore flow, sixth-order flow (f = H)" input ${fig6[@]+"${fig6[@]}"}
 table "$work/clean.obj" clean input ${fig6[@]+"${fig6[@]}"}
@@ -183,11 +183,11 @@ if has_command fill; then
   fills=()
   for f in H absHpH:0.5; do
     name=fill_${f//:/}
-    if run "$name" "$fs" fill "$work/input.obj" -o "$work/$name.obj" --f "$f" --max-steps "$cap" --quiet; then
+    if run "$name" "$fs" fill "$work/input.obj" -o "$work/$name.obj" --functions "$f" --max-steps "$cap" --quiet; then
       curv "$name" && fills+=("$name")
       echo "    $(shown "$(cat "$work/$name.out")")" >>"$work/commands"
     else
-      note "**$name left out:** \`fill --f $f\` failed: $(tail -n1 "$work/$name.err")"
+      note "**$name left out:** \`fill --functions $f\` failed: $(tail -n1 "$work/$name.err")"
     fi
   done
   end_commands
@@ -225,7 +225,7 @@ begin_figure "Figs 3/4: G2 blending" "The paper's scenes: a spherical cap above 
 if has_command blend && has_command scene; then
   for scene in fig3 fig4; do
     if run "$scene" "$fs" scene "$scene" -o "$work/$scene.ply" &&
-       run "${scene}_blend" "$fs" blend "$work/$scene.ply" -o "$work/${scene}_blend.obj" --f H --max-steps "$cap" --quiet; then
+       run "${scene}_blend" "$fs" blend "$work/$scene.ply" -o "$work/${scene}_blend.obj" --functions H --max-steps "$cap" --quiet; then
       echo "    $(shown "$(cat "$work/${scene}_blend.out")")" >>"$work/commands"
       run "${scene}_in" "$fs" convert "$work/$scene.ply" -o "$work/${scene}.obj" --force
       curv "$scene"; curv "${scene}_blend"

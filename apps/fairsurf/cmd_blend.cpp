@@ -26,7 +26,7 @@ struct BlendArgs {
 
 BlendOptions blend_options(const BlendArgs& args) {
   BlendOptions o;
-  o.fair = region_fairing_options(args.fairing);
+  apply_region_fairing_args(args.fairing, o);
   o.patch.relax = !args.no_relax;
   apply_solver_args(args.fairing.solver, o.patch.membrane.solver);
   o.descent_fallback = !args.no_descent_fallback;
@@ -74,7 +74,7 @@ void run_blend(const BlendArgs& args) {
                       {"inputs", args.inputs},
                       {"functions", f.functions},
                       {"repair", repair_json(repaired)}},
-                     options.fair.flow.step_kind);
+                     options.flow.step_kind);
   const BlendReport report =
       run.run([&] { return blend_loops(mesh, options, run.observer()); }, mesh, args.output);
   if (report.fair.method == FairMethod::flow) warn_if_not_parabolic(report.fair.flow);

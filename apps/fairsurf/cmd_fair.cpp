@@ -50,8 +50,9 @@ void run_fair(const FairArgs& args) {
   const RegionFairingArgs& f = args.fairing;
   check_outputs("fair", {{"-o", args.output, OutputKind::mesh}, {"--log", f.log, OutputKind::json}},
                 {args.input, args.region_file}, f.force);
-  const FairRegionOptions options = region_fairing_options(
-      f, args.start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{});
+  FairRegionOptions options =
+      args.start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{};
+  apply_region_fairing_args(f, options);
   Mesh mesh = read_input(args.input);
   drop_shape_properties(mesh, args.input);
   const auto repaired = repair_input(mesh, f.repair, args.input);

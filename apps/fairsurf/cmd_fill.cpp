@@ -31,12 +31,12 @@ struct FillArgs {
 
 FillOptions fill_options(const FillArgs& args) {
   FillOptions o;
-  o.fairing.continuity = parse_continuity(args.continuity);
-  o.fairing.method = parse_fair_method(args.method);
-  o.fairing.flow.functions = args.functions;
-  if (args.max_steps > 0) o.fairing.flow.max_steps = args.max_steps;
+  o.continuity = parse_continuity(args.continuity);
+  o.method = parse_fair_method(args.method);
+  o.flow.functions = args.functions;
+  if (args.max_steps > 0) o.flow.max_steps = args.max_steps;
   // Every solve of the fill (membrane, harmonic start or floor, flow), each keeping its ordering.
-  for (LinearSolverOptions* solver : {&o.fairing.flow.solver, &o.fairing.harmonic_solver, &o.patch.membrane.solver})
+  for (LinearSolverOptions* solver : {&o.flow.solver, &o.harmonic_solver, &o.patch.membrane.solver})
     apply_solver_args(args.solver, *solver);
   o.holes = args.holes;
   o.max_hole_edges = args.max_hole_edges;
@@ -200,9 +200,7 @@ void setup_fill(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "Output mesh")->required();
   cmd->add_option("--continuity", args->continuity,
                   "G2 (default: sixth-order flow, three fixed rings), G1 (Willmore) or G0 (mean curvature)");
-  cmd->add_option("--f", args->functions,
-                  "Energy function(s) f(H,K) of the sixth-order flow, repeatable: one per --f (default H)")
-      ->allow_extra_args(false);
+  add_functions_option(cmd, args->functions);
   cmd->add_option("--holes", args->holes,
                   "Fill only these boundary loops (0-based, comma separated, or one per --holes)")
       ->delimiter(',')

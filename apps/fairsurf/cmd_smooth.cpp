@@ -16,7 +16,7 @@ namespace fairsurf::cli {
 namespace {
 
 struct SmoothArgs {
-  std::string input, output, log, fixed_file;
+  std::string input, output, log, fixed_vertices_file;
   std::string flow = "sixth";
   std::vector<std::string> functions{"H"};
   SolverArgs solver;
@@ -40,8 +40,8 @@ SmoothOptions smooth_options(const SmoothArgs& args, const Mesh& mesh) {
   apply_solver_args(args.solver, o.flow.solver);
   o.flow.max_steps = args.max_steps;
   o.fixed_rings = args.fixed_rings;
-  if (!args.fixed_file.empty())
-    o.fixed_vertices = read_vertex_indices(args.fixed_file, mesh.num_vertices());
+  if (!args.fixed_vertices_file.empty())
+    o.fixed_vertices = read_vertex_indices(args.fixed_vertices_file, mesh.num_vertices());
   set_smoothing_end(o, {args.steps, args.steady, args.steady_tolerance, args.time, args.tau});
   return o;
 }
@@ -66,7 +66,7 @@ void check_times(const SmoothArgs& args) {
 void run_smooth(const SmoothArgs& args) {
   check_times(args);
   check_outputs("smooth", {{"-o", args.output, OutputKind::mesh}, {"--log", args.log, OutputKind::json}},
-                {args.input, args.fixed_file}, args.force);
+                {args.input, args.fixed_vertices_file}, args.force);
   Mesh mesh = read_input(args.input);
   drop_shape_properties(mesh, args.input);
   const auto repaired = repair_input(mesh, args.repair, args.input);
@@ -102,10 +102,7 @@ void setup_smooth(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "Output mesh")->required();
   cmd->add_option("--flow", args->flow,
                   "sixth (default), willmore, diffusion (surface diffusion) or mean (mean curvature)");
-  cmd->add_option("--f", args->functions,
-                  "Energy function(s) f(H,K) of the sixth-order flow, repeatable: H (default), K, H2, "
-                  "absHpH:p, 4absHH+2K, k1, k2 or a formula in H and K; one per --f")
-      ->allow_extra_args(false);
+  add_functions_option(cmd, args->functions);
   cmd->add_option("--tau", args->tau,
                   "Initial time step, unit-diagonal units, in (0, 1] (default: the run's time / 64)")
       ->check(positive_number());
@@ -123,7 +120,8 @@ void setup_smooth(CLI::App& app) {
       ->check(positive_number());
   cmd->add_option("--max-steps", args->max_steps, "Stop after this many accepted steps (default 1000)")
       ->check(whole_number_at_least(1));
-  cmd->add_option("--fixed", args->fixed_file, "File of 0-based vertex indices to hold fixed");
+  cmd->add_option("--fixed-vertices,--fixed", args->fixed_vertices_file,
+                  "File of 0-based vertex indices to hold fixed");
   cmd->add_option("--fixed-rings", args->fixed_rings,
                   "Rings held fixed along the mesh border (default 3; 0 frees the border)")
       ->check(whole_number_at_least(0));

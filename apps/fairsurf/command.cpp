@@ -141,11 +141,18 @@ void drop_shape_properties(Mesh& mesh, const std::string& path) {
                  "on the output)\n";
 }
 
+void add_functions_option(CLI::App* cmd, std::vector<std::string>& functions) {
+  cmd->add_option("--functions,--f", functions,
+                  "Energy function(s) f(H,K) of the sixth-order flow, repeatable, one per --functions: H "
+                  "(default), K, H2, absHpH:p, 4absHH+2K, k1, k2 or a formula in H and K")
+      ->allow_extra_args(false);
+}
+
 void add_solver_options(CLI::App* cmd, SolverArgs& args) {
   cmd->add_option("--solver", args.name,
                   "Linear solver: mumps (default, also 'lu'), umfpack, gmres, or mumps-mpi (MUMPS with its "
                   "factors on every rank of `mpirun -n N fairsurf ...`)");
-  cmd->add_option("--mumps-icntl", args.mumps_icntl,
+  cmd->add_option("--mumps-controls,--mumps-icntl", args.mumps_controls,
                   "K=V: set MUMPS's control ICNTL(K) to V (mumps, mumps-mpi; repeatable; e.g. 7=0 for AMD, "
                   "28=2 for a parallel analysis)")
       ->allow_extra_args(false);
@@ -159,7 +166,7 @@ std::pair<int, int> mumps_control(const std::string& text) {
   const auto k = number_in(text.substr(0, equals));
   const auto v = equals == std::string::npos ? std::nullopt : number_in(text.substr(equals + 1));
   if (!k || !v || *k != std::floor(*k) || *v != std::floor(*v) || std::abs(*k) > INT_MAX || std::abs(*v) > INT_MAX)
-    throw InvalidArgument("--mumps-icntl: expected K=V with whole numbers, e.g. 7=0 (got '" + text + "')");
+    throw InvalidArgument("--mumps-controls: expected K=V with whole numbers, e.g. 7=0 (got '" + text + "')");
   return {static_cast<int>(*k), static_cast<int>(*v)};
 }
 
@@ -171,7 +178,7 @@ void apply_solver_args(const SolverArgs& args, LinearSolverOptions& options) {
     throw InvalidArgument(
         "--solver mumps-mpi: this fairsurf was built without MPI (configure with -DFAIRSURF_MPI=ON, with "
         "openmpi-bin, libopenmpi-dev and libmumps-ptscotch-dev installed); use --solver mumps");
-  for (const std::string& text : args.mumps_icntl) options.mumps_controls.insert(mumps_control(text));
+  for (const std::string& text : args.mumps_controls) options.mumps_controls.insert(mumps_control(text));
 }
 
 bool has_vertex_data(const Mesh& mesh) { return !mesh.vertex_scalars.empty() || mesh.vertex_colors.rows() > 0; }

@@ -55,7 +55,7 @@ struct Output {
 /// Checks every output of a command before any work, so that no run is thrown away at the end:
 /// an extension the writer knows (exit 1), an existing writable directory and no directory at the
 /// path itself (exit 5), no two outputs on one file (exit 1), and none over one of `inputs` (every
-/// file the command reads: meshes, --fixed, --region; empty paths are skipped) unless `force` (exit 5).
+/// file the command reads: meshes, --fixed-vertices, --region; empty paths are skipped) unless `force` (exit 5).
 void check_outputs(const std::string& command, const std::vector<Output>& outputs,
                    const std::vector<std::filesystem::path>& inputs, bool force);
 
@@ -87,17 +87,25 @@ void write_output(Write&& write) {
   }
 }
 
-/// --solver and --mumps-icntl, shared by the commands that solve.
+// Flags are named after the option field they set (docs/cli.md, "Flags and the fields they set");
+// a flag's earlier name stays as its alias, so that old scripts keep working.
+
+/// Adds --functions (alias --f) to `cmd`: the energy functions f_l of the sixth-order flow
+/// (FlowOptions::functions), one per occurrence.
+void add_functions_option(CLI::App* cmd, std::vector<std::string>& functions);
+
+/// --solver and --mumps-controls, shared by the commands that solve.
 struct SolverArgs {
   std::string name = "mumps";
-  std::vector<std::string> mumps_icntl;  ///< "K=V" each
+  std::vector<std::string> mumps_controls;  ///< "K=V" each
 };
 /// Adds --solver to `cmd`: mumps (the default; also "lu"), umfpack, gmres, or mumps-mpi (the factors
-/// spread over the ranks of `mpirun -n N fairsurf ...`, docs/solvers.md); and --mumps-icntl K=V,
-/// repeatable, MUMPS's own controls passed through (LinearSolverOptions::mumps_controls).
+/// spread over the ranks of `mpirun -n N fairsurf ...`, docs/solvers.md); and --mumps-controls K=V
+/// (alias --mumps-icntl), repeatable, MUMPS's own controls passed through
+/// (LinearSolverOptions::mumps_controls).
 void add_solver_options(CLI::App* cmd, SolverArgs& args);
 /// Sets the kind and MUMPS controls of `options` (keeping its ordering). InvalidArgument (exit 1) for
-/// an unknown solver, mumps-mpi in a build without MPI, or a malformed --mumps-icntl.
+/// an unknown solver, mumps-mpi in a build without MPI, or a malformed --mumps-controls.
 void apply_solver_args(const SolverArgs& args, LinearSolverOptions& options);
 
 /// Whether `mesh` carries PLY vertex properties or colours.

@@ -12,10 +12,7 @@ void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args) {
   cmd->add_option("--continuity", args.continuity,
                   "G2 (default: sixth-order flow, three fixed rings), G1 (Willmore, two) or G0 (mean "
                   "curvature, one)");
-  cmd->add_option("--f", args.functions,
-                  "Energy function(s) f(H,K) of the sixth-order flow, repeatable: H (default), K, H2, "
-                  "absHpH:p, 4absHH+2K, k1, k2 or a formula in H and K; one per --f")
-      ->allow_extra_args(false);
+  add_functions_option(cmd, args.functions);
   cmd->add_option("--method", args.method,
                   "flow (default: the geometric flow to a steady state) or harmonic (cotangent "
                   "Laplacian^(k+1) x = 0, the linear baseline)");
@@ -28,14 +25,13 @@ void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args) {
   cmd->add_flag("--force", args.force, "Allow outputs to overwrite an input");
 }
 
-FairRegionOptions region_fairing_options(const RegionFairingArgs& args, FairRegionOptions o) {
+void apply_region_fairing_args(const RegionFairingArgs& args, FairRegionOptions& o) {
   o.continuity = parse_continuity(args.continuity);
   o.method = parse_fair_method(args.method);
   o.flow.functions = args.functions;
   o.flow.max_steps = args.max_steps;
   apply_solver_args(args.solver, o.flow.solver);
   apply_solver_args(args.solver, o.harmonic_solver);
-  return o;
 }
 
 nlohmann::json to_json(const ContinuityMeasure& m) {

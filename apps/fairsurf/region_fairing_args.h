@@ -25,13 +25,15 @@ struct RegionFairingArgs {
   bool force = false, quiet = false, repair = false;
 };
 
-/// Adds --continuity, --f, --method, --solver, --mumps-icntl, --max-steps, --log, --force, --quiet, --repair to `cmd`.
+/// Adds --continuity, --functions, --method, --solver, --mumps-controls, --max-steps, --log, --force,
+/// --quiet, --repair to `cmd`.
 void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args);
 
-/// `base` with what the flags ask for (throws InvalidArgument for a bad name); --solver and
-/// --mumps-icntl set the flow's and the harmonic solves' solver, keeping their ordering. `fair` starts from
+/// Sets what the flags ask for on `options` (throws InvalidArgument for a bad name): a
+/// FairRegionOptions, or the BlendOptions that derive from it. --solver and --mumps-controls set the
+/// flow's and the harmonic solves' solver, keeping their ordering. `fair` starts from
 /// FairRegionOptions::harmonic_started(), `blend` from the plain defaults (fair_region.h says why).
-FairRegionOptions region_fairing_options(const RegionFairingArgs& args, FairRegionOptions base = {});
+void apply_region_fairing_args(const RegionFairingArgs& args, FairRegionOptions& options);
 
 nlohmann::json to_json(const ContinuityMeasure& measure);
 /// Method, continuity requested and supported, flow kind and run (or harmonic figures), measure.

@@ -42,6 +42,21 @@ auto keeping_last_state(Mesh& mesh, Call call) {
   }
 }
 
+// A keyword given under its field's name or under its alias (the CLI flag's earlier name, kept for
+// old scripts: f for functions, fixed for fixed_vertices), not both.
+template <class T>
+std::optional<T> named_or_alias(const char* call, const char* name, std::optional<T> value, const char* alias,
+                                std::optional<T> alias_value) {
+  if (value && alias_value)
+    throw py::type_error(std::string(call) + "() got both " + name + " and its alias " + alias + "; give one");
+  return value ? value : alias_value;
+}
+
+// The functions f_l, given as `functions` or `f`; ["H"] when neither is.
+Functions functions_kwarg(const char* call, std::optional<Functions> functions, std::optional<Functions> f) {
+  return named_or_alias(call, "functions", std::move(functions), "f", std::move(f)).value_or(Functions{"H"});
+}
+
 // The CLI's short names (`fairsurf smooth --flow`), then the library's.
 FlowKind flow_kind(const std::string& name) {
   static const std::map<std::string, FlowKind> short_names{
@@ -52,13 +67,13 @@ FlowKind flow_kind(const std::string& name) {
 
 struct SmoothArgs {
   std::string flow;
-  Functions f;
+  Functions functions;
   std::optional<double> time, tau;
   std::optional<int> steps;
   bool steady;
   double steady_tolerance;
   int max_steps, fixed_rings;
-  std::optional<py::object> fixed;
+  std::optional<py::object> fixed_vertices;
   std::string solver;
 };
 
@@ -66,11 +81,11 @@ struct SmoothArgs {
 // `time` (set_smoothing_end).
 SmoothOptions smooth_options(const SmoothArgs& a, const Mesh& mesh) {
   SmoothOptions o = scan_smoothing_options(mesh, flow_kind(a.flow));
-  o.flow.functions = a.f;
+  o.flow.functions = a.functions;
   o.flow.solver.kind = parse_linear_solver_kind(a.solver);
   o.flow.max_steps = a.max_steps;
   o.fixed_rings = a.fixed_rings;
-  if (a.fixed) o.fixed_vertices = to_indices(*a.fixed, "fixed");
+  if (a.fixed_vertices) o.fixed_vertices = to_indices(*a.fixed_vertices, "fixed_vertices");
   set_smoothing_end(o, {a.steps.value_or(0), a.steady, a.steady_tolerance, a.time.value_or(0), a.tau.value_or(0)});
   return o;
 }
@@ -93,26 +108,26 @@ py::tuple smooth_binding(const py::handle& V, const py::handle& F, const SmoothA
 }
 
 py::tuple fill_binding(const py::handle& V, const py::handle& F, const std::string& continuity,
-                       const std::optional<py::object>& holes, const Functions& f, const std::string& method,
+                       const std::optional<py::object>& holes, const Functions& functions, const std::string& method,
                        int max_hole_edges, bool skip_largest, std::optional<int> max_steps, py::object callback) {
   Mesh mesh = to_mesh(V, F);
   FillOptions o;
-  o.fairing.continuity = parse_continuity(continuity);
-  o.fairing.method = parse_fair_method(method);
-  o.fairing.flow.functions = f;
-  if (max_steps) o.fairing.flow.max_steps = *max_steps;
+  o.continuity = parse_continuity(continuity);
+  o.method = parse_fair_method(method);
+  o.flow.functions = functions;
+  if (max_steps) o.flow.max_steps = *max_steps;
   if (holes) o.holes = to_indices(*holes, "holes");
   o.max_hole_edges = max_hole_edges;
   o.skip_largest = skip_largest;
   Progress progress(std::move(callback));
-  progress.attach(o.fairing.flow);
+  progress.attach(o.flow);
   FillReport report;
   {
     py::gil_scoped_release release;
     report = fill_holes(mesh, o, progress.fill_observer());
   }
   progress.rethrow();
-  py::dict d("continuity"_a = continuity, "method"_a = method, "functions"_a = f);
+  py::dict d("continuity"_a = continuity, "method"_a = method, "functions"_a = functions);
   for (const auto item : to_dict(report, progress.fill_steps())) d[item.first] = item.second;
   return py::make_tuple(to_numpy(std::move(mesh.V)), to_numpy(std::move(mesh.F)), d);
 }
@@ -133,18 +148,18 @@ std::vector<int> region_vertices(const py::handle& region, int num_vertices) {
 
 struct FairingArgs {
   std::string continuity;
-  Functions f;
+  Functions functions;
   std::string method;
   int max_steps;
 };
 
-// As region_fairing_options in the CLI: continuity, method, f and the step limit on `base`.
-FairRegionOptions fairing_options(const FairingArgs& a, FairRegionOptions o) {
+// As apply_region_fairing_args in the CLI: continuity, method, f and the step limit on `o` (a
+// FairRegionOptions, or the BlendOptions that derive from it).
+void set_fairing(const FairingArgs& a, FairRegionOptions& o) {
   o.continuity = parse_continuity(a.continuity);
   o.method = parse_fair_method(a.method);
-  o.flow.functions = a.f;
+  o.flow.functions = a.functions;
   o.flow.max_steps = a.max_steps;
-  return o;
 }
 
 py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handle& region, const FairingArgs& args,
@@ -154,13 +169,14 @@ py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handl
   Mesh mesh = to_mesh(V, F);
   const std::vector<int> free = region_vertices(region, mesh.num_vertices());
   FairRegionOptions options =
-      fairing_options(args, start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{});
+      start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{};
+  set_fairing(args, options);
   Progress progress(std::move(callback));
   progress.attach(options.flow);
   const FairRegionReport report =
       keeping_last_state(mesh, [&] { return fair_region(mesh, free, options, progress.flow_observer()); });
   progress.rethrow();
-  py::dict d("functions"_a = args.f);
+  py::dict d("functions"_a = args.functions);
   for (const auto item : to_dict(report)) d[item.first] = item.second;
   return py::make_tuple(to_numpy(std::move(mesh.V)), d);
 }
@@ -169,15 +185,15 @@ py::tuple blend_binding(const py::handle& V, const py::handle& F, const std::opt
                         const FairingArgs& args, bool relax, py::object callback) {
   Mesh mesh = to_mesh(V, F);
   BlendOptions options;
-  options.fair = fairing_options(args, FairRegionOptions{});
+  set_fairing(args, options);
   options.patch.relax = relax;
   if (loops) std::tie(options.loop_a, options.loop_b) = *loops;
   Progress progress(std::move(callback));
-  progress.attach(options.fair.flow);
+  progress.attach(options.flow);
   const BlendReport report =
       keeping_last_state(mesh, [&] { return blend_loops(mesh, options, progress.flow_observer()); });
   progress.rethrow();
-  py::dict d("functions"_a = args.f);
+  py::dict d("functions"_a = args.functions);
   for (const auto item : to_dict(report)) d[item.first] = item.second;
   return py::make_tuple(to_numpy(std::move(mesh.V)), to_numpy(std::move(mesh.F)), d);
 }
@@ -185,43 +201,61 @@ py::tuple blend_binding(const py::handle& V, const py::handle& F, const std::opt
 }  // namespace
 
 void register_flow_functions(py::module_& m) {
-  const Functions H{"H"};
   const int fair_steps = FairRegionOptions::default_fair_flow_options().max_steps;
+  // `functions` and `fixed_vertices` also answer to their aliases `f` and `fixed` (named_or_alias).
   m.def(
       "smooth",
-      [](const py::handle& V, const py::handle& F, std::string flow, Functions f, std::optional<double> time,
-         std::optional<int> steps, bool steady, double steady_tolerance, std::optional<double> tau, int max_steps,
+      [](const py::handle& V, const py::handle& F, std::string flow, std::optional<Functions> functions,
+         std::optional<Functions> f, std::optional<double> time, std::optional<int> steps, bool steady,
+         double steady_tolerance, std::optional<double> tau, int max_steps, std::optional<py::object> fixed_vertices,
          std::optional<py::object> fixed, int fixed_rings, std::string solver, py::object progress) {
         return smooth_binding(V, F,
-                              {flow, f, time, tau, steps, steady, steady_tolerance, max_steps, fixed_rings,
-                               fixed, solver},
+                              {flow, functions_kwarg("smooth", functions, f), time, tau, steps, steady,
+                               steady_tolerance, max_steps, fixed_rings,
+                               named_or_alias("smooth", "fixed_vertices", fixed_vertices, "fixed", fixed), solver},
                               std::move(progress));
       },
-      "V"_a, "F"_a, py::kw_only(), "flow"_a = "sixth", "f"_a = H, "time"_a = py::none(), "steps"_a = py::none(),
-      "steady"_a = false, "steady_tolerance"_a = 1.0, "tau"_a = py::none(), "max_steps"_a = 1000,
-      "fixed"_a = py::none(), "fixed_rings"_a = 3, "solver"_a = "mumps", "progress"_a = py::none(),
+      "V"_a, "F"_a, py::kw_only(), "flow"_a = "sixth", "functions"_a = py::none(), "f"_a = py::none(),
+      "time"_a = py::none(), "steps"_a = py::none(), "steady"_a = false, "steady_tolerance"_a = 1.0,
+      "tau"_a = py::none(), "max_steps"_a = 1000, "fixed_vertices"_a = py::none(), "fixed"_a = py::none(),
+      "fixed_rings"_a = 3, "solver"_a = "mumps", "progress"_a = py::none(),
       "Smooths the whole mesh with a geometric flow, as `fairsurf smooth`; returns (V, report).");
-  m.def("fill_holes", &fill_binding, "V"_a, "F"_a, py::kw_only(), "continuity"_a = "G2", "holes"_a = py::none(),
-        "f"_a = H, "method"_a = "flow", "max_hole_edges"_a = 0, "skip_largest"_a = false,
-        "max_steps"_a = py::none(), "progress"_a = py::none(),
-        "Fills boundary loops with G2 (G1, G0) boundary data, as `fairsurf fill`; returns (V, F, report).");
+  m.def(
+      "fill_holes",
+      [](const py::handle& V, const py::handle& F, const std::string& continuity,
+         const std::optional<py::object>& holes, std::optional<Functions> functions, std::optional<Functions> f,
+         const std::string& method, int max_hole_edges, bool skip_largest, std::optional<int> max_steps,
+         py::object progress) {
+        return fill_binding(V, F, continuity, holes, functions_kwarg("fill_holes", functions, f), method,
+                            max_hole_edges, skip_largest, max_steps, std::move(progress));
+      },
+      "V"_a, "F"_a, py::kw_only(), "continuity"_a = "G2", "holes"_a = py::none(), "functions"_a = py::none(),
+      "f"_a = py::none(), "method"_a = "flow", "max_hole_edges"_a = 0, "skip_largest"_a = false,
+      "max_steps"_a = py::none(), "progress"_a = py::none(),
+      "Fills boundary loops with G2 (G1, G0) boundary data, as `fairsurf fill`; returns (V, F, report).");
   m.def(
       "fair",
-      [](const py::handle& V, const py::handle& F, const py::handle& region, std::string continuity, Functions f,
-         std::string method, int max_steps, std::string start, py::object progress) {
-        return fair_binding(V, F, region, {continuity, f, method, max_steps}, start, std::move(progress));
+      [](const py::handle& V, const py::handle& F, const py::handle& region, std::string continuity,
+         std::optional<Functions> functions, std::optional<Functions> f, std::string method, int max_steps,
+         std::string start, py::object progress) {
+        return fair_binding(V, F, region, {continuity, functions_kwarg("fair", functions, f), method, max_steps},
+                            start, std::move(progress));
       },
-      "V"_a, "F"_a, "region"_a, py::kw_only(), "continuity"_a = "G2", "f"_a = H, "method"_a = "flow",
-      "max_steps"_a = fair_steps, "start"_a = "harmonic", "progress"_a = py::none(),
+      "V"_a, "F"_a, "region"_a, py::kw_only(), "continuity"_a = "G2", "functions"_a = py::none(),
+      "f"_a = py::none(), "method"_a = "flow", "max_steps"_a = fair_steps, "start"_a = "harmonic",
+      "progress"_a = py::none(),
       "Fairs a region (boolean mask or vertex indices), as `fairsurf fair`; returns (V, report).");
   m.def(
       "blend",
       [](const py::handle& V, const py::handle& F, std::optional<std::pair<int, int>> loops, std::string continuity,
-         Functions f, std::string method, int max_steps, bool relax, py::object progress) {
-        return blend_binding(V, F, loops, {continuity, f, method, max_steps}, relax, std::move(progress));
+         std::optional<Functions> functions, std::optional<Functions> f, std::string method, int max_steps, bool relax,
+         py::object progress) {
+        return blend_binding(V, F, loops, {continuity, functions_kwarg("blend", functions, f), method, max_steps},
+                             relax, std::move(progress));
       },
-      "V"_a, "F"_a, py::kw_only(), "loops"_a = py::none(), "continuity"_a = "G2", "f"_a = H, "method"_a = "flow",
-      "max_steps"_a = fair_steps, "relax"_a = true, "progress"_a = py::none(),
+      "V"_a, "F"_a, py::kw_only(), "loops"_a = py::none(), "continuity"_a = "G2", "functions"_a = py::none(),
+      "f"_a = py::none(), "method"_a = "flow", "max_steps"_a = fair_steps, "relax"_a = true,
+      "progress"_a = py::none(),
       "Joins two boundary loops by a fair tube, as `fairsurf blend`; returns (V, F, report).");
 }
 

@@ -115,31 +115,31 @@ FairRegionOptions descent_options(const FairRegionOptions& fair) {
   FairRegionOptions o = fair;
   o.flow.step_kind = FlowStepKind::energy_descent;
   o.flow.steady_energy_tolerance = 1e-5;
-  o.flow.step_control.max_consecutive_rejections = 30;
+  o.flow.max_consecutive_rejections = 30;
   o.harmonic_start_iterations = 0;  // from the time-stepped flow's last state
   return o;
 }
 
-// Fairs the tube with options.fair; where that sixth-order flow steps in time and ends unsettled
-// or throws (a real mesh's irregular rings: the fitted EL is not the gradient of the discrete
-// energy there, flow.md), the energy descent takes over from its last accepted state and runs
-// until E stops decreasing.
+// Fairs the tube as the options' FairRegionOptions base says; where that sixth-order flow steps in
+// time and ends unsettled or throws (a real mesh's irregular rings: the fitted EL is not the
+// gradient of the discrete energy there, flow.md), the energy descent takes over from its last
+// accepted state and runs until E stops decreasing.
 FairRegionReport fair_tube(Mesh& mesh, const std::vector<int>& free, const BlendOptions& options,
                            const FlowObserver& observer) {
-  const bool may_descend = options.descent_fallback && options.fair.method == FairMethod::flow &&
-                           options.fair.flow.step_kind == FlowStepKind::implicit_flow;
+  const bool may_descend = options.descent_fallback && options.method == FairMethod::flow &&
+                           options.flow.step_kind == FlowStepKind::implicit_flow;
   std::string failure;
   try {
-    FairRegionReport report = fair_region(mesh, free, options.fair, observer);
+    FairRegionReport report = fair_region(mesh, free, options, observer);
     if (!may_descend || report.linear || report.flow_kind != FlowKind::sixth_order ||
         report.flow.stop_reason == FlowStopReason::steady)
       return report;
     failure = unsettled_reason(report.flow);
   } catch (const NumericalError& e) {
-    if (!may_descend || options.fair.continuity != Continuity::G2) throw;
+    if (!may_descend || options.continuity != Continuity::G2) throw;
     failure = std::string("failed (") + e.what() + ")";  // mesh holds the last accepted state
   }
-  FairRegionReport report = fair_region(mesh, free, descent_options(options.fair), observer);
+  FairRegionReport report = fair_region(mesh, free, descent_options(options), observer);
   report.note = "the time-stepped flow " + failure + "; the energy descent continued from its last state" +
                 (report.note.empty() ? "" : "; " + report.note);
   return report;

@@ -54,7 +54,7 @@ FairRegionOptions FairRegionOptions::harmonic_started() {
   o.harmonic_solver.ordering = o.flow.solver.ordering = FillOrdering::minimum_degree;
   o.flow.step_kind = FlowStepKind::energy_descent;
   o.flow.steady_energy_tolerance = 1e-5;
-  o.flow.step_control.max_consecutive_rejections = 30;
+  o.flow.max_consecutive_rejections = 30;
   o.linear_floor = true;
   o.held_out_rings = 2;
   o.held_out_two_ring_fits = true;

@@ -233,7 +233,7 @@ FairRegionReport fair_patch(InitialPatch& patch, const FillOptions& options, con
   whole = false;
   if (patch.free_vertices.empty()) return fairing;
   sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, patch.topology, patch.free_vertices,
-                              options.fairing.submesh_rings);
+                              options.submesh_rings);
   // The neighbourhood's connectivity, built once: validation, fairing and its held-out trials read it.
   const Topology local = build_topology(sub.mesh.F, sub.mesh.num_vertices());
   return fair_detail::fair_checked_mesh(sub.mesh, local, sub.free_local, fairing_options, step_observer, true,
@@ -340,7 +340,7 @@ std::vector<HoleReport> hole_reports(const std::vector<std::vector<int>>& loops,
     HoleReport r;
     r.index = i;
     r.border_edges = static_cast<int>(loops[i].size());
-    r.requested = r.supported = options.fairing.continuity;
+    r.requested = r.supported = options.continuity;
     reports.push_back(r);
   }
   return reports;
@@ -376,12 +376,10 @@ const char* to_string(HoleStatus status) {
   return "unknown";
 }
 
-FairRegionOptions FillOptions::default_fairing() {
+FillOptions::FillOptions() : FairRegionOptions(harmonic_started()) {
   // A patch starts as a membrane, not a surface estimate: its own operator carries the membrane's
   // kink along the border, so ∆^k is re-evaluated until it settles (fair_region.h).
-  FairRegionOptions o = FairRegionOptions::harmonic_started();
-  o.harmonic_start_iterations = 8;
-  return o;
+  harmonic_start_iterations = 8;
 }
 
 FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver& observer) {
@@ -399,7 +397,7 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
   report.holes = hole_reports(loops, options);
 
   const std::vector<int> fillable = fillable_holes(mesh.F, topo, loops, options, report.holes);
-  const int rings = rings_needed(options.fairing.continuity);
+  const int rings = rings_needed(options.continuity);
   for (const auto& group : overlapping_groups(topo, loops, fillable, rings)) {
     std::vector<std::vector<int>> patch_loops;
     for (int h : group) patch_loops.push_back(loops[h]);
@@ -415,7 +413,7 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
     const auto group_start = Clock::now();
     // Try the requested fairing, then (with fallback_on_failure) the linear ∆^k solutions from the
     // requested continuity down: never a flow the user did not ask for.
-    FairRegionOptions fairing = options.fairing;
+    FairRegionOptions fairing = options;  // the fairing part of the options (sliced on purpose)
     std::string reason, first_failure;
     for (;;) {
       try {
@@ -434,7 +432,7 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
     mark(report.holes, group, reason.empty() ? HoleStatus::filled : HoleStatus::failed, reason);
     if (reason.empty() && !first_failure.empty())
       for (int h : group)
-        report.holes[h].note = "the " + std::string(to_string(options.fairing.continuity)) + " fill failed (" +
+        report.holes[h].note = "the " + std::string(to_string(options.continuity)) + " fill failed (" +
                                first_failure + "); filled with " +
                                delivered_label(fairing.continuity, report.holes[h].linear);
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);

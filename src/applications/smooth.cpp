@@ -46,9 +46,9 @@ SmoothOptions scan_smoothing_options(const Mesh& mesh, FlowKind kind) {
   // clip those rather than reject every step, and damp the rows that are not dissipative. Needle
   // triangles shear over under the normal motion: relax the vertices tangentially, and hold back the
   // few whose faces would still turn over (against x^k or the input) rather than reject the step.
-  o.flow.step_control.limit_displacement = true;
-  o.flow.step_control.jacobian_dominance = 0.3;
-  o.flow.step_control.hold_back_turned_faces = true;
+  o.flow.limit_displacement = true;
+  o.flow.jacobian_dominance = 0.3;
+  o.flow.hold_back_turned_faces = true;
   o.flow.tangential_relaxation = 0.5;
   return o;
 }
@@ -59,7 +59,7 @@ void steady_smoothing(FlowOptions& flow, double velocity_tolerance) {
   if (flow.kind_to_run() != FlowKind::sixth_order) return;
   flow.step_kind = FlowStepKind::energy_descent;
   flow.steady_energy_tolerance = 1e-7;
-  flow.step_control.max_consecutive_rejections = 30;
+  flow.max_consecutive_rejections = 30;
 }
 
 void set_smoothing_end(SmoothOptions& options, const SmoothingEnd& end) {

@@ -273,10 +273,9 @@ void FlowRun::form_matrix(double tau) {
     } else {
       flow_detail::assemble_jacobian(problem_, state_, work_, jacobian_);
       // Without step control the step is the plain (I − τJ) d = τV of method.md §5.
-      const auto& control = options_.step_control;
       flow_detail::row_damping(jacobian_,
-                               control.enabled ? control.jacobian_dominance
-                                               : -std::numeric_limits<double>::infinity(),
+                               options_.step_control ? options_.jacobian_dominance
+                                                     : -std::numeric_limits<double>::infinity(),
                                damping_);
     }
     jacobian_current_ = true;
@@ -289,7 +288,7 @@ void FlowRun::form_matrix(double tau) {
 
 // Per-vertex trust region: |d_i| ≤ max_displacement_ratio · (mean edge length at i).
 void FlowRun::limit_displacement(Eigen::VectorXd& d) const {
-  const double ratio = options_.step_control.max_displacement_ratio;
+  const double ratio = options_.max_displacement_ratio;
   for (int k = 0; k < region_.num_free(); ++k) {
     const double cap = ratio * edge_length_[region_.free_vertices[k]];
     d[k] = std::clamp(d[k], -cap, cap);
@@ -297,7 +296,7 @@ void FlowRun::limit_displacement(Eigen::VectorXd& d) const {
 }
 
 bool FlowRun::displacement_ok(const Eigen::VectorXd& d, StepRecord& record) const {
-  const double ratio = options_.step_control.max_displacement_ratio;
+  const double ratio = options_.max_displacement_ratio;
   for (int k = 0; k < region_.num_free(); ++k) {
     const int v = region_.free_vertices[k];
     if (std::abs(d[k]) > ratio * edge_length_[v]) {
@@ -340,10 +339,10 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
   record.tau = tau;
   record.energy = std::numeric_limits<double>::quiet_NaN();
   record.max_velocity = std::numeric_limits<double>::quiet_NaN();
-  const bool control = options_.step_control.enabled;
+  const bool control = options_.step_control;
   Eigen::VectorXd d;
   if (!solve_step(tau, record, d)) return false;
-  if (control && options_.step_control.limit_displacement) limit_displacement(d);
+  if (control && options_.limit_displacement) limit_displacement(d);
   if (control && !descending() && !displacement_ok(d, record)) return false;
   X_trial_ = X_;
   for (int k = 0; k < region_.num_free(); ++k) {
@@ -351,7 +350,7 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
     X_trial_.row(v) += d[k] * normal_.row(v);
   }
   relax_tangentially(X_trial_, topo_, region_.free_vertices, normal_, relaxation_);
-  if (control && options_.step_control.hold_back_turned_faces) {
+  if (control && options_.hold_back_turned_faces) {
     const Eigen::MatrixX3d* const references[] = {&face_direction_, &input_face_direction_};
     record.held_back_vertices = hold_back_turned_faces(X_, X_trial_, F_, moving_faces_, references);
   }
@@ -359,7 +358,7 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
   if (descending() && !(state_.energy < energy_))
     return reject(record, StepRejection::energy,
                   format("energy %.17g does not decrease from %.17g", state_.energy, energy_));
-  const double growth = options_.step_control.max_energy_growth;
+  const double growth = options_.max_energy_growth;
   if (control && state_.energy > growth * energy_ + energy_floor_)
     return reject(record, StepRejection::energy,
                   format("energy %.6g > %.3g times %.6g", state_.energy, growth, energy_));
@@ -369,7 +368,6 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
 
 FlowReport FlowRun::run() {
   initialize();
-  const auto& control = options_.step_control;
   const double tolerance = options_.steady_tolerance;
   double tau = options_.tau;
   relaxation_ = options_.tangential_relaxation;
@@ -416,8 +414,8 @@ FlowReport FlowRun::run() {
       consecutive_rejections = 0;
       accept_current_state();
       write_back();
-      tau = std::min(control.accept_factor * tau, options_.tau_max);
-      relaxation_ = std::min(control.accept_factor * relaxation_, options_.tangential_relaxation);
+      tau = std::min(options_.accept_factor * tau, options_.tau_max);
+      relaxation_ = std::min(options_.accept_factor * relaxation_, options_.tangential_relaxation);
     } else {
       ++report_.rejected_steps;
       ++consecutive_rejections;
@@ -425,19 +423,19 @@ FlowReport FlowRun::run() {
     report_.records.push_back(record);
     if (observer_) observer_(record);
     if (accepted) continue;
-    if (!control.enabled)
+    if (!options_.step_control)
       fail(record, std::string(to_string(record.rejection)) + " (step control is off): " + record.detail);
-    if (consecutive_rejections > control.max_consecutive_rejections && descending()) {
+    if (consecutive_rejections > options_.max_consecutive_rejections && descending()) {
       // No step lowers E any more, however small: E has stopped decreasing.
       report_.stop_reason = FlowStopReason::steady;
       break;
     }
-    if (consecutive_rejections > control.max_consecutive_rejections)
+    if (consecutive_rejections > options_.max_consecutive_rejections)
       fail(record, std::to_string(consecutive_rejections) +
                        " consecutive rejected steps; the last: " + to_string(record.rejection) +
                        ": " + record.detail);
-    tau = tau_try * control.reject_factor;
-    relaxation_ *= control.reject_factor;
+    tau = tau_try * options_.reject_factor;
+    relaxation_ *= options_.reject_factor;
   }
   report_.tau = tau;
   return report_;

@@ -9,7 +9,6 @@
 namespace fairsurf::flow_detail {
 
 void check_options(const FlowOptions& o) {
-  const auto& c = o.step_control;
   const char* problem = nullptr;
   if (!(o.tau > 0)) problem = "tau must be positive";
   else if (!(o.tau_max >= o.tau)) problem = "tau_max must be at least tau";
@@ -24,12 +23,12 @@ void check_options(const FlowOptions& o) {
     problem = "tangential_relaxation must lie in [0, 1]";
   else if (o.refactor_interval < 1) problem = "refactor_interval must be at least 1";
   else if (!(o.steady_energy_tolerance >= 0)) problem = "steady_energy_tolerance must be non-negative";
-  else if (!(c.max_displacement_ratio > 0)) problem = "step_control.max_displacement_ratio must be positive";
-  else if (std::isnan(c.jacobian_dominance)) problem = "step_control.jacobian_dominance must not be NaN";
-  else if (!(c.max_energy_growth >= 1)) problem = "step_control.max_energy_growth must be at least 1";
-  else if (!(c.reject_factor > 0 && c.reject_factor < 1)) problem = "step_control.reject_factor must lie in (0, 1)";
-  else if (!(c.accept_factor >= 1)) problem = "step_control.accept_factor must be at least 1";
-  else if (c.max_consecutive_rejections < 0) problem = "step_control.max_consecutive_rejections must be non-negative";
+  else if (!(o.max_displacement_ratio > 0)) problem = "max_displacement_ratio must be positive";
+  else if (std::isnan(o.jacobian_dominance)) problem = "jacobian_dominance must not be NaN";
+  else if (!(o.max_energy_growth >= 1)) problem = "max_energy_growth must be at least 1";
+  else if (!(o.reject_factor > 0 && o.reject_factor < 1)) problem = "reject_factor must lie in (0, 1)";
+  else if (!(o.accept_factor >= 1)) problem = "accept_factor must be at least 1";
+  else if (o.max_consecutive_rejections < 0) problem = "max_consecutive_rejections must be non-negative";
   if (problem) throw InvalidArgument(std::string("run_flow: ") + problem);
 }
 

@@ -73,7 +73,7 @@ TEST(Blend, AnUnsettledFlowIsContinuedByTheEnergyDescent) {
   for (const bool fallback : {false, true}) {
     Mesh m = s.mesh;
     BlendOptions o;
-    o.fair.flow.max_steps = 20;
+    o.flow.max_steps = 20;
     o.descent_fallback = fallback;
     std::vector<double> energies;
     const BlendReport r = blend_loops(m, o, [&](const StepRecord& step) {
@@ -108,7 +108,7 @@ TEST(Blend, Fig3CapAboveADiskWithAHole) {
   const Scene s = make_scene("fig3", {0.15});
   Mesh m = s.mesh;
   BlendOptions g2;
-  g2.fair.flow.steady_relative_tolerance = 1e-12;
+  g2.flow.steady_relative_tolerance = 1e-12;
   const BlendReport r = blend_loops(m, g2);
   print("fig3", r);
   const auto loops = boundary_loops(s.mesh.F, build_topology(s.mesh.F, s.mesh.num_vertices()));
@@ -120,8 +120,8 @@ TEST(Blend, Fig3CapAboveADiskWithAHole) {
 
   Mesh membrane = s.mesh;
   BlendOptions g0;
-  g0.fair.method = FairMethod::harmonic;
-  g0.fair.continuity = Continuity::G0;
+  g0.method = FairMethod::harmonic;
+  g0.continuity = Continuity::G0;
   const BlendReport m0 = blend_loops(membrane, g0);
   print("fig3 membrane (harmonic G0)", m0);
   EXPECT_LT(r.a.border.max_normal_angle, 0.1);
@@ -186,7 +186,7 @@ TEST(Blend, BlobbyPiecesJoinIntoOneClosedSurface) {
   }
   Mesh membrane = read_mesh(test::data_path("cgal_blobby_3cc.off"));
   BlendOptions g0;
-  g0.fair.continuity = Continuity::G0;
+  g0.continuity = Continuity::G0;
   const BlendReport m0 = blend_loops(membrane, g0);
   EXPECT_GT(m0.a.border.mean_normal_angle, 2.0 * m0.a.reference.mean_normal_angle);
 }
@@ -200,7 +200,7 @@ TEST(Blend, BlobbyPiecesJoinIntoOneClosedSurface) {
 TEST(Blend, FairingCrossAdjacentEndsJoinByAHandle) {
   Mesh m = read_mesh(test::data_path("fairing_cross.off"));
   BlendOptions o;
-  o.fair.flow.max_steps = 15;
+  o.flow.max_steps = 15;
   o.descent_fallback = false;  // the time-stepped flow's 15th state, not a steady one
   const BlendReport r = blend_loops(m, o);
   print("fairing_cross", r);

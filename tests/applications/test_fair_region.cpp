@@ -207,8 +207,8 @@ TEST(FairRegion, AFailedFlowUnderTheFloorKeepsItsWellPosedness) {
   options.held_out_rings = 0;
   options.flow.functions = {"K"};
   options.flow.step_kind = FlowStepKind::implicit_flow;
-  options.flow.step_control.max_displacement_ratio = 1e-12;  // every step is rejected: the flow throws at once
-  options.flow.step_control.max_consecutive_rejections = 0;
+  options.flow.max_displacement_ratio = 1e-12;  // every step is rejected: the flow throws at once
+  options.flow.max_consecutive_rejections = 0;
   const FairRegionReport report = fair_region(mesh, free, options);
   EXPECT_TRUE(report.linear);
   EXPECT_NE(report.note.find("flow failed (run_flow"), std::string::npos) << report.note;
@@ -226,8 +226,8 @@ TEST(FairRegion, AHeldOutTrialThatFailsKeepsItsWellPosedness) {
   options.held_out_rings = 2;
   options.flow.functions = {"K"};
   options.flow.step_kind = FlowStepKind::implicit_flow;
-  options.flow.step_control.max_displacement_ratio = 1e-12;
-  options.flow.step_control.max_consecutive_rejections = 0;
+  options.flow.max_displacement_ratio = 1e-12;
+  options.flow.max_consecutive_rejections = 0;
   const FairRegionReport report = fair_region(mesh, free, options);
   EXPECT_TRUE(report.linear);
   EXPECT_NE(report.note.find("re-predicts"), std::string::npos) << report.note;

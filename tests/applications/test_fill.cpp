@@ -30,8 +30,8 @@ using Vec3 = Eigen::Vector3d;
 
 FillOptions options_for(Continuity c, FairMethod method = FairMethod::flow) {
   FillOptions o;
-  o.fairing.continuity = c;
-  o.fairing.method = method;
+  o.continuity = c;
+  o.method = method;
   return o;
 }
 
@@ -154,7 +154,7 @@ TEST(FillCylinder, G2HoleStaysOnTheCylinder) {
     const FillReport r = fill_holes(filled, o);
     ASSERT_EQ(r.filled, 1);
     EXPECT_EQ(r.skipped, 2);
-    o.fairing.method = FairMethod::harmonic;
+    o.method = FairMethod::harmonic;
     ASSERT_EQ(fill_holes(harmonic, o).filled, 1);
     auto radius_error = [](const Vertices& V) { return (test::axis_distances(V).array() - 1.0).matrix().eval(); };
     const double g2 = max_new_vertex_deviation(filled, holed.num_vertices(), radius_error);
@@ -200,7 +200,7 @@ TEST_P(RealHoles, EveryHoleIsFilledWatertight) {
   const Mesh input = read_mesh(test::data_path(name));
   Mesh filled = input;
   FillOptions o = options_for(continuity);
-  if (max_steps > 0) o.fairing.flow.max_steps = max_steps;
+  if (max_steps > 0) o.flow.max_steps = max_steps;
   const FillReport r = fill_holes(filled, o);
   for (const auto& h : r.holes) EXPECT_EQ(h.status, HoleStatus::filled) << "hole " << h.index << ": " << h.reason;
   EXPECT_EQ(r.filled, static_cast<int>(r.holes.size()));
@@ -565,9 +565,9 @@ TEST(FillPinches, BlubBallHoleThroughAPinchIsFilled) {
 TEST(FillFailures, AFlowWithoutSteadyStateKeepsTheLinearFloorAndSaysSo) {
   const Mesh holed = test::cut_hole(test::icosphere(3), [](const Vec3& p) { return p.z() > 0.5; });
   FillOptions o = options_for(Continuity::G2);
-  o.fairing.flow.max_steps = 1;
+  o.flow.max_steps = 1;
   o.fallback_on_failure = false;
-  o.fairing.held_out_rings = 0;  // the flow itself, not the held-out choice, meets the floor
+  o.held_out_rings = 0;  // the flow itself, not the held-out choice, meets the floor
   Mesh filled = holed, floor = holed;
   const FillReport r = fill_holes(filled, o);
   ASSERT_EQ(r.filled, 1) << r.holes.front().reason;
@@ -579,7 +579,7 @@ TEST(FillFailures, AFlowWithoutSteadyStateKeepsTheLinearFloorAndSaysSo) {
             std::string::npos) << hole.note;
   EXPECT_NE(hole.note.find("kept the linear ∆3 solution it started from"), std::string::npos) << hole.note;
   // Exactly the harmonic method's result.
-  o.fairing.method = FairMethod::harmonic;
+  o.method = FairMethod::harmonic;
   fill_holes(floor, o);
   EXPECT_TRUE(filled.V == floor.V);
   EXPECT_TRUE(filled.F == floor.F);
@@ -589,8 +589,8 @@ TEST(FillFailures, AFlowWithoutSteadyStateKeepsTheLinearFloorAndSaysSo) {
 TEST(FillFailures, AFlowWithoutSteadyStateAndWithoutFloorIsNotAFill) {
   const Mesh holed = test::cut_hole(test::icosphere(3), [](const Vec3& p) { return p.z() > 0.5; });
   FillOptions o = options_for(Continuity::G2);
-  o.fairing.flow.max_steps = 1;
-  o.fairing.linear_floor = false;
+  o.flow.max_steps = 1;
+  o.linear_floor = false;
   o.fallback_on_failure = false;
   Mesh filled = holed;
   const FillReport r = fill_holes(filled, o);

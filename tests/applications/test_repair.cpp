@@ -313,7 +313,7 @@ TEST(Repair, RepairedMeshesAreSmoothedAndFilled) {
     so.fixed_rings = 0;  // cgal_degtri_sliding has no interior vertex
     EXPECT_NO_THROW(smooth(smoothed, so));
     FillOptions fo;
-    fo.fairing.method = FairMethod::harmonic;
+    fo.method = FairMethod::harmonic;
     Mesh filled = m;
     EXPECT_NO_THROW(fill_holes(filled, fo));
   }

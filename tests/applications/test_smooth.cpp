@@ -181,8 +181,8 @@ TEST_F(CliSmooth, FailedFlowExitsFourWithTheLastAcceptedStateAndTheLog) {
                     log = (dir_ / "failed.json").string();
   write_mesh(torus, test::noisy_torus(48, 16, 1.0, 0.4, 0.12));
   const Mesh input = read_mesh(torus);
-  const auto run = test::run_cli("smooth '" + torus + "' -o '" + out + "' --f K --tau 0.9 --steps 30 --log '" +
-                                 log + "'");
+  const auto run = test::run_cli("smooth '" + torus + "' -o '" + out +
+                                 "' --functions K --tau 0.9 --steps 30 --log '" + log + "'");
   std::printf("[cli smooth failure] exit %d: %s\n", run.exit_code, run.out.c_str());
   EXPECT_EQ(run.exit_code, 4) << run.out;
   EXPECT_NE(run.out.find("fairsurf: error: run_flow: step "), std::string::npos) << run.out;

@@ -82,7 +82,7 @@ TEST_F(CliArguments, RenderRefusesAMeshWithoutFaces) {
   EXPECT_FALSE(fs::exists(path("p.png")));
 }
 
-// Output and log on one file, or the log over an input (the mesh, --fixed, --region), are refused
+// Output and log on one file, or the log over an input (the mesh, --fixed-vertices, --region), are refused
 // before the input is read; nothing is written.
 TEST_F(CliArguments, CollisionsAmongInputsOutputAndLogAreRefused) {
   const std::string out = quoted(path("out.obj"));
@@ -91,8 +91,8 @@ TEST_F(CliArguments, CollisionsAmongInputsOutputAndLogAreRefused) {
   expect_one_error_line(run, "-o and --log name the same file");
 
   std::ofstream(path("fixed.txt")) << "0\n";
-  run = test::run_cli("smooth " + sphere() + " -o " + out + " --fixed " + quoted(path("fixed.txt")) + " --log " +
-                      quoted(path("fixed.txt")));
+  run = test::run_cli("smooth " + sphere() + " -o " + out + " --fixed-vertices " + quoted(path("fixed.txt")) +
+                      " --log " + quoted(path("fixed.txt")));
   EXPECT_EQ(run.exit_code, 5) << run.out;
   expect_one_error_line(run, "--log would overwrite the input '" + path("fixed.txt") + "'");
   EXPECT_EQ(test::read_bytes(path("fixed.txt")), "0\n");
@@ -151,7 +151,7 @@ TEST_F(CliArguments, UnreachableTimeIsExplainedInTermsOfWhatTheUserSet) {
 // follows is the input, not one more value.
 TEST_F(CliArguments, RepeatableOptionsDoNotSwallowTheMeshPath) {
   const std::string log = quoted(path("log.json"));
-  auto run = test::run_cli("smooth --f H --f K " + sphere() + " -o " + quoted(path("s.obj")) +
+  auto run = test::run_cli("smooth --functions H --functions K " + sphere() + " -o " + quoted(path("s.obj")) +
                            " --steps 1 --quiet --log " + log);
   ASSERT_EQ(run.exit_code, 0) << run.out;
   std::ifstream in(path("log.json"));

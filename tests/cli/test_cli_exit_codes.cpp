@@ -68,7 +68,9 @@ TEST_F(CliExitCodes, Smooth) {
                 {"smooth " + path("sphere.ply") + " -o " + path("s.ply") + " --flow curly", 1},
                 {"smooth " + path("missing.obj") + " -o " + path("s.ply"), 2},
                 {"smooth " + data("hourglass_ico.obj") + " -o " + path("s.ply") + " --force", 3},
-                {"smooth " + data("torus.obj") + " -o " + path("k.obj") + " --f K --tau 0.9 --steps 30 --quiet", 4},
+                {"smooth " + data("torus.obj") + " -o " + path("k.obj") +
+                     " --functions K --tau 0.9 --steps 30 --quiet",
+                 4},
                 {"smooth " + path("sphere.ply") + " -o " + path("sphere.ply"), 5}});
 }
 

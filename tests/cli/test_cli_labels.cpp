@@ -124,7 +124,7 @@ TEST_F(CliLabels, BlendSaysItDropsVertexProperties) {
 TEST_F(CliLabels, BlendWarnsWhenFIsNotParabolic) {
   ASSERT_EQ(test::run_cli("scene fig3 -o " + path("fig3.ply") + " --edge-length 0.3").exit_code, 0);
   const auto run =
-      test::run_cli("blend " + path("fig3.ply") + " -o " + path("b.ply") + " --f K --max-steps 5 --quiet");
+      test::run_cli("blend " + path("fig3.ply") + " -o " + path("b.ply") + " --functions K --max-steps 5 --quiet");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("fairsurf: warning: the chosen f is not parabolic at "), std::string::npos) << run.out;
 }
@@ -133,7 +133,7 @@ TEST_F(CliLabels, BlendWarnsWhenFIsNotParabolic) {
 // whether the hole then got the flow or the linear floor, and its log says where.
 TEST_F(CliLabels, FillWarnsWhenFIsNotParabolic) {
   const auto run = test::run_cli("fill " + test::data_path("blub_open.obj") + " -o " + path("f.ply") +
-                                 " --f K --log " + path("f.json") + " --quiet");
+                                 " --functions K --log " + path("f.json") + " --quiet");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("fairsurf: warning: hole 0: the chosen f is not parabolic at "), std::string::npos)
       << run.out;

@@ -49,7 +49,7 @@ void expect_energy_decreases(const Mesh& input, const std::string& what) {
     o.max_steps = 4;
     // Rough input: the first steps of the stiffer functions are accepted only once τ is small
     // enough for d ≈ τV to stay under a quarter edge (|V| reaches 1e9 here), 10 to 20 quarterings.
-    o.step_control.max_consecutive_rejections = 24;
+    o.max_consecutive_rejections = 24;
     const FlowReport r = run_flow(V, input.F, o);
     ++tested;
     std::printf("[energy] %s, f = %s: E %.4g", what.c_str(), joined(functions).c_str(), r.initial_energy);
@@ -102,7 +102,7 @@ TEST(FlowSign, FirstStepDescends) {
   Vertices V = m.V;
   FlowOptions o = options_for(FlowKind::sixth_order);
   o.max_steps = 1;
-  o.step_control.enabled = false;
+  o.step_control = false;
   const FlowReport r = run_flow(V, m.F, o);
   std::printf("[sign] noisy sphere: E %.4g -> %.4g after one step\n", r.initial_energy, r.final_energy);
   EXPECT_LT(r.final_energy, 0.5 * r.initial_energy);
@@ -252,7 +252,7 @@ TEST(FlowFailure, DivergingFlowKeepsLastAcceptedState) {
   // f = K is ill posed where K < 0; without step control and with τ doubling every step from a
   // stable 1e-11, the flow inverts faces after a few accepted steps.
   FlowOptions o = options_for(FlowKind::sixth_order, {"K"});
-  o.step_control.enabled = false;
+  o.step_control = false;
   o.tau = 1e-11;
   o.tau_max = 1.0;
   o.max_steps = 50;
@@ -275,8 +275,8 @@ TEST(FlowFailure, RejectionLimitZeroKeepsInput) {
   const Mesh m = test::noisy_sphere(3, 1.0, 0.12);
   Vertices V = m.V;
   FlowOptions o = options_for(FlowKind::sixth_order);
-  o.step_control.max_displacement_ratio = 1e-9;  // every step moves more than that
-  o.step_control.max_consecutive_rejections = 0;
+  o.max_displacement_ratio = 1e-9;  // every step moves more than that
+  o.max_consecutive_rejections = 0;
   try {
     run_flow(V, m.F, o);
     FAIL() << "no exception";

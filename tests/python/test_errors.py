@@ -104,10 +104,10 @@ def test_bad_options(hand):
 
 def test_a_failed_flow_raises_numerical_error_with_the_last_accepted_state(data_dir):
     # f = K is not parabolic on the torus: its flow fails after some accepted steps, as
-    # `fairsurf smooth data/torus.obj --f K --tau 0.9 --steps 30` does (exit 4, state written).
+    # `fairsurf smooth data/torus.obj --functions K --tau 0.9 --steps 30` does (exit 4, state written).
     V, F = fairsurf.read_mesh(data_dir / "torus.obj")
     with pytest.raises(fairsurf.NumericalError) as error:
-        fairsurf.smooth(V, F, f=["K"], tau=0.9, steps=30)
+        fairsurf.smooth(V, F, functions=["K"], tau=0.9, steps=30)
     message = str(error.value)
     assert "consecutive rejected steps" in message
     assert "f is not parabolic at" in message

@@ -23,7 +23,10 @@
 
 namespace fairsurf {
 
-struct BlendOptions {
+/// A blend is a region fairing of the tube: the FairRegionOptions it derives from (fair_region's
+/// plain defaults: continuity G2, the flow of f = H from the tube as built; options.flow.functions,
+/// options.method, ...) say how, the fields below which loops to join and how to build the tube.
+struct BlendOptions : FairRegionOptions {
   /// Indices of the two loops to join, into boundary_loops(mesh); both −1: the closest pair
   /// (tube.h's closest_loop_pair).
   int loop_a = -1, loop_b = -1;
@@ -35,13 +38,12 @@ struct BlendOptions {
   /// spans loops far apart for their size (two ends of a cross), and the membrane collapses onto a
   /// sheet of slivers (quality 1e-9) that no flow can start from.
   double pinch_quality_ratio = 0.25;
-  FairRegionOptions fair;  ///< continuity (G2 default), f, method, steady-state tolerance
-  /// When fair's sixth-order flow steps in time (FlowStepKind::implicit_flow) and ends without a
-  /// steady state or throws, continue from its last accepted state with the energy descent
+  /// When the sixth-order flow steps in time (flow.step_kind = FlowStepKind::implicit_flow) and ends
+  /// without a steady state or throws, continue from its last accepted state with the energy descent
   /// (FlowStepKind::energy_descent, steady once a step lowers E by less than 1e-5 of itself) and
-  /// say so in fair.note. On real meshes the time-stepped flow often does not settle (the fitted EL
-  /// is not the gradient of the discrete energy on irregular rings); where it does, as on the
-  /// analytic scenes, its result is kept unchanged.
+  /// say so in the report's fair.note. On real meshes the time-stepped flow often does not settle
+  /// (the fitted EL is not the gradient of the discrete energy on irregular rings); where it does,
+  /// as on the analytic scenes, its result is kept unchanged.
   bool descent_fallback = true;
   /// Rings around each loop kept when the continuity is measured at one border (both sides' 2-ring
   /// fits must fit inside). Each figure is taken at its own loop's vertices only.

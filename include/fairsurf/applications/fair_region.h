@@ -71,8 +71,8 @@ struct FairRegionOptions {
   static FlowOptions default_fair_flow_options();
   /// The options that settle a disk-like region (a hole's patch, a marked region) in a few steps:
   /// the flow starts from the cotangent ∆^k solution with the region's own operator
-  /// (harmonic_start_iterations = 1: on a real surface, the classical fairing; fill's
-  /// default_fairing re-evaluates it up to 8 times, since a patch starts as a membrane)
+  /// (harmonic_start_iterations = 1: on a real surface, the classical fairing; FillOptions'
+  /// defaults re-evaluate it up to 8 times, since a patch starts as a membrane)
   /// with a Newton-like first step (flow.tau = 1e-2; a rejected step still quarters it); the
   /// sixth-order flow descends the energy (FlowStepKind::energy_descent, steady once a step lowers E
   /// by less than 1e-5 of itself, 30 rejections in a row allowed), keeps the ∆³ solution as its

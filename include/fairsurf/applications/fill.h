@@ -45,10 +45,19 @@
 
 namespace fairsurf {
 
-struct FillOptions {
-  /// The fairing step: continuity (G2 by default), method (flow or harmonic), the flow's functions
-  /// f (fairing.flow.functions, "H" by default) and stopping rule. Defaults: default_fairing().
-  FairRegionOptions fairing = default_fairing();
+/// A fill is a region fairing of each hole's patch: the FairRegionOptions it derives from say how
+/// (continuity, G2 by default; method, flow or harmonic; the flow's functions f, "H" by default,
+/// stopping rule and solver: options.flow.functions), the fields below what to fill and how to
+/// patch it.
+struct FillOptions : FairRegionOptions {
+  /// fair_region's harmonic_started() defaults, except that the ∆^k start is re-evaluated up to 8
+  /// times (harmonic_start_iterations): a membrane patch is far from the G2 steady state, and from
+  /// there the flow needs hundreds of steps with τ growing from 1e-9, from ∆³ a few (docs/fill.md).
+  /// From there the flow takes a Newton-like first step (τ = 1e-2: the step control quarters it on
+  /// rejection), and both linear solvers use the minimum-degree ordering (LinearSolverOptions::
+  /// ordering), whose analysis is far cheaper than nested dissection's on patch-sized systems.
+  FillOptions();
+
   PatchOptions patch;  ///< triangulation, refinement and membrane of the initial patch
 
   // Which boundary loops are filled. A loop left out is reported as skipped with the reason. A
@@ -62,16 +71,8 @@ struct FillOptions {
   /// When the fill of a hole fails (the flow throws or reaches no steady state without a linear
   /// floor, or the patch crosses the mesh), retry with the linear ∆^k solution at the requested
   /// continuity, then at each lower one down to the membrane (C0); the report's `note` says so. A
-  /// lower continuity's flow runs only when asked for (fairing.continuity).
+  /// lower continuity's flow runs only when asked for (`continuity`).
   bool fallback_on_failure = true;
-
-  /// fair_region's defaults, except that the flow starts from the re-evaluated cotangent ∆^k
-  /// solution (harmonic_start_iterations = 8) with a Newton-like first step (τ = 1e-2: the step
-  /// control quarters it on rejection): a membrane patch is far from the G2 steady state, and from
-  /// there the flow needs hundreds of steps with τ growing from 1e-9, from ∆³ a few (docs/fill.md).
-  /// Both linear solvers use the minimum-degree ordering (LinearSolverOptions::ordering), whose
-  /// analysis is far cheaper than nested dissection's on patch-sized systems.
-  static FairRegionOptions default_fairing();
 };
 
 enum class HoleStatus { filled, skipped, failed };

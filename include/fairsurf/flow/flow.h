@@ -89,32 +89,6 @@ namespace fairsurf {
 ///                   Newton steps can raise E and its small steps stall above zero.
 enum class FlowStepKind { implicit_flow, energy_descent };
 
-struct StepControlOptions {
-  bool enabled = true;
-  double max_displacement_ratio = 0.25;  ///< of the local mean edge length
-  double max_energy_growth = 2.0;        ///< reject when E' > this · E (plus a round-off floor)
-  double reject_factor = 0.25;           ///< τ ← τ · this after a rejection
-  double accept_factor = 2.0;            ///< τ ← min(τ · this, tau_max) after an acceptance
-  int max_consecutive_rejections = 12;   ///< one more rejection in a row throws NumericalError
-  /// Clip each |d_i| to max_displacement_ratio times its local edge length (a per-vertex trust
-  /// region) instead of rejecting the step; the other rejections still apply. For rough input.
-  bool limit_displacement = false;
-  /// Row damping of the step matrix: where J_ii > −jacobian_dominance · Σ_{j≠i} |J_ij| (a row that
-  /// is not dissipative: anti-diffusive fitted stencils on irregular scans), the step uses that bound
-  /// as the diagonal, i.e. solves (I − τ(J − diag(s))) d = τV with s ≥ 0. Steady states are
-  /// unchanged (d = 0 iff V = 0); rows of regular and smooth meshes (ratio ≈ −0.38) are untouched.
-  /// Only with the control enabled; −∞ (the default) disables it, NaN is invalid. `fairsurf smooth`
-  /// uses 0.3 for rough scans; it is off elsewhere because it slows convergence to steady states
-  /// (a G2 hole fill on a 2562-vertex sphere stalled at 200 steps with it, 145 steps without).
-  double jacobian_dominance = -std::numeric_limits<double>::infinity();
-  /// Hold back the vertices of faces that a trial would turn over, against their orientation at
-  /// x^k or at the input (orientation_guard.h: their moves are halved until no face is turned, at
-  /// most 8 times, then undone), instead of rejecting the step; the rest of the mesh moves as
-  /// solved. Keeps needle triangles of raw scans from flipping or accumulating turns over steps.
-  /// Only with the control enabled; `fairsurf smooth` turns it on.
-  bool hold_back_turned_faces = false;
-};
-
 struct FlowOptions {
   /// The flow to run. Unset: the sixth-order flow (run_flow, smooth), or in fair_region (and fill
   /// and blend, which call it) the flow that reaches the requested continuity (flow_for); there a
@@ -146,7 +120,32 @@ struct FlowOptions {
   double steady_energy_tolerance = 0;
   FlowStepKind step_kind = FlowStepKind::implicit_flow;
 
-  StepControlOptions step_control;
+  // Step control (the header; docs/flow.md).
+  /// Judge trial steps as the header says; false: the first rejected trial (a non-finite value, an
+  /// inverted face, a failed solve) throws, and of the fields below only accept_factor applies.
+  bool step_control = true;
+  double max_displacement_ratio = 0.25;  ///< of the local mean edge length
+  double max_energy_growth = 2.0;        ///< reject when E' > this · E (plus a round-off floor)
+  double reject_factor = 0.25;           ///< τ ← τ · this after a rejection
+  double accept_factor = 2.0;            ///< τ ← min(τ · this, tau_max) after an acceptance
+  int max_consecutive_rejections = 12;   ///< one more rejection in a row throws NumericalError
+  /// Clip each |d_i| to max_displacement_ratio times its local edge length (a per-vertex trust
+  /// region) instead of rejecting the step; the other rejections still apply. For rough input.
+  bool limit_displacement = false;
+  /// Row damping of the step matrix: where J_ii > −jacobian_dominance · Σ_{j≠i} |J_ij| (a row that
+  /// is not dissipative: anti-diffusive fitted stencils on irregular scans), the step uses that bound
+  /// as the diagonal, i.e. solves (I − τ(J − diag(s))) d = τV with s ≥ 0. Steady states are
+  /// unchanged (d = 0 iff V = 0); rows of regular and smooth meshes (ratio ≈ −0.38) are untouched.
+  /// Only with step_control; −∞ (the default) disables it, NaN is invalid. `fairsurf smooth`
+  /// uses 0.3 for rough scans; it is off elsewhere because it slows convergence to steady states
+  /// (a G2 hole fill on a 2562-vertex sphere stalled at 200 steps with it, 145 steps without).
+  double jacobian_dominance = -std::numeric_limits<double>::infinity();
+  /// Hold back the vertices of faces that a trial would turn over, against their orientation at
+  /// x^k or at the input (orientation_guard.h: their moves are halved until no face is turned, at
+  /// most 8 times, then undone), instead of rejecting the step; the rest of the mesh moves as
+  /// solved. Keeps needle triangles of raw scans from flipping or accumulating turns over steps.
+  /// Only with step_control; `fairsurf smooth` turns it on.
+  bool hold_back_turned_faces = false;
   /// Tangential relaxation of every trial state (tangential_relaxation.h): after the normal step,
   /// each free vertex moves this fraction of the way towards its neighbours' mean within its
   /// tangent plane at x^k; the trial is then checked (faces, energy, finiteness) as a whole. Keeps
@@ -191,7 +190,7 @@ struct StepRecord {
   double max_displacement = 0;  ///< max_i |d_i|
   double max_velocity = 0;      ///< max over free vertices of |V| at the trial state (|EL|)
   /// Free vertices held back because a face of theirs would have turned over
-  /// (StepControlOptions::hold_back_turned_faces).
+  /// (FlowOptions::hold_back_turned_faces).
   int held_back_vertices = 0;
   bool accepted = false;
   StepRejection rejection = StepRejection::none;

@@ -1,0 +1,45 @@
+// Tests of the applications' option structs (issue #15): a fill and a blend are region fairings,
+// their FairRegionOptions base set to the defaults each has always run with.
+#include <fairsurf/applications/blend.h>
+#include <fairsurf/applications/fill.h>
+
+#include <gtest/gtest.h>
+
+using namespace fairsurf;
+
+namespace {
+
+// The fields in which harmonic_started() differs from the plain defaults, compared one by one.
+void expect_same_fairing(const FairRegionOptions& a, const FairRegionOptions& b) {
+  EXPECT_EQ(a.continuity, b.continuity);
+  EXPECT_EQ(a.method, b.method);
+  EXPECT_EQ(a.harmonic_start_iterations, b.harmonic_start_iterations);
+  EXPECT_EQ(a.linear_floor, b.linear_floor);
+  EXPECT_EQ(a.held_out_rings, b.held_out_rings);
+  EXPECT_EQ(a.harmonic_solver.ordering, b.harmonic_solver.ordering);
+  EXPECT_EQ(a.flow.tau, b.flow.tau);
+  EXPECT_EQ(a.flow.step_kind, b.flow.step_kind);
+  EXPECT_EQ(a.flow.steady_energy_tolerance, b.flow.steady_energy_tolerance);
+  EXPECT_EQ(a.flow.max_consecutive_rejections, b.flow.max_consecutive_rejections);
+  EXPECT_EQ(a.flow.solver.ordering, b.flow.solver.ordering);
+  EXPECT_EQ(a.flow.functions, b.flow.functions);
+  EXPECT_EQ(a.flow.max_steps, b.flow.max_steps);
+}
+
+}  // namespace
+
+// A patch starts as a membrane: the fill's ∆^k start is re-evaluated up to 8 times, the rest is
+// harmonic_started() (fill.h).
+TEST(ApplicationOptions, FillStartsFromTheHarmonicStartedFairingReEvaluated) {
+  FairRegionOptions expected = FairRegionOptions::harmonic_started();
+  expected.harmonic_start_iterations = 8;
+  expect_same_fairing(FillOptions{}, expected);
+  EXPECT_EQ(FillOptions{}.flow.step_kind, FlowStepKind::energy_descent);
+}
+
+// A blend's tube flows from the tube as built, with fair_region's plain defaults (fair_region.h:
+// the ∆³ re-evaluation can fold a tube around a corner).
+TEST(ApplicationOptions, BlendStartsFromThePlainFairingDefaults) {
+  expect_same_fairing(BlendOptions{}, FairRegionOptions{});
+  EXPECT_EQ(BlendOptions{}.harmonic_start_iterations, 0);
+}

@@ -1,0 +1,52 @@
+"""Keyword names are the option fields' (docs/python.md): `functions` sets FlowOptions::functions and
+`fixed_vertices` SmoothOptions::fixed_vertices; their former names `f` and `fixed`, the CLI flags'
+before they were renamed after the fields, stay as aliases."""
+
+import numpy as np
+import pytest
+
+import fairsurf
+
+
+def test_functions_and_its_alias_f_set_the_same_functions(hand):
+    V, F = hand
+    V_named, named = fairsurf.smooth(V, F, functions=["H", "K"], steps=1)
+    V_alias, alias = fairsurf.smooth(V, F, f=["H", "K"], steps=1)
+    V_default, default = fairsurf.smooth(V, F, steps=1)
+    assert named["functions"] == alias["functions"] == ["H", "K"]
+    assert default["functions"] == ["H"]
+    assert np.array_equal(V_named, V_alias)
+    assert not np.array_equal(V_named, V_default)  # the functions reached the flow
+
+
+def test_fill_holes_takes_functions(hand):
+    V, F = hand
+    _, _, report = fairsurf.fill_holes(V, F, functions=["absHpH:0.5"], max_steps=2)
+    assert report["functions"] == ["absHpH:0.5"]
+
+
+def test_fixed_vertices_and_its_alias_fixed_hold_the_same_vertices(hand):
+    V, F = hand
+    held = [100, 200, 300]
+    V_named, _ = fairsurf.smooth(V, F, fixed_vertices=held, steps=1)
+    V_alias, _ = fairsurf.smooth(V, F, fixed=held, steps=1)
+    V_free, _ = fairsurf.smooth(V, F, steps=1)
+    assert np.array_equal(V_named, V_alias)
+    assert np.array_equal(V_named[held], V[held])
+    assert not np.array_equal(V_free[held], V[held])
+
+
+@pytest.mark.parametrize("call", ["smooth", "fill_holes", "fair", "blend"])
+def test_a_field_and_its_alias_together_are_refused(hand, call):
+    V, F = hand
+    extra = {"region": [0]} if call == "fair" else {}
+    with pytest.raises(TypeError) as error:
+        getattr(fairsurf, call)(V, F, functions=["H"], f=["K"], **extra)
+    assert str(error.value) == f"{call}() got both functions and its alias f; give one"
+
+
+def test_fixed_vertices_and_fixed_together_are_refused(hand):
+    V, F = hand
+    with pytest.raises(TypeError) as error:
+        fairsurf.smooth(V, F, fixed_vertices=[1], fixed=[2])
+    assert str(error.value) == "smooth() got both fixed_vertices and its alias fixed; give one"
