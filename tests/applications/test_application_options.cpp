@@ -16,6 +16,8 @@ void expect_same_fairing(const FairRegionOptions& a, const FairRegionOptions& b)
   EXPECT_EQ(a.harmonic_start_iterations, b.harmonic_start_iterations);
   EXPECT_EQ(a.linear_floor, b.linear_floor);
   EXPECT_EQ(a.held_out_rings, b.held_out_rings);
+  EXPECT_EQ(a.held_out_two_ring_fits, b.held_out_two_ring_fits);
+  EXPECT_EQ(a.flow.two_ring_boundary_fits, b.flow.two_ring_boundary_fits);
   EXPECT_EQ(a.harmonic_solver.ordering, b.harmonic_solver.ordering);
   EXPECT_EQ(a.flow.tau, b.flow.tau);
   EXPECT_EQ(a.flow.step_kind, b.flow.step_kind);
@@ -35,6 +37,8 @@ TEST(ApplicationOptions, FillStartsFromTheHarmonicStartedFairingReEvaluated) {
   expected.harmonic_start_iterations = 8;
   expect_same_fairing(FillOptions{}, expected);
   EXPECT_EQ(FillOptions{}.flow.step_kind, FlowStepKind::energy_descent);
+  EXPECT_TRUE(FillOptions{}.held_out_two_ring_fits);  // the flow on 2-ring boundary fits is weighed
+  EXPECT_FALSE(FillOptions{}.flow.two_ring_boundary_fits);  // and delivered only where it wins
 }
 
 // A blend's tube flows from the tube as built, with fair_region's plain defaults (fair_region.h:

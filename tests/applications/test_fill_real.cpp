@@ -96,7 +96,7 @@ TEST(RealNoisyHole, TheHeldOutRingsChooseTwoRingBoundaryDataAndTheG2FillBeatsThe
   Mesh filled = cut, floor = cut;
   const FillReport report = fill_holes(filled, FillOptions{});
   FillOptions linear;
-  linear.fairing.method = FairMethod::harmonic;
+  linear.method = FairMethod::harmonic;
   fill_holes(floor, linear);
 
   ASSERT_EQ(report.holes.size(), 1u);
