@@ -1,9 +1,11 @@
 // Tests that an operation builds each mesh's connectivity once and passes it down (docs/architecture.md:
 // "connectivity is built once"), read from the diagnostic counter topology_builds() (topology.h).
+#include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/applications/fill.h>
 #include <fairsurf/applications/smooth.h>
 #include <fairsurf/geometry/continuity_measure.h>
+#include <fairsurf/io/io.h>
 #include <fairsurf/mesh/topology.h>
 
 #include <gtest/gtest.h>
@@ -15,6 +17,7 @@
 
 #include "analytic_meshes.h"
 #include "hole_meshes.h"
+#include "test_support.h"
 
 using namespace fairsurf;
 
@@ -92,4 +95,16 @@ TEST(TopologyBuilds, FairRegionBuildsTheMeshsConnectivityOnce) {
   fair_region(mesh, topo, free, FairRegionOptions::harmonic_started());
   measure_continuity(mesh.V, mesh.F, topo, free);
   EXPECT_EQ(topology_builds() - before, 0u);
+}
+
+// blend_loops builds the input's connectivity (its loops, the reference measures, the tube) and
+// the tubed mesh's (the membrane, the fairing, the border measures); the measured parts derive
+// theirs (before: 22 on this mesh).
+TEST(TopologyBuilds, BlendBuildsTheInputsAndTheTubedMeshsConnectivity) {
+  Mesh mesh = read_mesh(test::data_path("cgal_blobby_3cc.off"));
+  const std::uint64_t before = topology_builds();
+  const BlendReport report = blend_loops(mesh);
+  EXPECT_EQ(topology_builds() - before, 2u);
+  EXPECT_GT(report.a.reference.border_vertices, 0);  // the reference measures ran
+  EXPECT_GT(report.b.border.border_vertices, 0);
 }
