@@ -51,11 +51,11 @@ double worst_quality(const Vertices& V, const Faces& F, int first_face) {
 }
 
 // The Hermite tube, relaxed to the G0 membrane when asked and when the membrane does not pinch off.
-InitialPatch initial_tube(const Mesh& mesh, const std::vector<int>& loop_a, const std::vector<int>& loop_b,
-                          const BlendOptions& options, BlendReport& report) {
+InitialPatch initial_tube(const Mesh& mesh, const Topology& topo, const std::vector<int>& loop_a,
+                          const std::vector<int>& loop_b, const BlendOptions& options, BlendReport& report) {
   PatchOptions hermite = options.patch;
   hermite.relax = false;
-  InitialPatch patch = tube_patch(mesh, loop_a, loop_b, hermite);
+  InitialPatch patch = tube_patch(mesh, topo, loop_a, loop_b, hermite);
   const Faces& F = patch.mesh.F;
   report.hermite_quality = worst_quality(patch.mesh.V, F, patch.first_patch_face);
   if (!options.patch.relax || patch.free_vertices.empty()) return patch;
@@ -70,18 +70,16 @@ InitialPatch initial_tube(const Mesh& mesh, const std::vector<int>& loop_a, cons
   return patch;
 }
 
-// measure_continuity on the faces within `rings` rings of `loop`, at the vertices `at` only.
-ContinuityMeasure measure_near_loop(const Mesh& mesh, const std::vector<int>& loop, int rings,
+// measure_continuity on the faces within `rings` rings of `loop`, at the vertices `at` only; `topo`:
+// the connectivity of mesh.F, from which the measured part's derives.
+ContinuityMeasure measure_near_loop(const Mesh& mesh, const Topology& topo, const std::vector<int>& loop, int rings,
                                     const std::vector<int>& free_vertices, const std::vector<int>& at) {
-  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
   const std::vector<int> distance = ring_distances(topo, loop, rings);
-  std::vector<int> local(mesh.num_vertices(), -1);
-  int kept = 0;
+  std::vector<int> local(mesh.num_vertices(), -1), to_parent;
   for (int v = 0; v < mesh.num_vertices(); ++v)
-    if (distance[v] >= 0) local[v] = kept++;
-  Vertices V(kept, 3);
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    if (local[v] >= 0) V.row(local[v]) = mesh.V.row(v);
+    if (distance[v] >= 0) local[v] = static_cast<int>(to_parent.size()), to_parent.push_back(v);
+  Vertices V(static_cast<Eigen::Index>(to_parent.size()), 3);
+  for (std::size_t v = 0; v < to_parent.size(); ++v) V.row(static_cast<Eigen::Index>(v)) = mesh.V.row(to_parent[v]);
   std::vector<Eigen::RowVector3i> faces;
   for (int f = 0; f < mesh.num_faces(); ++f) {
     const Eigen::RowVector3i c = mesh.F.row(f);
@@ -96,18 +94,18 @@ ContinuityMeasure measure_near_loop(const Mesh& mesh, const std::vector<int>& lo
       if (local[v] >= 0) out.push_back(local[v]);
     return out;
   };
-  return measure_continuity(V, F, to_local(free_vertices), to_local(at));
+  return measure_continuity(V, F, derive_topology(topo, F, to_parent), to_local(free_vertices), to_local(at));
 }
 
-// The measurement on the untouched input: the vertices fewer than `offset` rings from the loop
-// play the free region, those at `offset` rings are measured.
-ContinuityMeasure reference_at_loop(const Mesh& input, const std::vector<int>& loop, int offset, int rings) {
-  const Topology topo = build_topology(input.F, input.num_vertices());
+// The measurement on the untouched input (`topo`: its connectivity): the vertices fewer than
+// `offset` rings from the loop play the free region, those at `offset` rings are measured.
+ContinuityMeasure reference_at_loop(const Mesh& input, const Topology& topo, const std::vector<int>& loop, int offset,
+                                    int rings) {
   const std::vector<int> distance = ring_distances(topo, loop, offset);
   std::vector<int> inner, line;
   for (int v = 0; v < input.num_vertices(); ++v)
     if (distance[v] >= 0) (distance[v] < offset ? inner : line).push_back(v);
-  return measure_near_loop(input, loop, offset + rings, inner, line);
+  return measure_near_loop(input, topo, loop, offset + rings, inner, line);
 }
 
 // The time-stepped flow's options turned into the energy descent's (flow.md, "Energy descent").
@@ -123,14 +121,15 @@ FairRegionOptions descent_options(const FairRegionOptions& fair) {
 // Fairs the tube as the options' FairRegionOptions base says; where that sixth-order flow steps in
 // time and ends unsettled or throws (a real mesh's irregular rings: the fitted EL is not the
 // gradient of the discrete energy there, flow.md), the energy descent takes over from its last
-// accepted state and runs until E stops decreasing.
-FairRegionReport fair_tube(Mesh& mesh, const std::vector<int>& free, const BlendOptions& options,
+// accepted state and runs until E stops decreasing. `topo`: the connectivity of mesh.F, validated
+// by each fair_region.
+FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, const BlendOptions& options,
                            const FlowObserver& observer) {
   const bool may_descend = options.descent_fallback && options.method == FairMethod::flow &&
                            options.flow.step_kind == FlowStepKind::implicit_flow;
   std::string failure;
   try {
-    FairRegionReport report = fair_region(mesh, free, options, observer);
+    FairRegionReport report = fair_region(mesh, topo, free, options, observer);
     if (!may_descend || report.linear || report.flow_kind != FlowKind::sixth_order ||
         report.flow.stop_reason == FlowStopReason::steady)
       return report;
@@ -139,7 +138,7 @@ FairRegionReport fair_tube(Mesh& mesh, const std::vector<int>& free, const Blend
     if (!may_descend || options.continuity != Continuity::G2) throw;
     failure = std::string("failed (") + e.what() + ")";  // mesh holds the last accepted state
   }
-  FairRegionReport report = fair_region(mesh, free, descent_options(options), observer);
+  FairRegionReport report = fair_region(mesh, topo, free, descent_options(options), observer);
   report.note = "the time-stepped flow " + failure + "; the energy descent continued from its last state" +
                 (report.note.empty() ? "" : "; " + report.note);
   return report;
@@ -149,7 +148,7 @@ FairRegionReport fair_tube(Mesh& mesh, const std::vector<int>& free, const Blend
 
 ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
                                              const std::vector<int>& free_vertices, int rings) {
-  return measure_near_loop(mesh, loop, rings, free_vertices, loop);
+  return measure_near_loop(mesh, build_topology(mesh.F, mesh.num_vertices()), loop, rings, free_vertices, loop);
 }
 
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObserver& observer) {
@@ -170,10 +169,10 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
   report.b.length = static_cast<int>(loop_b.size());
 
   if (options.reference_ring > 0) {
-    report.a.reference = reference_at_loop(mesh, loop_a, options.reference_ring, options.measure_rings);
-    report.b.reference = reference_at_loop(mesh, loop_b, options.reference_ring, options.measure_rings);
+    report.a.reference = reference_at_loop(mesh, topo, loop_a, options.reference_ring, options.measure_rings);
+    report.b.reference = reference_at_loop(mesh, topo, loop_b, options.reference_ring, options.measure_rings);
   }
-  InitialPatch patch = initial_tube(mesh, loop_a, loop_b, options, report);
+  InitialPatch patch = initial_tube(mesh, topo, loop_a, loop_b, options, report);
   report.tube_vertices = patch.mesh.num_vertices() - mesh.num_vertices();
   report.tube_faces = patch.mesh.num_faces() - patch.first_patch_face;
   report.tube_rings = patch.tube.rings;
@@ -185,9 +184,11 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
   mesh.vertex_colors.resize(0, 3);
   pad_face_attributes(mesh);
 
-  report.fair = fair_tube(mesh, patch.free_vertices, options, observer);
-  report.a.border = measure_continuity_at_loop(mesh, loop_a, patch.free_vertices, options.measure_rings);
-  report.b.border = measure_continuity_at_loop(mesh, loop_b, patch.free_vertices, options.measure_rings);
+  // The tubed mesh's connectivity, built once by tube_patch: the fairing and the measures read it.
+  const Topology& tubed = patch.topology;
+  report.fair = fair_tube(mesh, tubed, patch.free_vertices, options, observer);
+  report.a.border = measure_near_loop(mesh, tubed, loop_a, options.measure_rings, patch.free_vertices, loop_a);
+  report.b.border = measure_near_loop(mesh, tubed, loop_b, options.measure_rings, patch.free_vertices, loop_b);
   report.seconds = detail::seconds_since(start);
   return report;
 }

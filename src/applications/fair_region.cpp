@@ -212,7 +212,7 @@ FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<con
   Submesh sub = uncut ? whole_submesh(mesh, free_vertices)
                       : extract_neighbourhood(mesh.V, mesh.F, topo, free_vertices, options.submesh_rings);
   std::optional<Topology> cut;
-  if (!uncut) cut = build_topology(sub.mesh.F, sub.mesh.num_vertices());
+  if (!uncut) cut = derive_topology(topo, sub.mesh.F, sub.to_global);
   const Topology& local = uncut ? topo : *cut;
   const Region region = make_region(local, sub.free_local, options.continuity);
 
@@ -223,7 +223,7 @@ FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<con
   report.method = options.method;
   fair_submesh(sub, local, region, options, observer, report, mesh.V);
   write_back_free(sub, mesh.V);
-  if (measure) report.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, sub.free_local);
+  if (measure) report.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, local, sub.free_local);
   report.seconds = detail::seconds_since(start);
   return report;
 }

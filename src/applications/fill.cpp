@@ -224,9 +224,10 @@ std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int 
 
 // Fairs the patch's free vertices on their neighbourhood only (fair_region would cut out the same
 // rings): the cost of checking the mesh stays in proportion to the hole, and a defect far away (a
-// pinched border elsewhere) does not concern this hole. `whole`: fair_valid_mesh's, on `sub`.
+// pinched border elsewhere) does not concern this hole. `whole`: fair_valid_mesh's, on `sub`;
+// `local`: the connectivity of sub.mesh.
 FairRegionReport fair_patch(InitialPatch& patch, const FillOptions& options, const FairRegionOptions& fairing_options,
-                            const FlowObserver& step_observer, Submesh& sub, bool& whole) {
+                            const FlowObserver& step_observer, Submesh& sub, Topology& local, bool& whole) {
   FairRegionReport fairing;
   fairing.requested = fairing.supported = fairing_options.continuity;
   fairing.method = fairing_options.method;
@@ -234,8 +235,9 @@ FairRegionReport fair_patch(InitialPatch& patch, const FillOptions& options, con
   if (patch.free_vertices.empty()) return fairing;
   sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, patch.topology, patch.free_vertices,
                               options.submesh_rings);
-  // The neighbourhood's connectivity, built once: validation, fairing and its held-out trials read it.
-  const Topology local = build_topology(sub.mesh.F, sub.mesh.num_vertices());
+  // Derived from the patched mesh's, once: validation, fairing, its held-out trials and the
+  // continuity measures read it.
+  local = derive_topology(patch.topology, sub.mesh.F, sub.to_global);
   return fair_detail::fair_checked_mesh(sub.mesh, local, sub.free_local, fairing_options, step_observer, true,
                                        &whole);
 }
@@ -273,11 +275,12 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
   if (!non_manifold.empty()) return non_manifold;
 
   Submesh sub;
+  Topology local;
   bool whole = false;
   const FlowObserver step_observer = [&](const StepRecord& r) {
     if (observer) observer(group, r);
   };
-  const FairRegionReport fairing = fair_patch(patch, options, fairing_options, step_observer, sub, whole);
+  const FairRegionReport fairing = fair_patch(patch, options, fairing_options, step_observer, sub, local, whole);
   if (!patch.free_vertices.empty()) {
     const FlowReport& flow = fairing.flow;
     if (!fairing.linear && flow.stop_reason != FlowStopReason::steady)
@@ -305,9 +308,10 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
     if (!free.empty()) {
       // The fairing measured the same positions, faces and free set when it ran on `sub` itself
       // (as for a group of one hole): not measured twice.
-      const std::vector<int> local = to_local(sub, free);
-      r.continuity = whole && local == sub.free_local ? fairing.continuity
-                                                      : measure_continuity(sub.mesh.V, sub.mesh.F, local);
+      const std::vector<int> hole_free = to_local(sub, free);
+      r.continuity = whole && hole_free == sub.free_local
+                         ? fairing.continuity
+                         : measure_continuity(sub.mesh.V, sub.mesh.F, local, hole_free);
     }
     if (free.empty()) {  // nothing was faired: the patch is the triangulation of the loop
       r.supported = Continuity::G0;

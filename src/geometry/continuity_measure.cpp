@@ -6,19 +6,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 #include <vector>
 
 namespace fairsurf {
 namespace {
 
-// Fitted normals and mean curvatures at `vertices` on the faces of one side only.
-SurfaceGeometry one_sided_geometry(const Vertices& V, const Faces& F, const std::vector<char>& side,
+// Fitted normals and mean curvatures at `vertices` on the faces of one side only. The side keeps
+// every vertex (`all`: each its own parent index), so its connectivity derives from the mesh's.
+SurfaceGeometry one_sided_geometry(const Vertices& V, const Faces& F, const Topology& mesh_topo,
+                                   const std::vector<int>& all, const std::vector<char>& side,
                                    const std::vector<int>& vertices, std::vector<FitStatus>& status) {
   Faces part(std::count(side.begin(), side.end(), 1), 3);
   for (Eigen::Index f = 0, row = 0; f < F.rows(); ++f)
     if (side[f]) part.row(row++) = F.row(f);
-  const Topology topo = build_topology(part, static_cast<int>(V.rows()));
+  const Topology topo = derive_topology(mesh_topo, part, all);
   const QuadraticFits fits = fit_quadratics(V, part, topo, {}, vertices);
   status = fits.status;
   return compute_geometry(fits, V);
@@ -30,6 +33,13 @@ bool usable(FitStatus s) { return s == FitStatus::kOk || s == FitStatus::kIllCon
 
 ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F, std::span<const int> free_vertices,
                                      std::span<const int> at) {
+  return measure_continuity(V, F, build_topology(F, static_cast<int>(V.rows())), free_vertices, at);
+}
+
+ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F, const Topology& topo,
+                                     std::span<const int> free_vertices, std::span<const int> at) {
+  if (topo.num_vertices != V.rows() || topo.num_faces != F.rows())
+    throw InvalidArgument("measure_continuity: the topology was built for another mesh");
   std::vector<char> is_free(V.rows(), 0), inside(F.rows(), 0), outside(F.rows(), 0);
   for (int v : free_vertices) is_free[v] = 1;
   std::vector<char> border(V.rows(), 0);
@@ -53,9 +63,11 @@ ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F, std::spa
   for (Eigen::Index v = 0; v < V.rows(); ++v)
     if (border[v]) border_vertices.push_back(static_cast<int>(v));
 
+  std::vector<int> all(V.rows());
+  std::iota(all.begin(), all.end(), 0);
   std::vector<FitStatus> in_status, out_status;
-  const SurfaceGeometry in = one_sided_geometry(V, F, inside, border_vertices, in_status);
-  const SurfaceGeometry out = one_sided_geometry(V, F, outside, border_vertices, out_status);
+  const SurfaceGeometry in = one_sided_geometry(V, F, topo, all, inside, border_vertices, in_status);
+  const SurfaceGeometry out = one_sided_geometry(V, F, topo, all, outside, border_vertices, out_status);
   ContinuityMeasure m;
   for (int v : border_vertices) {
     if (!usable(in_status[v]) || !usable(out_status[v])) continue;

@@ -54,31 +54,25 @@ Csr build_vertex_vertices(const Faces& F, const Csr& vf) {
   return vv;
 }
 
-}  // namespace
-
-std::uint64_t topology_builds() { return builds.load(std::memory_order_relaxed); }
-
-Topology build_topology(const Faces& F, int num_vertices) {
-  builds.fetch_add(1, std::memory_order_relaxed);
-  if (num_vertices < 0) throw InvalidArgument("build_topology: negative vertex count");
+// Throws InvalidArgument, naming `who`, for a face index outside [0, num_vertices) or a face that
+// repeats a vertex.
+void check_faces(const Faces& F, int num_vertices, const std::string& who) {
+  if (num_vertices < 0) throw InvalidArgument(who + ": negative vertex count");
   for (int f = 0; f < F.rows(); ++f) {
     for (int k = 0; k < 3; ++k) {
       const int v = F(f, k);
       if (v < 0 || v >= num_vertices)
-        throw InvalidArgument("build_topology: face " + std::to_string(f) + " has vertex index " +
-                              std::to_string(v) + " outside [0, " + std::to_string(num_vertices) +
-                              ")");
+        throw InvalidArgument(who + ": face " + std::to_string(f) + " has vertex index " + std::to_string(v) +
+                              " outside [0, " + std::to_string(num_vertices) + ")");
     }
     if (F(f, 0) == F(f, 1) || F(f, 1) == F(f, 2) || F(f, 2) == F(f, 0))
-      throw InvalidArgument("build_topology: face " + std::to_string(f) + " repeats a vertex");
+      throw InvalidArgument(who + ": face " + std::to_string(f) + " repeats a vertex");
   }
+}
 
-  Topology t;
-  t.num_vertices = num_vertices;
-  t.num_faces = static_cast<int>(F.rows());
-  t.vertex_faces = build_vertex_faces(F, num_vertices);
-  t.vertex_vertices = build_vertex_vertices(F, t.vertex_faces);
-
+// The edges, face_edges and edge_faces of `t`, from F and t.vertex_vertices (ascending rows).
+void add_edges(const Faces& F, Topology& t) {
+  const int num_vertices = t.num_vertices;
   // Edge (v, w) with v < w is owned by v; rows are sorted, so owned neighbours form a suffix of the
   // row and edges come out in lexicographic order without a global sort.
   std::vector<int> first_owned(num_vertices), edge_offset(num_vertices + 1, 0);
@@ -110,12 +104,71 @@ Topology build_topology(const Faces& F, int num_vertices) {
       t.face_edges[3 * f + k] = e;
       ++t.edge_faces.offsets[e + 1];
     }
-  std::partial_sum(t.edge_faces.offsets.begin(), t.edge_faces.offsets.end(),
-                   t.edge_faces.offsets.begin());
+  std::partial_sum(t.edge_faces.offsets.begin(), t.edge_faces.offsets.end(), t.edge_faces.offsets.begin());
   t.edge_faces.indices.resize(t.edge_faces.offsets.back());
   std::vector<int> fill(t.edge_faces.offsets.begin(), t.edge_faces.offsets.end() - 1);
   for (int f = 0; f < F.rows(); ++f)
     for (int k = 0; k < 3; ++k) t.edge_faces.indices[fill[t.face_edges[3 * f + k]]++] = f;
+}
+
+// The neighbours of each vertex of a part of the parent mesh: the parent's row, already sorted,
+// filtered to the neighbours the part's faces keep. The renumbering is ascending, so what is kept
+// stays in order and no row is sorted again. Each kept neighbour is found in the parent's row by
+// bisection; `slot` marks its position there.
+Csr derived_vertex_vertices(const Faces& F, const Csr& vf, const Topology& parent, std::span<const int> to_parent) {
+  const int n = vf.rows();
+  Csr vv;
+  vv.offsets.assign(n + 1, 0);
+  vv.indices.reserve(static_cast<std::size_t>(vf.indices.size()) * 2);
+  std::vector<int> slot;  // per position of the parent's row: the part's vertex there, or -1
+  for (int v = 0; v < n; ++v) {
+    const auto row = parent.vertex_vertices.row(to_parent[v]);
+    slot.assign(row.size(), -1);
+    for (int f : vf.row(v))
+      for (int k = 0; k < 3; ++k) {
+        const int u = F(f, k);
+        if (u == v) continue;
+        const auto at = std::lower_bound(row.begin(), row.end(), to_parent[u]);
+        if (at == row.end() || *at != to_parent[u])
+          throw InvalidArgument("derive_topology: face " + std::to_string(f) + " has an edge the parent does not");
+        slot[at - row.begin()] = u;
+      }
+    for (int u : slot)
+      if (u >= 0) vv.indices.push_back(u);
+    vv.offsets[v + 1] = static_cast<int>(vv.indices.size());
+  }
+  return vv;
+}
+
+}  // namespace
+
+std::uint64_t topology_builds() { return builds.load(std::memory_order_relaxed); }
+
+Topology build_topology(const Faces& F, int num_vertices) {
+  builds.fetch_add(1, std::memory_order_relaxed);
+  check_faces(F, num_vertices, "build_topology");
+  Topology t;
+  t.num_vertices = num_vertices;
+  t.num_faces = static_cast<int>(F.rows());
+  t.vertex_faces = build_vertex_faces(F, num_vertices);
+  t.vertex_vertices = build_vertex_vertices(F, t.vertex_faces);
+  add_edges(F, t);
+  return t;
+}
+
+Topology derive_topology(const Topology& parent, const Faces& F, std::span<const int> to_parent) {
+  const int num_vertices = static_cast<int>(to_parent.size());
+  for (int v = 0; v < num_vertices; ++v)
+    if (to_parent[v] < 0 || to_parent[v] >= parent.num_vertices || (v > 0 && to_parent[v] <= to_parent[v - 1]))
+      throw InvalidArgument("derive_topology: the parent vertices are not ascending indices in [0, " +
+                            std::to_string(parent.num_vertices) + ")");
+  check_faces(F, num_vertices, "derive_topology");
+  Topology t;
+  t.num_vertices = num_vertices;
+  t.num_faces = static_cast<int>(F.rows());
+  t.vertex_faces = build_vertex_faces(F, num_vertices);
+  t.vertex_vertices = derived_vertex_vertices(F, t.vertex_faces, parent, to_parent);
+  add_edges(F, t);
   return t;
 }
 

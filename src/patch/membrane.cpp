@@ -49,7 +49,7 @@ MembraneReport relax_membrane(Vertices& V, const Faces& F, const Topology& topo,
   // The free rows of ∆ involve only the faces touching a free vertex: solve on those alone, so that
   // relaxing a hole's patch costs in proportion to the patch, not to the mesh around it.
   Submesh sub = extract_neighbourhood(V, F, topo, free_list, 0);
-  const Topology local = build_topology(sub.mesh.F, sub.mesh.num_vertices());  // once for all iterations
+  const Topology local = derive_topology(topo, sub.mesh.F, sub.to_global);  // once for all iterations
   const Region region = make_region(local, sub.free_local, Continuity::G0);
   HarmonicOptions membrane;
   membrane.order = 1;  // ∆x = 0 with the cotangent weights of the current positions

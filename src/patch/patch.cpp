@@ -87,7 +87,13 @@ InitialPatch hole_patch(const Mesh& mesh, const Topology& topo, const std::vecto
 
 InitialPatch tube_patch(const Mesh& mesh, std::span<const int> loop_a, std::span<const int> loop_b,
                         const PatchOptions& options) {
-  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  return tube_patch(mesh, build_topology(mesh.F, mesh.num_vertices()), loop_a, loop_b, options);
+}
+
+InitialPatch tube_patch(const Mesh& mesh, const Topology& topo, std::span<const int> loop_a,
+                        std::span<const int> loop_b, const PatchOptions& options) {
+  if (topo.num_vertices != mesh.num_vertices() || topo.num_faces != mesh.num_faces())
+    throw InvalidArgument("tube_patch: the topology was built for another mesh");
   InitialPatch out;
   out.tube = build_tube(mesh.V, mesh.F, topo, loop_a, loop_b, options.tube);
   refine_and_relax(out.tube.V, mesh.F, out.tube.faces, options, out);

@@ -1,8 +1,11 @@
 // Tests that an operation builds each mesh's connectivity once and passes it down (docs/architecture.md:
 // "connectivity is built once"), read from the diagnostic counter topology_builds() (topology.h).
+#include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/applications/fill.h>
 #include <fairsurf/applications/smooth.h>
+#include <fairsurf/geometry/continuity_measure.h>
+#include <fairsurf/io/io.h>
 #include <fairsurf/mesh/topology.h>
 
 #include <gtest/gtest.h>
@@ -14,6 +17,7 @@
 
 #include "analytic_meshes.h"
 #include "hole_meshes.h"
+#include "test_support.h"
 
 using namespace fairsurf;
 
@@ -41,10 +45,11 @@ TEST(TopologyBuilds, CountsEveryBuild) {
 
 // The default fill (G2 flow from the re-evaluated ∆³ start, with the held-out check) of one hole,
 // and of two holes far apart (two groups). Once per operation: the input (its validation's). Per
-// group, one per distinct mesh: the patched mesh (the membrane, the fairing's cut and the next
-// group read it), the membrane's region, the fairing's neighbourhood (its validation, ∆³ solves,
-// flow and held-out trials read it); and the two one-sided face sets measure_continuity fits.
-// Before the connectivity was passed down: 33 and 63 (3 per operation, 30 per group).
+// group, the patched mesh's: the membrane's region, the fairing's neighbourhood (its validation, ∆³
+// solves, flow and held-out trials) and the two one-sided face sets measure_continuity fits are
+// parts of it, whose connectivity derives from it (derive_topology) instead of being built.
+// Before the connectivity was passed down: 33 and 63 (3 per operation, 30 per group); before the
+// parts derived theirs: 6 and 11 (1, and 5 per group).
 TEST(TopologyBuilds, FillBuildsEachMeshsConnectivityOnce) {
   using Vec3 = Eigen::Vector3d;
   const Mesh sphere = test::icosphere(3);
@@ -52,8 +57,8 @@ TEST(TopologyBuilds, FillBuildsEachMeshsConnectivityOnce) {
   const Mesh two = test::cut_hole(sphere, [](const Vec3& p) { return std::abs(p.z()) > 0.6; });
   const std::uint64_t single = fill_builds(one, 1), pair = fill_builds(two, 2);
   std::cout << "topologies built: " << single << " for one hole, " << pair << " for two separate holes\n";
-  EXPECT_EQ(pair - single, 5u);  // per group
-  EXPECT_EQ(single, 1u + 5u);
+  EXPECT_EQ(pair - single, 1u);  // per group
+  EXPECT_EQ(single, 1u + 1u);
 }
 
 // smooth validates the mesh, takes the default time and flows on one connectivity (before: 5).
@@ -67,16 +72,39 @@ TEST(TopologyBuilds, SmoothBuildsTheMeshsConnectivityOnce) {
   EXPECT_EQ(topology_builds() - before, 1u);
 }
 
-// fair_region (`fairsurf fair`'s defaults): the mesh's (its validation's), the neighbourhood's (the
-// ∆³ solve, the flow and the held-out trials read it) and the continuity measure's two face sets.
-TEST(TopologyBuilds, FairRegionBuildsTheMeshAndItsNeighbourhoodOnce) {
-  Mesh mesh = test::icosphere(4);
+// fair_region (`fairsurf fair`'s defaults) builds the mesh's connectivity (its validation's); the
+// neighbourhood's (the ∆³ solve, the flow and the held-out trials read it) and the continuity
+// measure's two face sets derive theirs from it (before: 4 builds). Given the connectivity, it
+// builds none, and neither does measure_continuity.
+TEST(TopologyBuilds, FairRegionBuildsTheMeshsConnectivityOnce) {
+  const Mesh sphere = test::icosphere(4);
   std::vector<int> free;
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    if (mesh.V(v, 2) > 0.8) free.push_back(v);
-  const std::uint64_t before = topology_builds();
-  fair_region(mesh, free, FairRegionOptions::harmonic_started());
+  for (int v = 0; v < sphere.num_vertices(); ++v)
+    if (sphere.V(v, 2) > 0.8) free.push_back(v);
+  Mesh mesh = sphere;
+  std::uint64_t before = topology_builds();
+  const FairRegionReport report = fair_region(mesh, free, FairRegionOptions::harmonic_started());
   const std::uint64_t builds = topology_builds() - before;
   std::cout << "topologies built by fair_region: " << builds << "\n";
-  EXPECT_EQ(builds, 4u);
+  EXPECT_EQ(builds, 1u);
+  EXPECT_GT(report.continuity.border_vertices, 0);  // the measure ran, on derived connectivity
+
+  mesh = sphere;
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  before = topology_builds();
+  fair_region(mesh, topo, free, FairRegionOptions::harmonic_started());
+  measure_continuity(mesh.V, mesh.F, topo, free);
+  EXPECT_EQ(topology_builds() - before, 0u);
+}
+
+// blend_loops builds the input's connectivity (its loops, the reference measures, the tube) and
+// the tubed mesh's (the membrane, the fairing, the border measures); the measured parts derive
+// theirs (before: 22 on this mesh).
+TEST(TopologyBuilds, BlendBuildsTheInputsAndTheTubedMeshsConnectivity) {
+  Mesh mesh = read_mesh(test::data_path("cgal_blobby_3cc.off"));
+  const std::uint64_t before = topology_builds();
+  const BlendReport report = blend_loops(mesh);
+  EXPECT_EQ(topology_builds() - before, 2u);
+  EXPECT_GT(report.a.reference.border_vertices, 0);  // the reference measures ran
+  EXPECT_GT(report.b.border.border_vertices, 0);
 }

@@ -8,6 +8,7 @@
 
 #include <fairsurf/mesh/continuity.h>
 #include <fairsurf/mesh/mesh.h>
+#include <fairsurf/mesh/topology.h>
 
 #include <span>
 
@@ -27,5 +28,10 @@ struct ContinuityMeasure {
 /// ill-posed are skipped (not counted). Throws InvalidArgument for a vertex of `at` out of range.
 ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F, std::span<const int> free_vertices,
                                      std::span<const int> at = {});
+/// The same on `topo`, the connectivity of F (build_topology), instead of building it again: the two
+/// sides' connectivities derive from it (derive_topology). Throws InvalidArgument if `topo` is not
+/// over #V vertices and #F faces.
+ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F, const Topology& topo,
+                                     std::span<const int> free_vertices, std::span<const int> at = {});
 
 }  // namespace fairsurf

@@ -48,9 +48,19 @@ struct Topology {
 /// Throws InvalidArgument if a face index is outside [0, num_vertices) or a face repeats a vertex.
 Topology build_topology(const Faces& F, int num_vertices);
 
+/// The connectivity of a part of a mesh (a submesh, one side of a region), derived from the whole
+/// mesh's connectivity `parent` instead of built from faces again. `F` holds some of the parent's
+/// faces, each vertex renumbered to its position in `to_parent`: the ascending parent indices of the
+/// part's vertices (submesh.h's to_global). The result equals build_topology(F, to_parent.size()),
+/// field by field: each neighbour row is the parent's, already sorted, filtered to what F keeps (each
+/// kept neighbour found by bisection in that row), so no row is sorted again and the time goes with
+/// the part and its vertices' parent rows, not with the parent. Not counted by topology_builds(). Throws InvalidArgument as build_topology does, for a `to_parent` that is not
+/// ascending or out of the parent's range, or for a face with an edge the parent does not have.
+Topology derive_topology(const Topology& parent, const Faces& F, std::span<const int> to_parent);
+
 /// Diagnostic counter: how many times build_topology has run in this process (all threads). Tests
 /// read its difference across a call to check that an operation builds each mesh's connectivity
-/// once and passes it down instead of rebuilding it.
+/// once and passes it down (deriving its parts' with derive_topology) instead of rebuilding it.
 std::uint64_t topology_builds();
 
 /// Per-vertex flag: the vertex lies on a border edge (an edge with exactly one face).

@@ -59,5 +59,8 @@ InitialPatch hole_patch(const Mesh& mesh, const Topology& topo, const std::vecto
 /// refine_patch and relax_membrane throw.
 InitialPatch tube_patch(const Mesh& mesh, std::span<const int> loop_a, std::span<const int> loop_b,
                         const PatchOptions& options = {});
+/// The same on `topo`, the connectivity of mesh.F (build_topology), instead of building it again.
+InitialPatch tube_patch(const Mesh& mesh, const Topology& topo, std::span<const int> loop_a,
+                        std::span<const int> loop_b, const PatchOptions& options = {});
 
 }  // namespace fairsurf
