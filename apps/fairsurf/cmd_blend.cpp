@@ -28,7 +28,7 @@ BlendOptions blend_options(const BlendArgs& args) {
   BlendOptions o;
   apply_region_fairing_args(args.fairing, o);
   o.patch.relax = !args.no_relax;
-  apply_solver_args(args.fairing.solver, o.patch.membrane.solver);
+  apply_solver_args(args.fairing.solver, o.patch.solver);
   o.descent_fallback = !args.no_descent_fallback;
   if (!args.loops.empty()) {
     o.loop_a = args.loops[0];

@@ -36,7 +36,7 @@ FillOptions fill_options(const FillArgs& args) {
   o.flow.functions = args.functions;
   if (args.max_steps > 0) o.flow.max_steps = args.max_steps;
   // Every solve of the fill (membrane, harmonic start or floor, flow), each keeping its ordering.
-  for (LinearSolverOptions* solver : {&o.flow.solver, &o.harmonic_solver, &o.patch.membrane.solver})
+  for (LinearSolverOptions* solver : {&o.flow.solver, &o.harmonic_solver, &o.patch.solver})
     apply_solver_args(args.solver, *solver);
   o.holes = args.holes;
   o.max_hole_edges = args.max_hole_edges;

@@ -60,7 +60,8 @@ InitialPatch initial_tube(const Mesh& mesh, const Topology& topo, const std::vec
   report.hermite_quality = worst_quality(patch.mesh.V, F, patch.first_patch_face);
   if (!options.patch.relax || patch.free_vertices.empty()) return patch;
   Vertices relaxed = patch.mesh.V;
-  MembraneReport membrane = relax_membrane(relaxed, F, patch.topology, patch.free_vertices, options.patch.membrane);
+  MembraneReport membrane = relax_membrane(relaxed, F, patch.topology, patch.free_vertices, options.patch.membrane,
+                                           options.patch.solver);
   report.membrane_quality = worst_quality(relaxed, F, patch.first_patch_face);
   report.relaxed = report.membrane_quality >= options.pinch_quality_ratio * report.hermite_quality;
   if (report.relaxed) {

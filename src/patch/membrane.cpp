@@ -28,12 +28,12 @@ double area_of(const Vertices& V, const Faces& F) {
 }  // namespace
 
 MembraneReport relax_membrane(Vertices& V, const Faces& F, std::span<const int> free_vertices,
-                              const MembraneOptions& options) {
-  return relax_membrane(V, F, build_topology(F, static_cast<int>(V.rows())), free_vertices, options);
+                              const MembraneOptions& options, const LinearSolverOptions& solver) {
+  return relax_membrane(V, F, build_topology(F, static_cast<int>(V.rows())), free_vertices, options, solver);
 }
 
 MembraneReport relax_membrane(Vertices& V, const Faces& F, const Topology& topo, std::span<const int> free_vertices,
-                              const MembraneOptions& options) {
+                              const MembraneOptions& options, const LinearSolverOptions& solver) {
   if (topo.num_vertices != V.rows() || topo.num_faces != F.rows())
     throw InvalidArgument("relax_membrane: the topology was built for another mesh");
   if (options.iterations < 1)
@@ -53,7 +53,7 @@ MembraneReport relax_membrane(Vertices& V, const Faces& F, const Topology& topo,
   const Region region = make_region(local, sub.free_local, Continuity::G0);
   HarmonicOptions membrane;
   membrane.order = 1;  // ∆x = 0 with the cotangent weights of the current positions
-  membrane.solver = options.solver;
+  membrane.solver = solver;
 
   MembraneReport report;
   report.area.push_back(area_of(sub.mesh.V, sub.mesh.F));

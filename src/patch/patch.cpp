@@ -27,7 +27,8 @@ void refine_and_relax(const Vertices& V, const Faces& F, const Faces& patch, con
   // The patched mesh's connectivity, built once: the membrane reads it here, the caller's fairing later.
   out.topology = build_topology(out.mesh.F, out.mesh.num_vertices());
   if (options.relax && !out.free_vertices.empty())
-    out.membrane = relax_membrane(out.mesh.V, out.mesh.F, out.topology, out.free_vertices, options.membrane);
+    out.membrane = relax_membrane(out.mesh.V, out.mesh.F, out.topology, out.free_vertices, options.membrane,
+                                  options.solver);
 }
 
 // The largest angle between the normals of a patch face and the mesh face across a border edge.

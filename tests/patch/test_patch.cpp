@@ -409,6 +409,25 @@ TEST(HolePatch, SphereCapIsFilledWatertightWithMatchingEdgeLengths) {
   EXPECT_LE(p.membrane.area.back(), p.membrane.area.front() + 1e-12);
 }
 
+// PatchOptions::solver is the membrane's: UMFPACK there gives the same membrane as MUMPS, and a
+// MUMPS control the library reserves is refused by that solve.
+TEST(HolePatch, TheMembraneSolvesWithThePatchOptionsSolver) {
+  const Mesh sphere = test::icosphere(3);
+  const Mesh holed = cut(sphere, [](const Vec3& p) { return p.z() > 0.7; });
+  const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  const InitialPatch mumps = hole_patch(holed, loops);
+  PatchOptions options;
+  options.solver.kind = LinearSolverKind::umfpack;
+  const InitialPatch umfpack = hole_patch(holed, loops, options);
+  ASSERT_EQ(umfpack.mesh.num_vertices(), mumps.mesh.num_vertices());
+  EXPECT_LT((umfpack.mesh.V - mumps.mesh.V).cwiseAbs().maxCoeff(), 1e-10);
+  options = PatchOptions{};
+  options.solver.mumps_controls = {{1, 6}};  // MUMPS's output stream: the library's own
+  EXPECT_THROW(hole_patch(holed, loops, options), InvalidArgument);
+  options.relax = false;  // no membrane, no solve
+  EXPECT_NO_THROW(hole_patch(holed, loops, options));
+}
+
 TEST(HolePatch, IrregularHoleRefinesToTheBorderLength) {
   const Mesh m = irregular_annulus(40, 7, 0.3);
   const std::vector<std::vector<int>> loops{inner_loop(m)};

@@ -22,9 +22,11 @@ namespace fairsurf {
 
 struct MembraneOptions {
   int iterations = 3;            ///< solves, each with weights from the previous positions
-  /// The solver of the (#free by #free) Laplace systems (patch-sized: minimum-degree ordering).
-  LinearSolverOptions solver{.ordering = FillOrdering::minimum_degree};
 };
+
+/// The solver relax_membrane uses by default for its (#free by #free) Laplace systems: patch-sized,
+/// so the minimum-degree ordering.
+inline LinearSolverOptions default_membrane_solver() { return {.ordering = FillOrdering::minimum_degree}; }
 
 struct MembraneReport {
   int iterations = 0;
@@ -39,9 +41,11 @@ struct MembraneReport {
 /// Throws InvalidArgument for an index out of range, an empty free set or iterations < 1, and
 /// NumericalError if a system is singular (e.g. a free component with no fixed vertex).
 MembraneReport relax_membrane(Vertices& V, const Faces& F, std::span<const int> free_vertices,
-                              const MembraneOptions& options = {});
+                              const MembraneOptions& options = {},
+                              const LinearSolverOptions& solver = default_membrane_solver());
 /// The same on `topo`, the connectivity of F (build_topology), instead of building it again.
 MembraneReport relax_membrane(Vertices& V, const Faces& F, const Topology& topo, std::span<const int> free_vertices,
-                              const MembraneOptions& options = {});
+                              const MembraneOptions& options = {},
+                              const LinearSolverOptions& solver = default_membrane_solver());
 
 }  // namespace fairsurf

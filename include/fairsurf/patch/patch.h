@@ -28,6 +28,8 @@ struct PatchOptions {
   PatchRefinementOptions refinement{};
   MembraneOptions membrane{};
   bool relax = true;  ///< run the G0 membrane relaxation (false: keep the refined, flat-ish patch)
+  /// The solver of the membrane's Laplace systems, the patch stage's one linear solve.
+  LinearSolverOptions solver = default_membrane_solver();
 };
 
 struct InitialPatch {
