@@ -36,6 +36,27 @@ double mean_new_vertex_distance(const Mesh& filled, int input_vertices, const Me
   return sum / (filled.num_vertices() - input_vertices);
 }
 
+// A cut filled with fill's defaults and with the linear ∆³ floor alone, and how far each fill's new
+// vertices lie from the uncut surface, in its mean edge lengths h.
+struct FilledTwice {
+  Mesh filled, floor;
+  FillReport report;
+  double distance = 0, floor_distance = 0;
+  const HoleReport& hole() const { return report.holes.front(); }
+};
+
+FilledTwice fill_twice(const Mesh& cut, const Mesh& truth) {
+  FilledTwice r{cut, cut, {}};
+  r.report = fill_holes(r.filled, FillOptions{});
+  FillOptions linear;
+  linear.method = FairMethod::harmonic;
+  fill_holes(r.floor, linear);
+  const double h = test::mean_edge_length(truth);
+  r.distance = mean_new_vertex_distance(r.filled, cut.num_vertices(), truth) / h;
+  r.floor_distance = mean_new_vertex_distance(r.floor, cut.num_vertices(), truth) / h;
+  return r;
+}
+
 class RealHoles : public ::testing::TestWithParam<RealHole> {};
 
 }  // namespace
@@ -44,14 +65,11 @@ TEST_P(RealHoles, FilledWatertightAndNeverAFlowThatPredictsWorseThanTheLinearFlo
   const RealHole& c = GetParam();
   const Mesh truth = read_mesh(test::data_path(c.mesh));
   const Mesh cut = test::cut_ball(truth, c.centre, c.radius);
-  Mesh filled = cut, floor = cut;
-  const FillReport report = fill_holes(filled, FillOptions{});
-  FillOptions linear;
-  linear.method = FairMethod::harmonic;
-  fill_holes(floor, linear);
+  const FilledTwice r = fill_twice(cut, truth);
+  const Mesh& filled = r.filled;
 
-  ASSERT_EQ(report.holes.size(), 1u);
-  const HoleReport& hole = report.holes.front();
+  ASSERT_EQ(r.report.holes.size(), 1u);
+  const HoleReport& hole = r.hole();
   ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
   EXPECT_TRUE(validate(filled).manifold());
   EXPECT_TRUE(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).empty());
@@ -65,17 +83,14 @@ TEST_P(RealHoles, FilledWatertightAndNeverAFlowThatPredictsWorseThanTheLinearFlo
   EXPECT_EQ(hole.two_ring_boundary_fits,
             !hole.linear && hole.held_out_two_ring_flow_error < hole.held_out_flow_error) << hole.note;
   if (hole.linear) {
-    EXPECT_TRUE(filled.V == floor.V) << "the linear result is not the floor";
+    EXPECT_TRUE(filled.V == r.floor.V) << "the linear result is not the floor";
   }
 
-  const double h = test::mean_edge_length(truth);
-  const double ours = mean_new_vertex_distance(filled, cut.num_vertices(), truth) / h;
-  const double baseline = mean_new_vertex_distance(floor, cut.num_vertices(), truth) / h;
   std::printf("[real hole] %s r=%.4g: %s, held out flow %.3g linear %.3g; mean distance %.3f h (linear %.3f h)\n",
               c.mesh.c_str(), c.radius, delivered_label(hole.supported, hole.linear).c_str(),
-              hole.held_out_flow_error, hole.held_out_linear_error, ours, baseline);
-  EXPECT_LE(ours, 1.5 * baseline);
-  EXPECT_LT(ours, 0.5);  // half an edge: a fill, not a dent
+              hole.held_out_flow_error, hole.held_out_linear_error, r.distance, r.floor_distance);
+  EXPECT_LE(r.distance, 1.5 * r.floor_distance);
+  EXPECT_LT(r.distance, 0.5);  // half an edge: a fill, not a dent
 }
 
 // Centres and radii (4h, 8h) from cases/real_holes.md and bench_real_holes.
@@ -93,25 +108,19 @@ TEST(RealNoisyHole, TheHeldOutRingsChooseTwoRingBoundaryDataAndTheG2FillBeatsThe
   const double h = test::mean_edge_length(truth);
   Mesh cut = test::cut_ball(truth, {0.176282, 0.148983, -0.699856}, 4 * h);
   test::add_normal_noise(cut, 0.1 * h, 2439);
-  Mesh filled = cut, floor = cut;
-  const FillReport report = fill_holes(filled, FillOptions{});
-  FillOptions linear;
-  linear.method = FairMethod::harmonic;
-  fill_holes(floor, linear);
+  const FilledTwice r = fill_twice(cut, truth);
 
-  ASSERT_EQ(report.holes.size(), 1u);
-  const HoleReport& hole = report.holes.front();
+  ASSERT_EQ(r.report.holes.size(), 1u);
+  const HoleReport& hole = r.hole();
   ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
   EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
   EXPECT_TRUE(hole.two_ring_boundary_fits) << hole.note;
   EXPECT_LT(hole.held_out_two_ring_flow_error, hole.held_out_flow_error);
-  const double ours = mean_new_vertex_distance(filled, cut.num_vertices(), truth) / h;
-  const double baseline = mean_new_vertex_distance(floor, cut.num_vertices(), truth) / h;
   std::printf("[noisy hole] blub 4h, 0.1h noise: held out 1-ring flow %.3g, 2-ring flow %.3g, linear %.3g; "
               "mean distance %.3f h (linear %.3f h)\n",
-              hole.held_out_flow_error, hole.held_out_two_ring_flow_error, hole.held_out_linear_error, ours,
-              baseline);
-  EXPECT_LT(ours, 0.7 * baseline);
+              hole.held_out_flow_error, hole.held_out_two_ring_flow_error, hole.held_out_linear_error, r.distance,
+              r.floor_distance);
+  EXPECT_LT(r.distance, 0.7 * r.floor_distance);
 }
 
 // data/hemisphere.off (pmp-library) is the unit sphere above z ≈ 0.1, open along a 120-edge circle
