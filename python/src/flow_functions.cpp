@@ -164,8 +164,9 @@ void set_fairing(const FairingArgs& a, FairRegionOptions& o) {
 
 py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handle& region, const FairingArgs& args,
                        const std::string& start, py::object callback) {
-  if (start != "harmonic" && start != "input")
-    throw InvalidArgument("fair: start must be 'harmonic' or 'input', got '" + start + "'");
+  // 'flat' as the CLI's --start names it; 'input', this keyword's former value, stays as its alias.
+  if (start != "harmonic" && start != "flat" && start != "input")
+    throw InvalidArgument("fair: start must be 'harmonic' or 'flat' (alias 'input'), got '" + start + "'");
   Mesh mesh = to_mesh(V, F);
   const std::vector<int> free = region_vertices(region, mesh.num_vertices());
   FairRegionOptions options =

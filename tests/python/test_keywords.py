@@ -50,3 +50,16 @@ def test_fixed_vertices_and_fixed_together_are_refused(hand):
     with pytest.raises(TypeError) as error:
         fairsurf.smooth(V, F, fixed_vertices=[1], fixed=[2])
     assert str(error.value) == "smooth() got both fixed_vertices and its alias fixed; give one"
+
+
+def test_fair_start_takes_the_cli_values_and_its_former_one(tmp_path):
+    V, F = fairsurf.scene("sphere-cap", edge_length=0.3)
+    cap = V[:, 2] == 0.5  # the scene flattens its free cap onto z = 0.5
+    V_flat, _ = fairsurf.fair(V, F, region=cap, start="flat", max_steps=2)
+    V_input, _ = fairsurf.fair(V, F, region=cap, start="input", max_steps=2)
+    V_harmonic, _ = fairsurf.fair(V, F, region=cap, start="harmonic", max_steps=2)
+    assert np.array_equal(V_flat, V_input)
+    assert not np.array_equal(V_flat, V_harmonic)
+    with pytest.raises(fairsurf.InvalidArgument) as error:
+        fairsurf.fair(V, F, region=cap, start="membrane")
+    assert str(error.value) == "fair: start must be 'harmonic' or 'flat' (alias 'input'), got 'membrane'"
