@@ -40,6 +40,26 @@ double mean_torus_distance(const Vertices& V, const std::vector<int>& vertices) 
   return sum / static_cast<double>(vertices.size());
 }
 
+// The centre of a saddle freed, with f = K (not parabolic where K < 0, all over a saddle) and a
+// step control that rejects every step: the time-stepped flow throws at once.
+struct FailingFlow {
+  Mesh mesh;
+  std::vector<int> free;
+  FairRegionOptions options;
+};
+
+FailingFlow failing_flow_on_a_saddle(int held_out_rings) {
+  FailingFlow c{test::saddle_patch(16, 1.0), {}, FairRegionOptions::harmonic_started()};
+  for (int v = 0; v < c.mesh.num_vertices(); ++v)
+    if (c.mesh.V.row(v).head<2>().norm() < 0.35) c.free.push_back(v);
+  c.options.held_out_rings = held_out_rings;
+  c.options.flow.functions = {"K"};
+  c.options.flow.step_kind = FlowStepKind::implicit_flow;
+  c.options.flow.max_displacement_ratio = 1e-12;
+  c.options.flow.max_consecutive_rejections = 0;
+  return c;
+}
+
 }  // namespace
 
 TEST(Continuity, SmallOnASmoothSurfaceLargeAcrossAFold) {
@@ -199,17 +219,8 @@ TEST(FairRegion, RejectsBadInput) {
 // A flow that throws under the linear floor leaves the linear solution, and its report keeps the
 // well-posedness the flow's error carries: f = K is not parabolic where K < 0, all over a saddle.
 TEST(FairRegion, AFailedFlowUnderTheFloorKeepsItsWellPosedness) {
-  Mesh mesh = test::saddle_patch(16, 1.0);
-  std::vector<int> free;
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    if (mesh.V.row(v).head<2>().norm() < 0.35) free.push_back(v);
-  FairRegionOptions options = FairRegionOptions::harmonic_started();
-  options.held_out_rings = 0;
-  options.flow.functions = {"K"};
-  options.flow.step_kind = FlowStepKind::implicit_flow;
-  options.flow.max_displacement_ratio = 1e-12;  // every step is rejected: the flow throws at once
-  options.flow.max_consecutive_rejections = 0;
-  const FairRegionReport report = fair_region(mesh, free, options);
+  FailingFlow c = failing_flow_on_a_saddle(0);
+  const FairRegionReport report = fair_region(c.mesh, c.free, c.options);
   EXPECT_TRUE(report.linear);
   EXPECT_NE(report.note.find("flow failed (run_flow"), std::string::npos) << report.note;
   EXPECT_GT(report.flow.well_posedness.vertices, 0);
@@ -218,19 +229,11 @@ TEST(FairRegion, AFailedFlowUnderTheFloorKeepsItsWellPosedness) {
 
 // The same failure in the held-out trial (fill's check): the flow that was weighed keeps its figure.
 TEST(FairRegion, AHeldOutTrialThatFailsKeepsItsWellPosedness) {
-  Mesh mesh = test::saddle_patch(16, 1.0);
-  std::vector<int> free;
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    if (mesh.V.row(v).head<2>().norm() < 0.35) free.push_back(v);
-  FairRegionOptions options = FairRegionOptions::harmonic_started();
-  options.held_out_rings = 2;
-  options.flow.functions = {"K"};
-  options.flow.step_kind = FlowStepKind::implicit_flow;
-  options.flow.max_displacement_ratio = 1e-12;
-  options.flow.max_consecutive_rejections = 0;
-  const FairRegionReport report = fair_region(mesh, free, options);
+  FailingFlow c = failing_flow_on_a_saddle(2);
+  const FairRegionReport report = fair_region(c.mesh, c.free, c.options);
   EXPECT_TRUE(report.linear);
   EXPECT_NE(report.note.find("re-predicts"), std::string::npos) << report.note;
   EXPECT_TRUE(std::isinf(report.held_out_flow_error));
+  EXPECT_TRUE(std::isinf(report.held_out_two_ring_flow_error));  // the same flow on 2-ring fits fails too
   EXPECT_GT(report.flow.well_posedness.violating_vertices, 0);
 }

@@ -208,7 +208,7 @@ TEST(QuadraticFit, SubsetFitsOnlyTheListedVertices) {
 // FlowOptions::two_ring_boundary_fits: listed vertices are fitted over their 2-ring. On a noisy sphere
 // the wider fit averages the noise: its mean curvature is closer to the sphere's on average.
 TEST(QuadraticFit, RequestedTwoRingFitsReadTheSurfaceOverTwoRings) {
-  const Mesh m = test::jittered_sphere(3, 1.0, 0.0);
+  const Mesh m = test::icosphere(3);
   Mesh noisy = m;
   std::mt19937 random(7);
   std::normal_distribution<double> deviate(0.0, 0.01);  // radial, about a tenth of an edge
