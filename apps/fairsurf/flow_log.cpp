@@ -16,6 +16,7 @@ nlohmann::json to_json(const StepRecord& r) {
                    {"time", r.time},
                    {"tau", r.tau},
                    {"energy", r.energy},
+                   {"predicted_decrease", r.predicted_decrease},
                    {"max_displacement", r.max_displacement},
                    {"held_back_vertices", r.held_back_vertices},
                    {"max_velocity", r.max_velocity},

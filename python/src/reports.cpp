@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace fairsurf::python {
@@ -11,7 +12,11 @@ using namespace pybind11::literals;
 
 py::dict to_dict(const StepRecord& r) {
   py::dict d("step"_a = r.step, "attempt"_a = r.attempt, "time"_a = r.time, "tau"_a = r.tau,
-             "energy"_a = r.energy, "max_displacement"_a = r.max_displacement,
+             "energy"_a = r.energy,
+             // None, not NaN, where there is no model (the time-stepped flow): NaN != NaN in a dict.
+             "predicted_decrease"_a = std::isnan(r.predicted_decrease) ? py::object(py::none())
+                                                                       : py::object(py::float_(r.predicted_decrease)),
+             "max_displacement"_a = r.max_displacement,
              "held_back_vertices"_a = r.held_back_vertices, "max_velocity"_a = r.max_velocity,
              "accepted"_a = r.accepted, "solver_iterations"_a = r.solver_iterations,
              "backward_error"_a = r.backward_error,

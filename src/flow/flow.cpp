@@ -98,6 +98,7 @@ class FlowRun {
   bool faces_ok(StepRecord& record);
   bool evaluate_trial(StepRecord& record);
   bool reject(StepRecord& record, StepRejection why, std::string detail);
+  bool model_minimum_reached(int consecutive_rejections) const;
   void fail(const StepRecord& record, const std::string& what) const;
   void write_back() const;
 
@@ -260,6 +261,7 @@ bool FlowRun::solve_step(double tau, StepRecord& record, Eigen::VectorXd& d) {
   record.solver_iterations = solver_->report().iterations;
   record.backward_error = solver_->report().backward_error;
   if (!d.allFinite()) return reject(record, StepRejection::non_finite, "non-finite displacement");
+  if (descending()) record.predicted_decrease = -(2 * model_.gradient.dot(d) + d.dot(model_.normal * d));
   record.max_displacement = d.cwiseAbs().maxCoeff();
   return true;
 }
@@ -366,6 +368,22 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
   return true;
 }
 
+// energy_descent, after a rejection: whether the last two trials, both rejected because E rose,
+// were promised the same decrease by the Gauss–Newton model (within 1%: shrinking τ no longer damps
+// the step, which is the model's own minimum) and that decrease is below steady_energy_tolerance·E.
+// Then no step of this model lowers E by that fraction: E has stopped decreasing. Without this test
+// the rejections went on shrinking τ over a dozen orders of magnitude, each a factorization, until
+// the damping finally bit and a step lowered E by a few 1e-7 of it (docs/flow.md, "Energy descent").
+bool FlowRun::model_minimum_reached(int consecutive_rejections) const {
+  const double tolerance = options_.steady_energy_tolerance;
+  if (tolerance <= 0 || consecutive_rejections < 2 || report_.records.size() < 2) return false;
+  const StepRecord& last = report_.records.back();
+  const StepRecord& before = report_.records[report_.records.size() - 2];
+  if (last.rejection != StepRejection::energy || before.rejection != StepRejection::energy) return false;
+  const double promised = last.predicted_decrease, earlier = before.predicted_decrease;
+  return promised < tolerance * energy_ && std::abs(promised - earlier) <= 0.01 * std::abs(earlier);
+}
+
 FlowReport FlowRun::run() {
   initialize();
   const double tolerance = options_.steady_tolerance;
@@ -425,6 +443,10 @@ FlowReport FlowRun::run() {
     if (accepted) continue;
     if (!options_.step_control)
       fail(record, std::string(to_string(record.rejection)) + " (step control is off): " + record.detail);
+    if (descending() && model_minimum_reached(consecutive_rejections)) {
+      report_.stop_reason = FlowStopReason::steady;
+      break;
+    }
     if (consecutive_rejections > options_.max_consecutive_rejections && descending()) {
       // No step lowers E any more, however small: E has stopped decreasing.
       report_.stop_reason = FlowStopReason::steady;

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -62,6 +63,40 @@ TEST(EnergyDescent, ARealRegionSettlesWithEveryAcceptedStepLoweringTheEnergy) {
   EXPECT_EQ(two_ring.flow.stop_reason, FlowStopReason::steady);
   expect_energy_monotone(two_ring.flow);
   EXPECT_LT(two_ring.flow.final_energy, two_ring.flow.initial_energy);
+}
+
+// A region of spot 0.15 across (33 free vertices): after one accepted step the Gauss–Newton step
+// raises E, and shrinking τ leaves that step unchanged (the damping A/(2τ) is negligible beside N
+// down to τ ~ 1e-10). The model promises less than steady_energy_tolerance · E there, so two such
+// rejections end the run steady, where the rejections used to shrink τ a dozen more times (one
+// factorization each) before a step lowering E by a few 1e-7 of it was found.
+TEST(EnergyDescent, TwoRejectionsAtTheModelsOwnMinimumEndTheRunSteady) {
+  Mesh mesh = read_mesh(test::data_path("spot.obj"));
+  const std::vector<int> region = test::ball_vertices(mesh, {-0.178799, 0.187723, 0.48375}, 0.15);
+  ASSERT_GT(region.size(), 20u);
+  FairRegionOptions options = FairRegionOptions::harmonic_started();
+  options.held_out_rings = 0;
+  const FairRegionReport report = fair_region(mesh, region, options);
+  ASSERT_FALSE(report.linear) << report.note;
+  const FlowReport& flow = report.flow;
+  EXPECT_EQ(flow.stop_reason, FlowStopReason::steady);
+  expect_energy_monotone(flow);
+  for (const StepRecord& r : flow.records) {
+    // d minimizes the damped model, whose value at d = 0 is E: it never promises a rise.
+    ASSERT_TRUE(std::isfinite(r.predicted_decrease)) << "attempt " << r.attempt;
+    EXPECT_GE(r.predicted_decrease, 0.0) << "attempt " << r.attempt;
+  }
+  ASSERT_GE(flow.records.size(), 3u);
+  const StepRecord& last = flow.records.back();
+  const StepRecord& before = flow.records[flow.records.size() - 2];
+  EXPECT_FALSE(last.accepted);
+  EXPECT_FALSE(before.accepted);
+  EXPECT_EQ(last.rejection, StepRejection::energy);
+  EXPECT_EQ(before.rejection, StepRejection::energy);
+  EXPECT_EQ(last.step, before.step);
+  EXPECT_NEAR(last.predicted_decrease, before.predicted_decrease, 0.01 * before.predicted_decrease);
+  EXPECT_LT(last.predicted_decrease, options.flow.steady_energy_tolerance * flow.final_energy);
+  EXPECT_EQ(flow.rejected_steps, 2) << "the rejections went on past the model's minimum";
 }
 
 // `fairsurf smooth --steady` on a noisy sphere: ends steady and round, E monotone, and two runs give

@@ -82,8 +82,11 @@ namespace fairsurf {
 ///                   otherwise (no displacement bound: the energy test is the trust region). Small τ
 ///                   gives the flow's explicit step, large τ the Gauss–Newton step. E is monotone
 ///                   over accepted steps; the run is steady once E stops decreasing (FlowOptions::
-///                   steady_energy_tolerance, or max_consecutive_rejections rejections in a row: no
-///                   descent is left to round-off). For fill, fair and blend, which need the steady
+///                   steady_energy_tolerance: an accepted step lowers E by less than that fraction,
+///                   or two rejected trials in a row whose damping no longer changes the model's
+///                   promise (within 1%) are promised less than it: the model's own minimum is that
+///                   close; or max_consecutive_rejections rejections in a row: no descent is left to
+///                   round-off). For fill, fair and blend, which need the steady
 ///                   state only: on real meshes the fitted EL is not the gradient of the discrete E
 ///                   (method.md §3: composed operators are inconsistent on irregular meshes), so its
 ///                   Newton steps can raise E and its small steps stall above zero.
@@ -116,7 +119,8 @@ struct FlowOptions {
   /// Steady state also when max|V| ≤ this · max|V| of the input; 0: off. Scale-free, so it suits
   /// runs that start far from steady (a flattened hole patch starts ~1e8 above its round-off floor).
   double steady_relative_tolerance = 0;
-  /// energy_descent: steady once an accepted step lowers E by less than this fraction of E; 0: off.
+  /// energy_descent: steady once an accepted step lowers E by less than this fraction of E, or the
+  /// Gauss–Newton model's undamped step promises less than it and E still rises (the header); 0: off.
   double steady_energy_tolerance = 0;
   FlowStepKind step_kind = FlowStepKind::implicit_flow;
 
@@ -187,6 +191,9 @@ struct StepRecord {
   double time = 0;       ///< flow time after the step if accepted, before it if rejected
   double tau = 0;        ///< time step tried
   double energy = 0;     ///< the flow's energy at the trial state (NaN if not evaluated)
+  /// energy_descent: how much the Gauss–Newton model says this trial lowers E (E − model(d) =
+  /// −(2gᵀd + dᵀNd), energy_descent.h); NaN for the time-stepped flow or an unsolved trial.
+  double predicted_decrease = std::numeric_limits<double>::quiet_NaN();
   double max_displacement = 0;  ///< max_i |d_i|
   double max_velocity = 0;      ///< max over free vertices of |V| at the trial state (|EL|)
   /// Free vertices held back because a face of theirs would have turned over
