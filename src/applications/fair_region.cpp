@@ -163,8 +163,10 @@ Submesh whole_submesh(const Mesh& mesh, std::span<const int> free_vertices) {
 }
 
 // The linear solve alone, or the flow from it (FairRegionOptions::harmonic_start_iterations).
+// `solved_start`: the free vertices already hold that solve's result, which this reports.
 void fair_submesh(Submesh& sub, const Topology& local, const Region& region, const FairRegionOptions& options,
-                  const FlowObserver& observer, FairRegionReport& report, Vertices& caller) {
+                  const FlowObserver& observer, FairRegionReport& report, Vertices& caller,
+                  const HarmonicReport* solved_start = nullptr) {
   HarmonicOptions harmonic;
   harmonic.order = static_cast<int>(region.supported) + 1;
   harmonic.solver = options.harmonic_solver;
@@ -180,7 +182,9 @@ void fair_submesh(Submesh& sub, const Topology& local, const Region& region, con
   FairRegionOptions flow_options = options;
   if (choice == HeldOutChoice::two_ring_flow) flow_options.flow.two_ring_boundary_fits = true;
   report.two_ring_boundary_fits = flow_options.flow.two_ring_boundary_fits;
-  if (options.harmonic_start_iterations > 0) {
+  if (solved_start) {
+    report.harmonic = *solved_start;
+  } else if (options.harmonic_start_iterations > 0) {
     try {
       report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, local, region, harmonic);
     } catch (const NumericalError& e) {
@@ -197,9 +201,11 @@ void fair_submesh(Submesh& sub, const Topology& local, const Region& region, con
 
 namespace fair_detail {
 
-FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
-                                 const FairRegionOptions& options, const FlowObserver& observer, bool measure,
-                                 bool* whole) {
+namespace {
+
+FairRegionReport fair_valid(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                            const FairRegionOptions& options, const FlowObserver& observer, bool measure,
+                            bool* whole, const HarmonicReport* solved_start) {
   const auto start = detail::Clock::now();
   if (free_vertices.empty()) throw InvalidArgument("fair_region: the free region is empty");
   const FlowKind wanted = flow_for(options.continuity);
@@ -221,11 +227,26 @@ FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<con
   report.requested = options.continuity;
   report.supported = region.supported;
   report.method = options.method;
-  fair_submesh(sub, local, region, options, observer, report, mesh.V);
+  fair_submesh(sub, local, region, options, observer, report, mesh.V, solved_start);
   write_back_free(sub, mesh.V);
   if (measure) report.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, local, sub.free_local);
   report.seconds = detail::seconds_since(start);
   return report;
+}
+
+}  // namespace
+
+FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                 const FairRegionOptions& options, const FlowObserver& observer, bool measure,
+                                 bool* whole) {
+  return fair_valid(mesh, topo, free_vertices, options, observer, measure, whole, nullptr);
+}
+
+FairRegionReport fair_valid_mesh_from(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                      const FairRegionOptions& options, const HarmonicReport& start) {
+  if (options.method != FairMethod::flow || options.harmonic_start_iterations <= 0)
+    throw InvalidArgument("fair_valid_mesh_from: only the flow from a harmonic start has one to reuse");
+  return fair_valid(mesh, topo, free_vertices, options, {}, false, nullptr, &start);
 }
 
 FairRegionReport fair_checked_mesh(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,

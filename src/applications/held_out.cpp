@@ -37,26 +37,43 @@ double mean_edge_length(const Vertices& V, const Topology& topo, const std::vect
   return count > 0 ? sum / count : 1.0;
 }
 
-// Mean |(x − x0)·n0| over `held_out` after fairing the region `free` of a copy of `mesh`.
+// Mean |(x − x0)·n0| over `held_out` of `trial` (`input` faired).
+double held_out_distance(const Mesh& trial, const Mesh& input, const std::vector<int>& held_out,
+                         const Vertices& normal, double edge) {
+  double sum = 0;
+  for (int v : held_out) sum += std::abs((trial.V.row(v) - input.V.row(v)).dot(normal.row(v)));
+  return sum / static_cast<double>(held_out.size()) / edge;
+}
+
+// The trials share the ∆^k solution on the enlarged region: the linear trial solves it, and the flow
+// trials, which start from it, take it from there instead of solving it again.
+struct LinearTrial {
+  Mesh solved;  ///< the input with the free vertices at the ∆^k solution
+  HarmonicReport report;
+  bool ok = false;
+};
+
+// Mean |(x − x0)·n0| over `held_out` after fairing the region `free` of a copy of `mesh` with
+// `fairing` (the flow), from `linear`'s solution where it has one.
 // `topo`: the connectivity of `mesh`, shared by the trial copy (only positions change).
-double held_out_error(const Mesh& mesh, const Topology& topo, const std::vector<int>& free,
-                      const std::vector<int>& held_out, const Vertices& normal, double edge,
-                      const FairRegionOptions& fairing, WellPosedness* well_posedness = nullptr) {
-  Mesh trial = mesh;
+double flow_held_out_error(const Mesh& mesh, const Topology& topo, const std::vector<int>& free,
+                           const std::vector<int>& held_out, const Vertices& normal, double edge,
+                           const FairRegionOptions& fairing, const LinearTrial& linear,
+                           WellPosedness* well_posedness = nullptr) {
+  Mesh trial = linear.ok ? linear.solved : mesh;
   try {
     // As fair_region(trial, free, fairing) on a mesh held_out_errors validated, without rebuilding
     // the connectivity or measuring the continuity of a result that is discarded.
-    const FairRegionReport report = fair_valid_mesh(trial, topo, free, fairing, {}, false);
+    const FairRegionReport report = linear.ok ? fair_valid_mesh_from(trial, topo, free, fairing, linear.report)
+                                              : fair_valid_mesh(trial, topo, free, fairing, {}, false);
     if (well_posedness) *well_posedness = report.flow.well_posedness;
-    if (fairing.method == FairMethod::flow && report.linear) return std::numeric_limits<double>::infinity();
+    if (report.linear) return std::numeric_limits<double>::infinity();
   } catch (const Error& e) {
     if (const auto* failure = dynamic_cast<const flow_detail::FlowFailure*>(&e); failure && well_posedness)
       *well_posedness = failure->well_posedness;
     return std::numeric_limits<double>::infinity();
   }
-  double sum = 0;
-  for (int v : held_out) sum += std::abs((trial.V.row(v) - mesh.V.row(v)).dot(normal.row(v)));
-  return sum / static_cast<double>(held_out.size()) / edge;
+  return held_out_distance(trial, mesh, held_out, normal, edge);
 }
 
 }  // namespace
@@ -80,14 +97,23 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
   const double edge = mean_edge_length(sub.mesh.V, topo, held_out);
   FairRegionOptions flow = fairing;
   flow.held_out_rings = 0;
-  FairRegionOptions linear = flow;
-  linear.method = FairMethod::harmonic;
-  errors.flow = held_out_error(sub.mesh, topo, free, held_out, normal, edge, flow, &errors.flow_well_posedness);
-  errors.linear = held_out_error(sub.mesh, topo, free, held_out, normal, edge, linear);
+  FairRegionOptions harmonic = flow;
+  harmonic.method = FairMethod::harmonic;
+  LinearTrial linear{sub.mesh, {}, false};
+  errors.linear = std::numeric_limits<double>::infinity();
+  try {
+    linear.report = fair_valid_mesh(linear.solved, topo, free, harmonic, {}, false).harmonic;
+    linear.ok = flow.harmonic_start_iterations > 0;  // else the flow trials start from the input
+    errors.linear = held_out_distance(linear.solved, sub.mesh, held_out, normal, edge);
+  } catch (const Error&) {
+    // No linear solution: the flow trials meet the same failure in their own start and say so.
+  }
+  errors.flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, flow, linear,
+                                    &errors.flow_well_posedness);
   if (weigh_two_ring) {
     FairRegionOptions two_ring = flow;
     two_ring.flow.two_ring_boundary_fits = true;
-    errors.two_ring_flow = held_out_error(sub.mesh, topo, free, held_out, normal, edge, two_ring);
+    errors.two_ring_flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, two_ring, linear);
   }
   return errors;
 }

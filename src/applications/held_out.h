@@ -38,6 +38,13 @@ FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<con
                                  const FairRegionOptions& options, const FlowObserver& observer = {},
                                  bool measure = true, bool* whole = nullptr);
 
+/// fair_valid_mesh with the ∆^k start already solved: the free vertices of `mesh` hold the linear
+/// solution `start` reports (the held-out trials solve it once for their three fairings, which all
+/// start from it). Only for the flow with a harmonic start; the result is what fair_valid_mesh
+/// gives on the mesh before that solve.
+FairRegionReport fair_valid_mesh_from(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                      const FairRegionOptions& options, const HarmonicReport& start);
+
 /// fair_valid_mesh after require_valid(validate(mesh, topo)): fair_region(mesh, topo, ...) with
 /// fair_valid_mesh's further arguments.
 FairRegionReport fair_checked_mesh(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,

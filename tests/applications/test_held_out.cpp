@@ -1,0 +1,65 @@
+// The held-out trials (src/applications/held_out.*) solve the ∆^k start once and hand it to their
+// flow trials (fair_valid_mesh_from) instead of each flow solving it again. That is only right if a
+// flow from the handed-over solution is the flow fair_valid_mesh runs from its own: checked bit for
+// bit on a real region, with 1-ring and with 2-ring boundary fits.
+#include "../src/applications/held_out.h"
+
+#include <fairsurf/applications/fill.h>
+#include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/topology.h>
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "test_support.h"
+
+namespace fairsurf {
+namespace {
+
+TEST(HeldOutTrials, AFlowFromTheHandedOverLinearSolutionIsTheFlowFromItsOwn) {
+  const Mesh mesh = read_mesh(test::data_path("spot.obj"));
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  const std::vector<int> region = test::ball_vertices(mesh, {0.312594, 0.674309, -0.341185}, 0.190738);
+  ASSERT_GT(region.size(), 20u);
+  for (const bool two_ring : {false, true}) {
+    FairRegionOptions flow = FillOptions();  // fill's trials (∆³ start re-solved up to 8 times)
+    flow.held_out_rings = 0;                 // as in the trials: the fairing itself
+    flow.flow.two_ring_boundary_fits = two_ring;
+    FairRegionOptions harmonic = flow;
+    harmonic.method = FairMethod::harmonic;
+
+    Mesh own = mesh;
+    const FairRegionReport reference = fair_detail::fair_valid_mesh(own, topo, region, flow, {}, false);
+    Mesh solved = mesh;
+    const FairRegionReport linear = fair_detail::fair_valid_mesh(solved, topo, region, harmonic, {}, false);
+    ASSERT_TRUE(linear.linear);
+    EXPECT_FALSE(solved.V == mesh.V);  // the linear solution moved the region
+    const FairRegionReport reused = fair_detail::fair_valid_mesh_from(solved, topo, region, flow, linear.harmonic);
+
+    EXPECT_TRUE(solved.V == own.V) << (two_ring ? "2-ring" : "1-ring") << " fits: the results differ";
+    EXPECT_EQ(reused.linear, reference.linear);
+    EXPECT_EQ(reused.flow.accepted_steps, reference.flow.accepted_steps);
+    EXPECT_EQ(reused.flow.rejected_steps, reference.flow.rejected_steps);
+    EXPECT_EQ(reused.flow.final_energy, reference.flow.final_energy);
+    EXPECT_EQ(reused.harmonic.iterations, reference.harmonic.iterations);
+    EXPECT_GE(reference.flow.accepted_steps, 1);
+    EXPECT_GE(reference.harmonic.iterations, 1);
+  }
+}
+
+TEST(HeldOutTrials, OnlyTheFlowFromAHarmonicStartTakesASolvedStart) {
+  Mesh mesh = read_mesh(test::data_path("spot.obj"));
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  const std::vector<int> region = test::ball_vertices(mesh, {0.312594, 0.674309, -0.341185}, 0.190738);
+  FairRegionOptions harmonic = FairRegionOptions::harmonic_started();
+  harmonic.method = FairMethod::harmonic;
+  EXPECT_THROW(fair_detail::fair_valid_mesh_from(mesh, topo, region, harmonic, {}), InvalidArgument);
+  FairRegionOptions flat = FairRegionOptions::harmonic_started();
+  flat.harmonic_start_iterations = 0;
+  EXPECT_THROW(fair_detail::fair_valid_mesh_from(mesh, topo, region, flat, {}), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace fairsurf
