@@ -110,6 +110,8 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"held_out_flow_error", r.held_out_flow_error},
                    {"held_out_linear_error", r.held_out_linear_error},
                    {"held_out_two_ring_flow_error", r.held_out_two_ring_flow_error},
+                   {"held_out_refined_linear_error", r.held_out_refined_linear_error},
+                   {"refined_start", r.refined_start},
                    {"two_ring_boundary_fits", r.two_ring_boundary_fits},
                    {"note", r.note},
                    {"steps", r.steps},

@@ -87,6 +87,8 @@ py::dict hole_dict(const HoleReport& r) {
                   "held_out_flow_error"_a = r.held_out_flow_error,
                   "held_out_linear_error"_a = r.held_out_linear_error,
                   "held_out_two_ring_flow_error"_a = r.held_out_two_ring_flow_error,
+                  "held_out_refined_linear_error"_a = r.held_out_refined_linear_error,
+                  "refined_start"_a = r.refined_start,
                   "two_ring_boundary_fits"_a = r.two_ring_boundary_fits, "note"_a = r.note, "steps"_a = r.steps,
                   "harmonic_solves"_a = r.harmonic_solves, "seconds"_a = r.seconds,
                   "final_max_velocity"_a = r.final_max_velocity,

@@ -238,8 +238,17 @@ FairRegionReport fair_patch(InitialPatch& patch, const FillOptions& options, con
   // Derived from the patched mesh's, once: validation, fairing, its held-out trials and the
   // continuity measures read it.
   local = derive_topology(patch.topology, sub.mesh.F, sub.to_global);
+  // One ∆^k solve from the patch as refinement left it is weighed beside the membrane's starts:
+  // where the membrane creases the patch against the border, that is the closer one.
+  Vertices refined;
+  if (patch.refined_free.rows() > 0) {
+    refined = sub.mesh.V;
+    const std::vector<int> local_free = to_local(sub, patch.free_vertices);
+    for (std::size_t k = 0; k < local_free.size(); ++k)
+      refined.row(local_free[k]) = patch.refined_free.row(static_cast<Eigen::Index>(k));
+  }
   return fair_detail::fair_checked_mesh(sub.mesh, local, sub.free_local, fairing_options, step_observer, true,
-                                       &whole);
+                                       &whole, refined.rows() > 0 ? &refined : nullptr);
 }
 
 // What the group's fairing did, in the report of one of its holes (`flowed`: the flow's result).
@@ -253,6 +262,8 @@ void report_fairing(const FairRegionReport& fairing, bool flowed, HoleReport& r)
   r.held_out_flow_error = fairing.held_out_flow_error;
   r.held_out_linear_error = fairing.held_out_linear_error;
   r.held_out_two_ring_flow_error = fairing.held_out_two_ring_flow_error;
+  r.held_out_refined_linear_error = fairing.held_out_refined_linear_error;
+  r.refined_start = fairing.refined_start;
   r.two_ring_boundary_fits = flowed && fairing.two_ring_boundary_fits;
   r.steps = flowed ? fairing.flow.accepted_steps : 0;
   r.harmonic_solves = fairing.harmonic.iterations;

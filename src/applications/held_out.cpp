@@ -78,7 +78,8 @@ double flow_held_out_error(const Mesh& mesh, const Topology& topo, const std::ve
 
 }  // namespace
 
-HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int rings, const FairRegionOptions& fairing) {
+HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int rings, const FairRegionOptions& fairing,
+                              const Vertices* refined) {
   const std::vector<int> free = k_ring(topo, sub.free_local, rings);
   std::vector<int> held_out;
   std::set_difference(free.begin(), free.end(), sub.free_local.begin(), sub.free_local.end(),
@@ -91,6 +92,7 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
   } catch (const Error&) {
     errors.flow = errors.linear = std::numeric_limits<double>::infinity();
     if (weigh_two_ring) errors.two_ring_flow = errors.flow;
+    if (refined) errors.refined_linear = errors.flow;
     return errors;
   }
   const Vertices normal = vertex_normals(sub.mesh.V, sub.mesh.F);
@@ -114,6 +116,19 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
     FairRegionOptions two_ring = flow;
     two_ring.flow.two_ring_boundary_fits = true;
     errors.two_ring_flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, two_ring, linear);
+  }
+  if (refined) {
+    FairRegionOptions once = harmonic;
+    once.harmonic_start_iterations = 1;
+    Mesh trial;
+    trial.V = *refined;
+    trial.F = sub.mesh.F;
+    errors.refined_linear = std::numeric_limits<double>::infinity();
+    try {
+      fair_valid_mesh(trial, topo, free, once, {}, false);
+      errors.refined_linear = held_out_distance(trial, sub.mesh, held_out, normal, edge);
+    } catch (const Error&) {
+    }
   }
   return errors;
 }

@@ -18,6 +18,9 @@ struct HeldOutErrors {
   /// FairRegionOptions::held_out_two_ring_fits: the flow with FlowOptions::two_ring_boundary_fits;
   /// NaN when not weighed.
   double two_ring_flow = std::numeric_limits<double>::quiet_NaN();
+  /// One ∆^k solve from other positions of the free vertices (fill: the patch before its membrane);
+  /// NaN when none were given.
+  double refined_linear = std::numeric_limits<double>::quiet_NaN();
   /// Of the flow's trial on the enlarged region (its report's, or its error's when the flow threw).
   WellPosedness flow_well_posedness;
 };
@@ -26,9 +29,11 @@ struct HeldOutErrors {
 /// larger region with `fairing` (the flow with its linear floor; held_out_rings ignored), with the
 /// same flow on 2-ring boundary fits where fairing.held_out_two_ring_fits asks, and with its
 /// linear ∆^k solution alone, and measures how far each moved the held-out vertices off the input's
-/// tangent planes there.
+/// tangent planes there. `refined`, if given (#V of sub.mesh by 3, differing from it at the free
+/// vertices only), is weighed too: one ∆^k solve from those positions.
 /// `local`: the connectivity of sub.mesh.
-HeldOutErrors held_out_errors(const Submesh& sub, const Topology& local, int rings, const FairRegionOptions& fairing);
+HeldOutErrors held_out_errors(const Submesh& sub, const Topology& local, int rings, const FairRegionOptions& fairing,
+                              const Vertices* refined = nullptr);
 
 /// fair_region on a mesh that has passed its validation, with `topo` the connectivity of mesh.F.
 /// `measure`: measure report.continuity (a trial whose report is discarded skips it). `whole`, if
@@ -47,8 +52,10 @@ FairRegionReport fair_valid_mesh_from(Mesh& mesh, const Topology& topo, std::spa
 
 /// fair_valid_mesh after require_valid(validate(mesh, topo)): fair_region(mesh, topo, ...) with
 /// fair_valid_mesh's further arguments.
+/// `refined` (fill): other positions of mesh's free vertices (#V by 3, equal elsewhere), from which
+/// one ∆^k solve is a further candidate of the held-out choice (FairRegionReport::refined_start).
 FairRegionReport fair_checked_mesh(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                                    const FairRegionOptions& options, const FlowObserver& observer = {},
-                                   bool measure = true, bool* whole = nullptr);
+                                   bool measure = true, bool* whole = nullptr, const Vertices* refined = nullptr);
 
 }  // namespace fairsurf::fair_detail

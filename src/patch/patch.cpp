@@ -26,9 +26,13 @@ void refine_and_relax(const Vertices& V, const Faces& F, const Faces& patch, con
   out.first_patch_face = out.refinement.first_patch_face;
   // The patched mesh's connectivity, built once: the membrane reads it here, the caller's fairing later.
   out.topology = build_topology(out.mesh.F, out.mesh.num_vertices());
-  if (options.relax && !out.free_vertices.empty())
+  if (options.relax && !out.free_vertices.empty()) {
+    out.refined_free.resize(static_cast<Eigen::Index>(out.free_vertices.size()), 3);
+    for (std::size_t k = 0; k < out.free_vertices.size(); ++k)
+      out.refined_free.row(static_cast<Eigen::Index>(k)) = out.mesh.V.row(out.free_vertices[k]);
     out.membrane = relax_membrane(out.mesh.V, out.mesh.F, out.topology, out.free_vertices, options.membrane,
                                   options.solver);
+  }
 }
 
 // The largest angle between the normals of a patch face and the mesh face across a border edge.

@@ -106,6 +106,11 @@ struct FairRegionReport {
   double held_out_linear_error = std::numeric_limits<double>::quiet_NaN();
   /// held_out_two_ring_fits: the same after the flow with its boundary data fitted over 2-rings.
   double held_out_two_ring_flow_error = std::numeric_limits<double>::quiet_NaN();
+  /// Fill only: the same for one ∆^k solve from the patch as refinement left it, before the
+  /// membrane (InitialPatch::refined_free); NaN when not weighed.
+  double held_out_refined_linear_error = std::numeric_limits<double>::quiet_NaN();
+  /// Fill only: the delivered linear solution is that one (report.linear is then true too).
+  bool refined_start = false;
   /// The flow ran with FlowOptions::two_ring_boundary_fits (given, or chosen by the held-out rings).
   bool two_ring_boundary_fits = false;
   ContinuityMeasure continuity;                ///< measured after fairing

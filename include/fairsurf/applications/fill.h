@@ -102,6 +102,10 @@ struct HoleReport {
   double held_out_linear_error = std::numeric_limits<double>::quiet_NaN();
   /// FairRegionOptions::held_out_two_ring_fits: the same after the flow on 2-ring boundary fits.
   double held_out_two_ring_flow_error = std::numeric_limits<double>::quiet_NaN();
+  /// Of one ∆^k solve from the patch before its membrane (FairRegionReport's).
+  double held_out_refined_linear_error = std::numeric_limits<double>::quiet_NaN();
+  /// The delivered linear solution is that one (FairRegionReport::refined_start).
+  bool refined_start = false;
   /// The delivered flow read its boundary data from 2-ring fits (FlowOptions::two_ring_boundary_fits).
   bool two_ring_boundary_fits = false;
   /// Why `supported` is below `requested` (too few complete rings around the hole, or a failed

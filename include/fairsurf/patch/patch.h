@@ -41,6 +41,9 @@ struct InitialPatch {
   Tube tube;                       ///< tube_patch: the unrefined tube (faces and ring vertices)
   RefinedPatch refinement;         ///< split/flip figures (its V and F are moved into mesh)
   MembraneReport membrane;         ///< empty when not relaxed or when the patch has no interior vertex
+  /// #free_vertices by 3: where refinement left the free vertices, before the membrane moved them
+  /// (rows in free_vertices order); empty when not relaxed. Fill weighs one ∆^k solve from there.
+  Vertices refined_free;
   /// hole_patch: the largest angle (radians) between the normals of a patch face and the mesh face
   /// across a border edge, on the final patch. Above π/2 the patch is folded against the mesh
   /// there: a refinement flip never folds a border triangle so (patch_refinement.h), but the
