@@ -193,15 +193,23 @@ void fair_submesh(Submesh& sub, const Topology& local, const Region& region, con
   harmonic.solver = options.harmonic_solver;
   harmonic.iterations = std::max(1, options.harmonic_start_iterations);
   harmonic.tolerance = options.harmonic_start_tolerance;
-  const HeldOutChoice choice = options.method == FairMethod::harmonic
-                                   ? HeldOutChoice::linear
-                                   : choose_by_held_out(sub, local, options, report, refined);
+  HeldOutChoice choice = options.method == FairMethod::harmonic
+                             ? HeldOutChoice::linear
+                             : choose_by_held_out(sub, local, options, report, refined);
   if (choice == HeldOutChoice::refined_linear) {
-    sub.mesh.V = *refined;
-    harmonic.iterations = 1;
-    report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, local, region, harmonic);
-    report.linear = report.refined_start = true;
-    return;
+    HarmonicOptions once = harmonic;
+    once.iterations = 1;
+    Vertices V = *refined;
+    try {
+      report.harmonic = harmonic_fair(V, sub.mesh.F, local, region, once);
+      sub.mesh.V = std::move(V);
+      report.linear = report.refined_start = true;
+      return;
+    } catch (const NumericalError& e) {
+      // Solved on the enlarged region, not on this one: the re-evaluated floor instead.
+      report.note += std::string("; that solve failed on the region (") + e.what() + "): kept the re-evaluated one";
+      choice = HeldOutChoice::linear;
+    }
   }
   if (choice == HeldOutChoice::linear) {
     report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, local, region, harmonic);

@@ -128,6 +128,7 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
       fair_valid_mesh(trial, topo, free, once, {}, false);
       errors.refined_linear = held_out_distance(trial, sub.mesh, held_out, normal, edge);
     } catch (const Error&) {
+      // A solve that fails from there (∞) is simply not a candidate.
     }
   }
   return errors;
