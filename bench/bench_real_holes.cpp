@@ -1,4 +1,3 @@
-#include <cstdlib>
 // Real holes (issue #11): fairsurf's fill, fair and blend on holes cut out of clean closed meshes,
 // measured against the uncut surface and, when CMake finds CGAL, against CGAL 5.5's
 // triangulate_refine_and_fair_hole and fair at fairing_continuity(2). The protocol and every column
@@ -146,10 +145,7 @@ void fill_ours(const Mesh& cut, const Truth& truth, double h, Row& row) {
   // starts from it and sets continuity G2, method flow, f = H: the defaults).
   const auto start = Clock::now();
   try {
-    FillOptions o;
-    if (std::getenv("FS_NORELAX")) o.patch.relax = false;
-    if (std::getenv("FS_ONESOLVE")) o.harmonic_start_iterations = 1;
-    const FillReport report = run_fill(cut, o, truth, h, row.ours);
+    const FillReport report = run_fill(cut, FillOptions{}, truth, h, row.ours);
     row.continuity = continuity_text(report);
     row.seconds = report.seconds;
     row.status = report.failed > 0 ? "failed" : "ok";
@@ -172,8 +168,6 @@ void fill_ours(const Mesh& cut, const Truth& truth, double h, Row& row) {
 void fill_baseline(const Mesh& cut, const Truth& truth, double h, Row& row) {
   FillOptions options;
   options.method = FairMethod::harmonic;  // cotangent ∆³ at G2
-  if (std::getenv("FS_NORELAX")) options.patch.relax = false;
-  if (std::getenv("FS_ONESOLVE")) options.harmonic_start_iterations = 1;
   try {
     const FillReport report = run_fill(cut, options, truth, h, row.baseline);
     row.has_baseline = report.failed == 0;

@@ -1,6 +1,5 @@
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/patch/patch_refinement.h>
-#include <cstdlib>
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
@@ -71,8 +70,7 @@ class Refiner {
       report.splits += splits;
       flip_until_delaunay();
     }
-    const int sweeps = std::getenv("FS_NO_TANGENTIAL") ? 0 : options_.relaxation_sweeps;
-    for (int sweep = 0; sweep < sweeps; ++sweep) {
+    for (int sweep = 0; sweep < options_.relaxation_sweeps; ++sweep) {
       relax_tangentially();
       flip_until_delaunay();
     }
@@ -145,19 +143,6 @@ class Refiner {
   void mesh_edges_between_patch_vertices(const Vertices& V, const Faces& F) {
     std::vector<int> local(num_input_vertices_, -1);
     for (int i = 0; i < static_cast<int>(global_.size()); ++i) local[global_[i]] = i;
-    mesh_edge_sum_.assign(global_.size(), 0.0);
-    mesh_edge_count_.assign(global_.size(), 0);
-    {
-      std::unordered_set<long long> seen;
-      for (int f = 0; f < F.rows(); ++f)
-        for (int k = 0; k < 3; ++k) {
-          const int u = F(f, k), w = F(f, (k + 1) % 3);
-          if (local[u] < 0 && local[w] < 0) continue;
-          if (!seen.insert(undirected_key(u, w)).second) continue;
-          const double len = (V.row(u) - V.row(w)).norm();
-          for (int x : {u, w}) if (local[x] >= 0) mesh_edge_sum_[local[x]] += len, ++mesh_edge_count_[local[x]];
-        }
-    }
     for (int f = 0; f < F.rows(); ++f)
       for (int k = 0; k < 3; ++k) {
         const int a = local[F(f, k)], b = local[F(f, (k + 1) % 3)];
@@ -198,8 +183,6 @@ class Refiner {
         if (!border || mesh_.is_boundary(mesh_.edge_handle(heh)))
           sum += mesh_.calc_edge_length(heh), ++count;
       scale_[vh.idx()] = sum / std::max(1, count);
-      if (border && std::getenv("FS_CGAL_SIGMA") && mesh_edge_count_[vh.idx()] > 0)
-        scale_[vh.idx()] = mesh_edge_sum_[vh.idx()] / mesh_edge_count_[vh.idx()];
     }
   }
 
@@ -311,8 +294,6 @@ class Refiner {
   std::unordered_set<long long> outside_edges_;  // mesh edges between input patch vertices (local)
   std::unordered_map<long long, Vec> outside_normals_;  // per directed such edge: its mesh face's normal
   int flips_ = 0;
-  std::vector<double> mesh_edge_sum_;
-  std::vector<int> mesh_edge_count_;
 };
 
 }  // namespace
