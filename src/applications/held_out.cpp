@@ -45,27 +45,45 @@ double held_out_distance(const Mesh& trial, const Mesh& input, const std::vector
   return sum / static_cast<double>(held_out.size()) / edge;
 }
 
-// The trials share the ∆^k solution on the enlarged region: the linear trial solves it, and the flow
-// trials, which start from it, take it from there instead of solving it again.
+// A ∆^k solution of the enlarged region and how far it puts the held-out vertices. The flow trials
+// start from the linear trial's instead of solving it again.
 struct LinearTrial {
-  Mesh solved;  ///< the input with the free vertices at the ∆^k solution
+  Mesh solved;  ///< the trial's start with the free vertices at the ∆^k solution
   HarmonicReport report;
+  double error = std::numeric_limits<double>::infinity();  ///< ∞ where the solve failed
   bool ok = false;
 };
 
+// Fairs the region `free` of `start` with `harmonic` (the linear method) and measures it against
+// `input`. A solve that fails is no candidate (error ∞); a flow trial from the same start meets the
+// same failure in its own start and says so.
+// `topo`: the connectivity of `input`, shared by the trial (only positions change).
+LinearTrial linear_trial(Mesh start, const Mesh& input, const Topology& topo, const std::vector<int>& free,
+                         const std::vector<int>& held_out, const Vertices& normal, double edge,
+                         const FairRegionOptions& harmonic) {
+  LinearTrial trial{std::move(start), {}};
+  try {
+    trial.report = fair_valid_mesh(trial.solved, topo, free, harmonic, {}, false).harmonic;
+    trial.ok = true;
+    trial.error = held_out_distance(trial.solved, input, held_out, normal, edge);
+  } catch (const Error&) {
+  }
+  return trial;
+}
+
 // Mean |(x − x0)·n0| over `held_out` after fairing the region `free` of a copy of `mesh` with
-// `fairing` (the flow), from `linear`'s solution where it has one.
+// `fairing` (the flow), from `start`'s solution where one is given.
 // `topo`: the connectivity of `mesh`, shared by the trial copy (only positions change).
 double flow_held_out_error(const Mesh& mesh, const Topology& topo, const std::vector<int>& free,
                            const std::vector<int>& held_out, const Vertices& normal, double edge,
-                           const FairRegionOptions& fairing, const LinearTrial& linear,
+                           const FairRegionOptions& fairing, const LinearTrial* start,
                            WellPosedness* well_posedness = nullptr) {
-  Mesh trial = linear.ok ? linear.solved : mesh;
+  Mesh trial = start ? start->solved : mesh;
   try {
     // As fair_region(trial, free, fairing) on a mesh held_out_errors validated, without rebuilding
     // the connectivity or measuring the continuity of a result that is discarded.
-    const FairRegionReport report = linear.ok ? fair_valid_mesh_from(trial, topo, free, fairing, linear.report)
-                                              : fair_valid_mesh(trial, topo, free, fairing, {}, false);
+    const FairRegionReport report = start ? fair_valid_mesh_from(trial, topo, free, fairing, start->report)
+                                          : fair_valid_mesh(trial, topo, free, fairing, {}, false);
     if (well_posedness) *well_posedness = report.flow.well_posedness;
     if (report.linear) return std::numeric_limits<double>::infinity();
   } catch (const Error& e) {
@@ -101,35 +119,24 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
   flow.held_out_rings = 0;
   FairRegionOptions harmonic = flow;
   harmonic.method = FairMethod::harmonic;
-  LinearTrial linear{sub.mesh, {}, false};
-  errors.linear = std::numeric_limits<double>::infinity();
-  try {
-    linear.report = fair_valid_mesh(linear.solved, topo, free, harmonic, {}, false).harmonic;
-    linear.ok = flow.harmonic_start_iterations > 0;  // else the flow trials start from the input
-    errors.linear = held_out_distance(linear.solved, sub.mesh, held_out, normal, edge);
-  } catch (const Error&) {
-    // No linear solution: the flow trials meet the same failure in their own start and say so.
-  }
-  errors.flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, flow, linear,
+  const LinearTrial linear = linear_trial(sub.mesh, sub.mesh, topo, free, held_out, normal, edge, harmonic);
+  errors.linear = linear.error;
+  // The flow trials start from it (or, without a harmonic start, from the input).
+  const LinearTrial* start = linear.ok && flow.harmonic_start_iterations > 0 ? &linear : nullptr;
+  errors.flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, flow, start,
                                     &errors.flow_well_posedness);
   if (weigh_two_ring) {
     FairRegionOptions two_ring = flow;
     two_ring.flow.two_ring_boundary_fits = true;
-    errors.two_ring_flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, two_ring, linear);
+    errors.two_ring_flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, two_ring, start);
   }
   if (refined) {
     FairRegionOptions once = harmonic;
     once.harmonic_start_iterations = 1;
-    Mesh trial;
-    trial.V = *refined;
-    trial.F = sub.mesh.F;
-    errors.refined_linear = std::numeric_limits<double>::infinity();
-    try {
-      fair_valid_mesh(trial, topo, free, once, {}, false);
-      errors.refined_linear = held_out_distance(trial, sub.mesh, held_out, normal, edge);
-    } catch (const Error&) {
-      // A solve that fails from there (∞) is simply not a candidate.
-    }
+    Mesh from;
+    from.V = *refined;
+    from.F = sub.mesh.F;
+    errors.refined_linear = linear_trial(std::move(from), sub.mesh, topo, free, held_out, normal, edge, once).error;
   }
   return errors;
 }
