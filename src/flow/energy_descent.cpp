@@ -18,8 +18,6 @@ void build_pattern(const FlowProblem& problem, const SparseRowMatrix& P, GaussNe
   GaussNewtonPattern& pattern = model.pattern;
   pattern = GaussNewtonPattern{};
   pattern.num_vertices = n;
-  pattern.free_index.assign(n, -1);
-  for (int k = 0; k < num_free; ++k) pattern.free_index[region.free_vertices[k]] = k;
   const int* outer = P.outerIndexPtr();
   const int* inner = P.innerIndexPtr();
   pattern.support_offsets.push_back(0);
@@ -30,7 +28,7 @@ void build_pattern(const FlowProblem& problem, const SparseRowMatrix& P, GaussNe
     row.clear();
     for (int p = outer[r]; p < outer[r + 1]; ++p)
       for (int q = outer[inner[p]]; q < outer[inner[p] + 1]; ++q)
-        if (const int f = pattern.free_index[inner[q]]; f >= 0) row.push_back(f);
+        if (const int f = region.free_index[inner[q]]; f >= 0) row.push_back(f);
     std::sort(row.begin(), row.end());
     row.erase(std::unique(row.begin(), row.end()), row.end());
     if (row.empty()) continue;
@@ -117,7 +115,7 @@ void assemble_gauss_newton(const FlowProblem& problem, const FlowState& state, G
         const int k = inner[p];
         const double g0 = G[0][p], g1 = G[1][p], g2 = G[2][p];
         for (int q = outer[k]; q < outer[k + 1]; ++q) {
-          const int f = pattern.free_index[inner[q]];
+          const int f = region.free_index[inner[q]];
           if (f < 0) continue;
           const int j = model.slot[f];
           b[j] += g0 * model.q[q];

@@ -11,6 +11,16 @@
 
 namespace fairsurf::flow_detail {
 
+/// What assembling the model needs of the connectivity, found once per run (the operators'
+/// shared pattern P and the region are fixed while the connectivity is): row r of B_lc is
+/// supported on the free vertices S_r = ∪_{k ∈ P(r)} P(k) ∩ F, and N on ∪_r S_r × S_r.
+struct GaussNewtonPattern {
+  int num_vertices = -1;            ///< #V it was built for (-1: not built)
+  std::vector<int> rows;            ///< the watched rows r (energy_weight > 0)
+  std::vector<int> support_offsets; ///< #rows + 1, into support
+  std::vector<int> support;         ///< S_r per watched row, ascending free indices
+};
+
 /// The watched energy E = Σ_i w_i A_i Σ_l ‖(∇f_l)_i‖² with fits, stencils, normals and areas frozen
 /// at the state and f_l linearized in the normal displacement d of the free vertices
 /// (f_l + Q_l d, Q_l = ½ diag(f_H) A_H + diag(f_K) A_K, flow.h):
@@ -18,17 +28,6 @@ namespace fairsurf::flow_detail {
 /// with B_lc = G_c Q_l restricted to the free columns. N is symmetric positive semi-definite and g
 /// is the gradient of E through f — consistent with the discrete energy by construction, where the
 /// fitted EL of method.md §5 is only consistent with it to the order of the discretization.
-/// What assembling the model needs of the connectivity, found once per run (the operators'
-/// shared pattern P and the region are fixed while the connectivity is): row r of B_lc is
-/// supported on the free vertices S_r = ∪_{k ∈ P(r)} P(k) ∩ F, and N on ∪_r S_r × S_r.
-struct GaussNewtonPattern {
-  int num_vertices = -1;            ///< #V it was built for (-1: not built)
-  std::vector<int> free_index;      ///< #V: index among the free vertices, or -1
-  std::vector<int> rows;            ///< the watched rows r (energy_weight > 0)
-  std::vector<int> support_offsets; ///< #rows + 1, into support
-  std::vector<int> support;         ///< S_r per watched row, ascending free indices
-};
-
 struct GaussNewtonModel {
   SparseRowMatrix normal;    ///< N, #F by #F, symmetric, every diagonal entry stored
   Eigen::VectorXd gradient;  ///< g, #F (half the derivative of E in d)
