@@ -93,20 +93,14 @@ void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& regi
                 " solution it started from";
 }
 
-// Fill's solve from the patch before its membrane is taken only where it re-predicts the held-out
-// rings this many times better than every other candidate. Between candidates whose truth distances
-// are close the held-out verdict is a coin toss, and this one is no better on average; where the
-// membrane creases a patch (blub's tail fin) it wins by 3-4× and lands 3× closer to the surface
-// (docs/fill.md, "The patch before its membrane").
-constexpr double kRefinedStartMargin = 2.0;
-
 // The fairing the held-out rings choose (FairRegionOptions::held_out_rings).
 enum class HeldOutChoice { flow, two_ring_flow, linear, refined_linear };
 
 // FairRegionOptions::held_out_rings: whichever of the flow as given, the flow with its boundary data
 // fitted over 2-rings (held_out_two_ring_fits) and the linear ∆^k solution re-predicts the held-out
 // rings best, with the reason in report.note where it is not the flow as given. Ties keep the flow.
-// `refined` (fill): one ∆^k solve from these positions of the free vertices is weighed too.
+// `refined` (fill): one ∆^k solve from these positions of the free vertices is weighed first, and
+// taken where it beats the re-evaluated solution by kRefinedStartMargin (the flows are then not tried).
 HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, const FairRegionOptions& options,
                                  FairRegionReport& report, const Vertices* refined) {
   if (options.method != FairMethod::flow || !options.linear_floor || options.held_out_rings <= 0 ||
@@ -118,21 +112,20 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
   report.held_out_two_ring_flow_error = errors.two_ring_flow;
   report.held_out_linear_error = errors.linear;
   report.held_out_refined_linear_error = errors.refined_linear;
-  const bool two_ring = errors.two_ring_flow < errors.flow;  // false for NaN (not weighed)
-  const double best_flow = two_ring ? errors.two_ring_flow : errors.flow;
   const char* flow_name = to_string(flow_for(report.supported));
   const int order = static_cast<int>(report.supported) + 1;
   char text[320];
-  if (kRefinedStartMargin * errors.refined_linear < std::min(errors.linear, best_flow)) {  // false for NaN
-    report.flow.well_posedness = errors.flow_well_posedness;
+  if (errors.refined_start_wins()) {
     std::snprintf(text, sizeof text,
                   "one linear ∆%d solve from the patch before its membrane re-predicts the %d rings around the "
-                  "region best (%.3g mean edges off the input, against %.3g for the re-evaluated ∆%d solution "
-                  "and %.3g for the %s flow)",
-                  order, options.held_out_rings, errors.refined_linear, errors.linear, order, best_flow, flow_name);
+                  "region more than twice as well as the re-evaluated ∆%d solution the %s flow starts from "
+                  "(%.3g against %.3g mean edges off the input); the flow was not tried",
+                  order, options.held_out_rings, order, flow_name, errors.refined_linear, errors.linear);
     report.note = text;
     return HeldOutChoice::refined_linear;
   }
+  const bool two_ring = errors.two_ring_flow < errors.flow;  // false for NaN (not weighed)
+  const double best_flow = two_ring ? errors.two_ring_flow : errors.flow;
   if (errors.linear < best_flow) {
     report.flow.well_posedness = errors.flow_well_posedness;  // the flow that was weighed, not run here
     std::snprintf(text, sizeof text,

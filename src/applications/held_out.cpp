@@ -121,6 +121,19 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
   harmonic.method = FairMethod::harmonic;
   const LinearTrial linear = linear_trial(sub.mesh, sub.mesh, topo, free, held_out, normal, edge, harmonic);
   errors.linear = linear.error;
+  if (refined) {
+    FairRegionOptions once = harmonic;
+    once.harmonic_start_iterations = 1;
+    Mesh from;
+    from.V = *refined;
+    from.F = sub.mesh.F;
+    errors.refined_linear = linear_trial(std::move(from), sub.mesh, topo, free, held_out, normal, edge, once).error;
+    if (errors.refined_start_wins()) {  // the flows would start from the solution it beats
+      errors.flow = std::numeric_limits<double>::quiet_NaN();
+      if (weigh_two_ring) errors.two_ring_flow = errors.flow;
+      return errors;
+    }
+  }
   // The flow trials start from it (or, without a harmonic start, from the input).
   const LinearTrial* start = linear.ok && flow.harmonic_start_iterations > 0 ? &linear : nullptr;
   errors.flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, flow, start,
@@ -129,14 +142,6 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
     FairRegionOptions two_ring = flow;
     two_ring.flow.two_ring_boundary_fits = true;
     errors.two_ring_flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, two_ring, start);
-  }
-  if (refined) {
-    FairRegionOptions once = harmonic;
-    once.harmonic_start_iterations = 1;
-    Mesh from;
-    from.V = *refined;
-    from.F = sub.mesh.F;
-    errors.refined_linear = linear_trial(std::move(from), sub.mesh, topo, free, held_out, normal, edge, once).error;
   }
   return errors;
 }

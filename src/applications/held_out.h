@@ -10,9 +10,18 @@
 
 namespace fairsurf::fair_detail {
 
+/// Fill's solve from the patch before its membrane is taken where it re-predicts the held-out rings
+/// this many times better than the re-evaluated ∆^k solution, which the flows start from; the flows
+/// are then not tried. Between candidates whose truth distances are close the held-out verdict is a
+/// coin toss, and this one is no better on average; where the membrane creases a patch (blub's tail
+/// fin) it wins by 3-4× and lands 3× closer to the surface, while flows from the creased start crawl
+/// at τ ≈ 1e-18 for seconds (docs/fill.md, "The patch before its membrane").
+inline constexpr double kRefinedStartMargin = 2.0;
+
 /// Mean normal distance of the held-out input vertices from where each fairing puts them, in units
 /// of the mean edge length at those vertices. ∞ when that fairing failed.
 struct HeldOutErrors {
+  /// NaN when not weighed: refined_start_wins().
   double flow = 0;
   double linear = 0;
   /// FairRegionOptions::held_out_two_ring_fits: the flow with FlowOptions::two_ring_boundary_fits;
@@ -23,6 +32,10 @@ struct HeldOutErrors {
   double refined_linear = std::numeric_limits<double>::quiet_NaN();
   /// Of the flow's trial on the enlarged region (its report's, or its error's when the flow threw).
   WellPosedness flow_well_posedness;
+
+  /// The solve from the other positions beats the re-evaluated one by kRefinedStartMargin (false
+  /// when there was none).
+  bool refined_start_wins() const { return kRefinedStartMargin * refined_linear < linear; }
 };
 
 /// Frees the `rings` rings of fixed vertices around the free vertices in a copy of `sub`, fairs that
@@ -30,7 +43,8 @@ struct HeldOutErrors {
 /// same flow on 2-ring boundary fits where fairing.held_out_two_ring_fits asks, and with its
 /// linear ∆^k solution alone, and measures how far each moved the held-out vertices off the input's
 /// tangent planes there. `refined`, if given (#V of sub.mesh by 3, differing from it at the free
-/// vertices only), is weighed too: one ∆^k solve from those positions.
+/// vertices only), is weighed too, before the flows: one ∆^k solve from those positions; where it
+/// wins (HeldOutErrors::refined_start_wins) the flows are not tried.
 /// `local`: the connectivity of sub.mesh.
 HeldOutErrors held_out_errors(const Submesh& sub, const Topology& local, int rings, const FairRegionOptions& fairing,
                               const Vertices* refined = nullptr);

@@ -76,16 +76,23 @@ TEST_P(RealHoles, FilledWatertightAndNeverAFlowThatPredictsWorseThanTheLinearFlo
   EXPECT_TRUE(filled.V.topRows(cut.num_vertices()) == cut.V) << "an input vertex moved";
 
   // The decision is the held-out one among four fairings, and the label says which was delivered:
-  // the solve from the patch before its membrane only on a verdict twice as clear as the others'.
+  // the solve from the patch before its membrane where it beats the re-evaluated ∆³ solution twice
+  // over (the flows, which start from that solution, are then not tried), else the best of the rest.
   ASSERT_TRUE(std::isfinite(hole.held_out_linear_error));
-  ASSERT_FALSE(std::isnan(hole.held_out_two_ring_flow_error));
   ASSERT_FALSE(std::isnan(hole.held_out_refined_linear_error));
-  const double best_flow = std::min(hole.held_out_flow_error, hole.held_out_two_ring_flow_error);
-  const bool refined = 2 * hole.held_out_refined_linear_error < std::min(hole.held_out_linear_error, best_flow);
+  const bool refined = 2 * hole.held_out_refined_linear_error < hole.held_out_linear_error;
   EXPECT_EQ(hole.refined_start, refined) << hole.note;
-  EXPECT_EQ(hole.linear, refined || hole.held_out_linear_error < best_flow) << hole.note;
-  EXPECT_EQ(hole.two_ring_boundary_fits,
-            !hole.linear && hole.held_out_two_ring_flow_error < hole.held_out_flow_error) << hole.note;
+  if (refined) {
+    EXPECT_TRUE(hole.linear) << hole.note;
+    EXPECT_TRUE(std::isnan(hole.held_out_flow_error) && std::isnan(hole.held_out_two_ring_flow_error)) << hole.note;
+  } else {
+    ASSERT_FALSE(std::isnan(hole.held_out_flow_error));
+    ASSERT_FALSE(std::isnan(hole.held_out_two_ring_flow_error));
+    const double best_flow = std::min(hole.held_out_flow_error, hole.held_out_two_ring_flow_error);
+    EXPECT_EQ(hole.linear, hole.held_out_linear_error < best_flow) << hole.note;
+    EXPECT_EQ(hole.two_ring_boundary_fits,
+              !hole.linear && hole.held_out_two_ring_flow_error < hole.held_out_flow_error) << hole.note;
+  }
   if (hole.linear && !hole.refined_start) {
     EXPECT_TRUE(filled.V == r.floor.V) << "the linear result is not the floor";
   }
@@ -107,7 +114,8 @@ INSTANTIATE_TEST_SUITE_P(Data, RealHoles,
 // distance): the membrane flattens the patch against the fin's two sheets, and both the ∆³ solution
 // re-evaluated from it and the flow stay far from the fin's edge. One ∆³ solve from the patch as
 // refinement left it re-predicts the held-out rings three times better, is delivered, and lands
-// far closer to the uncut surface.
+// far closer to the uncut surface. The flows, which would start from the re-evaluated solution, are
+// not tried.
 TEST(RealHoleTailFin, OneSolveFromThePatchBeforeItsMembraneIsChosenAndLandsCloser) {
   const Mesh truth = read_mesh(test::data_path("blub.obj"));
   const double h = test::mean_edge_length(truth);
@@ -121,11 +129,12 @@ TEST(RealHoleTailFin, OneSolveFromThePatchBeforeItsMembraneIsChosenAndLandsClose
   EXPECT_EQ(delivered_label(hole.supported, hole.linear), "C2 (linear)");
   EXPECT_EQ(hole.harmonic_solves, 1);
   EXPECT_LT(2 * hole.held_out_refined_linear_error, hole.held_out_linear_error);
-  EXPECT_LT(2 * hole.held_out_refined_linear_error, std::min(hole.held_out_flow_error, hole.held_out_two_ring_flow_error));
-  std::printf("[tail fin] blub 4h: held out refined %.3g, re-evaluated linear %.3g, flow %.3g; mean distance %.3f h "
+  EXPECT_TRUE(std::isnan(hole.held_out_flow_error)) << "a flow was tried";
+  EXPECT_TRUE(std::isnan(hole.held_out_two_ring_flow_error)) << "a flow was tried";
+  EXPECT_NE(hole.note.find("the flow was not tried"), std::string::npos) << hole.note;
+  std::printf("[tail fin] blub 4h: held out refined %.3g, re-evaluated linear %.3g; mean distance %.3f h "
               "(re-evaluated linear %.3f h)\n",
-              hole.held_out_refined_linear_error, hole.held_out_linear_error, hole.held_out_flow_error, r.distance,
-              r.floor_distance);
+              hole.held_out_refined_linear_error, hole.held_out_linear_error, r.distance, r.floor_distance);
   EXPECT_LT(r.distance, 0.5 * r.floor_distance);
   EXPECT_TRUE(validate(r.filled).manifold());
 }

@@ -101,15 +101,18 @@ struct FairRegionReport {
   bool linear = false;
   std::string note;
   /// held_out_rings: mean normal distance of the held-out vertices from the input after the flow and
-  /// after the linear solution, in mean edge lengths (∞: that fairing failed; NaN: not measured).
+  /// after the linear solution, in mean edge lengths (∞: that fairing failed; NaN: not measured, as
+  /// for the flows of a fill hole whose refined_start won before they were tried).
   double held_out_flow_error = std::numeric_limits<double>::quiet_NaN();
   double held_out_linear_error = std::numeric_limits<double>::quiet_NaN();
   /// held_out_two_ring_fits: the same after the flow with its boundary data fitted over 2-rings.
   double held_out_two_ring_flow_error = std::numeric_limits<double>::quiet_NaN();
   /// Fill only: the same for one ∆^k solve from the patch as refinement left it, before the
-  /// membrane (InitialPatch::refined_free); NaN when not weighed.
+  /// membrane (InitialPatch::refined_free); NaN when not weighed. It is weighed before the flows.
   double held_out_refined_linear_error = std::numeric_limits<double>::quiet_NaN();
-  /// Fill only: the delivered linear solution is that one (report.linear is then true too).
+  /// Fill only: the delivered linear solution is that one (report.linear is then true too), taken
+  /// where its held-out error is under half the re-evaluated linear solution's, from which the
+  /// flows start; they are then not tried (their errors NaN).
   bool refined_start = false;
   /// The flow ran with FlowOptions::two_ring_boundary_fits (given, or chosen by the held-out rings).
   bool two_ring_boundary_fits = false;

@@ -97,7 +97,7 @@ struct HoleReport {
   bool linear = false;
   /// FairRegionOptions::held_out_rings: mean normal distance of the held-out rings from the input after
   /// the flow and after the linear solution, in mean edge lengths (∞: that fairing failed; NaN: not
-  /// measured).
+  /// measured, as for the flows where refined_start won before they were tried).
   double held_out_flow_error = std::numeric_limits<double>::quiet_NaN();
   double held_out_linear_error = std::numeric_limits<double>::quiet_NaN();
   /// FairRegionOptions::held_out_two_ring_fits: the same after the flow on 2-ring boundary fits.
