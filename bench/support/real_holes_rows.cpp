@@ -13,7 +13,7 @@ std::string csv_escape(std::string s) {
 std::string csv_header() {
   return "section,mesh,centre,radius_h,noise_h,size,status,continuity,steps,seconds,mean_h,max_h,"
          "baseline_mean_h,baseline_max_h,cgal_mean_h,cgal_max_h,ratio,angle_deg,uncut_angle_deg,fold,"
-         "cgal_angle_deg,cgal_fold,smooth_mean_h,baseline_smooth_mean_h,cgal_smooth_mean_h,smooth_ratio,disks,new_vertices,cgal_new_vertices,note\n";
+         "cgal_angle_deg,cgal_fold,smooth_mean_h,baseline_smooth_mean_h,cgal_smooth_mean_h,smooth_ratio,disks,new_vertices,cgal_new_vertices,choice,held_out,note\n";
 }
 
 std::string number(double x, const char* format) {
@@ -40,6 +40,19 @@ void set_ratios(Row& row) {
 
 void add_note(Row& row, const std::string& note) { row.note += (row.note.empty() ? "" : "; ") + note; }
 
+void add_choice(Row& row, bool linear, bool refined_start, bool two_ring_boundary_fits, double flow_error,
+                double two_ring_flow_error, double linear_error, double refined_linear_error) {
+  const char* choice = refined_start ? "refined" : linear ? "linear" : two_ring_boundary_fits ? "2-ring flow" : "flow";
+  if (!row.choice.empty()) {
+    row.choice.push_back(',');
+    row.held_out.push_back(',');
+  }
+  row.choice.append(choice);
+  for (const double error : {flow_error, two_ring_flow_error, linear_error})
+    row.held_out.append(number(error)).push_back('/');
+  row.held_out.append(number(refined_linear_error));
+}
+
 std::string csv_line(const Row& r) {
   const auto stat = [](bool has, double x) { return has ? number(x) : std::string(); };
   return r.section + "," + r.mesh + "," + std::to_string(r.centre) + "," + std::to_string(r.radius_h) + "," +
@@ -53,7 +66,7 @@ std::string csv_line(const Row& r) {
               stat(r.ours.count > 0, r.ours.smooth_mean) + "," + stat(r.has_baseline, r.baseline.smooth_mean) + "," +
               stat(r.has_cgal, r.cgal.smooth_mean) + "," + number(r.smooth_ratio) + "," + (r.disks ? "1" : "0") +
               "," + std::to_string(r.ours.count) + "," + (r.has_cgal ? std::to_string(r.cgal.count) : std::string()) +
-              "," + csv_escape(r.note) + "\n";
+              "," + csv_escape(r.choice) + "," + csv_escape(r.held_out) + "," + csv_escape(r.note) + "\n";
 }
 
 std::string cgal_angle_text(const Row& r) {

@@ -16,6 +16,9 @@ inline constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 struct Row {
   std::string section, mesh, status, continuity, note, size;
+  // Per hole (comma-separated): which held-out candidate was delivered, and the held-out errors
+  // "flow/2-ring flow/linear/refined" in mean edges (empty where not weighed).
+  std::string choice, held_out;
   int centre = 0, radius_h = 0, steps = 0;
   double noise = 0, seconds = 0;
   DistanceStats ours, baseline, cgal;
@@ -83,6 +86,9 @@ void flag_fold(Row& row);
 /// fairsurf's mean distance over CGAL's, by both measures.
 void set_ratios(Row& row);
 void add_note(Row& row, const std::string& note);
+/// Appends one hole's (or region's) held-out decision to row.choice and row.held_out.
+void add_choice(Row& row, bool linear, bool refined_start, bool two_ring_boundary_fits, double flow_error,
+                double two_ring_flow_error, double linear_error, double refined_linear_error);
 
 /// CGAL's border angle in degrees, starred when it folds by the same rule.
 std::string cgal_angle_text(const Row& r);
