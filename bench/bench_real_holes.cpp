@@ -152,8 +152,7 @@ void fill_ours(const Mesh& cut, const Truth& truth, double h, Row& row) {
     for (const HoleReport& r : report.holes) {
       row.steps += r.steps;
       if (r.status == HoleStatus::filled)
-        add_choice(row, r.linear, r.refined_start, r.two_ring_boundary_fits, r.held_out_flow_error,
-                   r.held_out_two_ring_flow_error, r.held_out_linear_error, r.held_out_refined_linear_error);
+        add_choice(row, r);
       // A patch without interior vertex has no measure (border_vertices 0); NaN then, not 0°.
       if (r.continuity.border_vertices > 0)
         row.angle = std::isnan(row.angle) ? r.continuity.max_normal_angle
@@ -294,8 +293,7 @@ void fair_ours(const Mesh& mesh, const std::vector<int>& region, const Truth& tr
     row.seconds = report.seconds;
     row.angle = report.continuity.max_normal_angle;
     row.ours = measure(truth, faired.V, region, h);
-    add_choice(row, report.linear, report.refined_start, report.two_ring_boundary_fits, report.held_out_flow_error,
-               report.held_out_two_ring_flow_error, report.held_out_linear_error, report.held_out_refined_linear_error);
+    add_choice(row, report);
   } catch (const std::exception& e) {
     row.seconds = seconds_since(start);
     row.status = "error";

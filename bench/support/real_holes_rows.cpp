@@ -40,19 +40,6 @@ void set_ratios(Row& row) {
 
 void add_note(Row& row, const std::string& note) { row.note += (row.note.empty() ? "" : "; ") + note; }
 
-void add_choice(Row& row, bool linear, bool refined_start, bool two_ring_boundary_fits, double flow_error,
-                double two_ring_flow_error, double linear_error, double refined_linear_error) {
-  const char* choice = refined_start ? "refined" : linear ? "linear" : two_ring_boundary_fits ? "2-ring flow" : "flow";
-  if (!row.choice.empty()) {
-    row.choice.push_back(',');
-    row.held_out.push_back(',');
-  }
-  row.choice.append(choice);
-  for (const double error : {flow_error, two_ring_flow_error, linear_error})
-    row.held_out.append(number(error)).push_back('/');
-  row.held_out.append(number(refined_linear_error));
-}
-
 std::string csv_line(const Row& r) {
   const auto stat = [](bool has, double x) { return has ? number(x) : std::string(); };
   return r.section + "," + r.mesh + "," + std::to_string(r.centre) + "," + std::to_string(r.radius_h) + "," +

@@ -86,9 +86,24 @@ void flag_fold(Row& row);
 /// fairsurf's mean distance over CGAL's, by both measures.
 void set_ratios(Row& row);
 void add_note(Row& row, const std::string& note);
-/// Appends one hole's (or region's) held-out decision to row.choice and row.held_out.
-void add_choice(Row& row, bool linear, bool refined_start, bool two_ring_boundary_fits, double flow_error,
-                double two_ring_flow_error, double linear_error, double refined_linear_error);
+/// Appends one hole's (or region's) held-out decision to row.choice and row.held_out: `report` is a
+/// HoleReport or a FairRegionReport, which name these fields alike.
+template <class Report>
+void add_choice(Row& row, const Report& report) {
+  const char* choice = report.refined_start ? "refined"
+                       : report.linear      ? "linear"
+                       : report.two_ring_boundary_fits ? "2-ring flow"
+                                                       : "flow";
+  if (!row.choice.empty()) {
+    row.choice.push_back(',');
+    row.held_out.push_back(',');
+  }
+  row.choice.append(choice);
+  for (const double error : {report.held_out_flow_error, report.held_out_two_ring_flow_error,
+                             report.held_out_linear_error})
+    row.held_out.append(number(error)).push_back('/');
+  row.held_out.append(number(report.held_out_refined_linear_error));
+}
 
 /// CGAL's border angle in degrees, starred when it folds by the same rule.
 std::string cgal_angle_text(const Row& r);

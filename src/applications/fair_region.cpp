@@ -257,19 +257,17 @@ FairRegionReport fair_valid(Mesh& mesh, const Topology& topo, std::span<const in
   report.requested = options.continuity;
   report.supported = region.supported;
   report.method = options.method;
-  Vertices refined_sub;  // `refined` on the submesh's vertices
-  if (refined) {
-    if (refined->rows() != mesh.V.rows())
-      throw InvalidArgument("fair_region: the refined positions are not one row per vertex");
-    if (uncut) {
-      refined_sub = *refined;
-    } else {
-      refined_sub.resize(sub.mesh.num_vertices(), 3);
-      for (int v = 0; v < sub.mesh.num_vertices(); ++v) refined_sub.row(v) = refined->row(sub.to_global[v]);
-    }
+  // `refined` on the submesh's vertices: itself where the submesh is the whole mesh (fill's case).
+  const Vertices* refined_on_sub = uncut ? refined : nullptr;
+  Vertices refined_sub;
+  if (refined && refined->rows() != mesh.V.rows())
+    throw InvalidArgument("fair_region: the refined positions are not one row per vertex");
+  if (refined && !uncut) {
+    refined_sub.resize(sub.mesh.num_vertices(), 3);
+    for (int v = 0; v < sub.mesh.num_vertices(); ++v) refined_sub.row(v) = refined->row(sub.to_global[v]);
+    refined_on_sub = &refined_sub;
   }
-  fair_submesh(sub, local, region, options, observer, report, mesh.V, solved_start,
-               refined ? &refined_sub : nullptr);
+  fair_submesh(sub, local, region, options, observer, report, mesh.V, solved_start, refined_on_sub);
   write_back_free(sub, mesh.V);
   if (measure) report.continuity = measure_continuity(sub.mesh.V, sub.mesh.F, local, sub.free_local);
   report.seconds = detail::seconds_since(start);
