@@ -4,13 +4,16 @@
 #include "stopwatch.h"
 
 #include <fairsurf/applications/fair_region.h>
+#include <fairsurf/geometry/continuity_measure.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/submesh.h>
 #include <fairsurf/mesh/topology.h>
 #include <fairsurf/mesh/validate.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <numeric>
 #include <optional>
 
@@ -58,10 +61,33 @@ FairRegionOptions FairRegionOptions::harmonic_started() {
   o.linear_floor = true;
   o.held_out_rings = 2;
   o.held_out_two_ring_fits = true;
+  o.max_border_angle_ratio = 1.5;
   return o;
 }
 
 namespace {
+
+// The smallest border angle counted as a fold: below it the one-sided fits' own scatter on a
+// clean mesh (bench_real_holes' fold rule, issue #11).
+constexpr double kSmallestFoldAngle = 5 * std::numbers::pi / 180;
+
+// Empty, or why the flow's steady state folds against the ∆^k solution `start` it started from:
+// its max normal angle across the region's border exceeds both
+// FairRegionOptions::max_border_angle_ratio times the linear solution's and kSmallestFoldAngle.
+std::string border_fold_reason(const Submesh& sub, const Topology& local, const Vertices& start,
+                               const FairRegionOptions& options) {
+  if (std::isinf(options.max_border_angle_ratio)) return "";
+  const double flowed = measure_continuity(sub.mesh.V, sub.mesh.F, local, sub.free_local).max_normal_angle;
+  const double linear = measure_continuity(start, sub.mesh.F, local, sub.free_local).max_normal_angle;
+  if (!(flowed > std::max(options.max_border_angle_ratio * linear, kSmallestFoldAngle))) return "";
+  constexpr double kDegrees = 180 / std::numbers::pi;
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "settled, but turns the normal across the border by %.1f deg where the linear solution it "
+                "started from turns it by %.1f deg",
+                flowed * kDegrees, linear * kDegrees);
+  return text;
+}
 
 // Runs the flow on the submesh. With the linear floor (and a ∆^k start), a flow that throws or does
 // not settle leaves the ∆^k solution in place, reported linear; without it, a throw leaves the last
@@ -76,6 +102,7 @@ void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& regi
   try {
     report.flow = run_flow(sub.mesh.V, sub.mesh.F, local, region, flow, observer);
     if (report.flow.stop_reason != FlowStopReason::steady) failure = unsettled_reason(report.flow);
+    else if (floor) failure = border_fold_reason(sub, local, start, options);
   } catch (const NumericalError& e) {
     if (const auto* failure = dynamic_cast<const flow_detail::FlowFailure*>(&e))
       report.flow.well_posedness = failure->well_posedness;  // what the lost report held

@@ -117,6 +117,8 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
   const double edge = mean_edge_length(sub.mesh.V, topo, held_out);
   FairRegionOptions flow = fairing;
   flow.held_out_rings = 0;
+  // The trials are weighed by the held-out rings alone; the fold check is the delivered flow's.
+  flow.max_border_angle_ratio = std::numeric_limits<double>::infinity();
   FairRegionOptions harmonic = flow;
   harmonic.method = FairMethod::harmonic;
   const LinearTrial linear = linear_trial(sub.mesh, sub.mesh, topo, free, held_out, normal, edge, harmonic);

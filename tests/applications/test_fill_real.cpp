@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <cstdio>
 #include <string>
@@ -137,6 +138,41 @@ TEST(RealHoleTailFin, OneSolveFromThePatchBeforeItsMembraneIsChosenAndLandsClose
               hole.held_out_refined_linear_error, hole.held_out_linear_error, r.distance, r.floor_distance);
   EXPECT_LT(r.distance, 0.5 * r.floor_distance);
   EXPECT_TRUE(validate(r.filled).manifold());
+}
+
+// A raw scan (data/hammer_rawscan.obj) cut by a 3 h ball: the held-out rings prefer the flow (0.143
+// against 0.152 mean edges), but its steady state turns the normal across the border by 40° where
+// the ∆³ solution it started from turns it by 19°, and lies 0.14 h from the uncut scan against the
+// floor's 0.024 h. The fold check (FairRegionOptions::max_border_angle_ratio) keeps the floor.
+TEST(RealHoleFold, AFlowThatFoldsAgainstItsLinearStartIsNotDelivered) {
+  const Mesh truth = read_mesh(test::data_path("hammer_rawscan.obj"));
+  const double h = test::mean_edge_length(truth);
+  const Mesh cut = test::cut_ball(truth, {0.058795, -0.207038, -4.098659}, 3 * h);
+  const FilledTwice r = fill_twice(cut, truth);
+
+  ASSERT_EQ(r.report.holes.size(), 1u);
+  const HoleReport& hole = r.hole();
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "C2 (linear)") << hole.note;
+  EXPECT_LT(hole.held_out_flow_error, hole.held_out_linear_error) << "the held-out rings chose the linear floor";
+  EXPECT_NE(hole.note.find("turns the normal across the border by"), std::string::npos) << hole.note;
+  EXPECT_LT(hole.continuity.max_normal_angle, 20 * std::numbers::pi / 180);
+  EXPECT_NEAR(r.distance, r.floor_distance, 1e-9);
+
+  // Without the check the flow is delivered, folded and farther from the scan.
+  Mesh folded = cut;
+  FillOptions unchecked;
+  unchecked.max_border_angle_ratio = std::numeric_limits<double>::infinity();
+  const FillReport report = fill_holes(folded, unchecked);
+  ASSERT_EQ(report.holes.size(), 1u);
+  const HoleReport& flowed = report.holes.front();
+  EXPECT_EQ(delivered_label(flowed.supported, flowed.linear), "G2") << flowed.note;
+  EXPECT_GT(flowed.continuity.max_normal_angle, 1.5 * hole.continuity.max_normal_angle);
+  const double flowed_distance = mean_new_vertex_distance(folded, cut.num_vertices(), truth) / h;
+  std::printf("[fold] hammer 3h: border angle %.1f deg, %.3f h (flow without the check: %.1f deg, %.3f h)\n",
+              hole.continuity.max_normal_angle * 180 / std::numbers::pi, r.distance,
+              flowed.continuity.max_normal_angle * 180 / std::numbers::pi, flowed_distance);
+  EXPECT_GT(flowed_distance, 2 * r.distance);
 }
 
 // A scan's border is noisy: 0.1 h of normal noise on blub around an 8 h ball hole (bench_real_holes'

@@ -67,6 +67,13 @@ struct FairRegionOptions {
   /// average out the noise the flow would otherwise carry into the region (docs/fill.md, "Boundary
   /// data over two rings"). Costs one more fairing of the enlarged region.
   bool held_out_two_ring_fits = false;
+  /// With the linear floor: a flow whose steady state turns the normal across the region's border
+  /// (ContinuityMeasure::max_normal_angle) by more than this many times the ∆^k solution it started
+  /// from does, and by more than 5 degrees, folds against it: the linear solution is kept, reported
+  /// `linear` with both angles in the note. Such a state is not the curvature-continuous surface it
+  /// is labelled, and on real holes it lands farther from the surface than the floor more often than
+  /// not (docs/fill.md, "A flow that folds against its start"). Infinity: off.
+  double max_border_angle_ratio = std::numeric_limits<double>::infinity();
 
   static FlowOptions default_fair_flow_options();
   /// The options that settle a disk-like region (a hole's patch, a marked region) in a few steps:
@@ -77,7 +84,8 @@ struct FairRegionOptions {
   /// sixth-order flow descends the energy (FlowStepKind::energy_descent, steady once a step lowers E
   /// by less than 1e-5 of itself, 30 rejections in a row allowed), keeps the ∆³ solution as its
   /// floor (linear_floor) and delivers it where it re-predicts 2 held-out rings better
-  /// (held_out_rings), the flow weighed also on 2-ring boundary fits (held_out_two_ring_fits);
+  /// (held_out_rings), the flow weighed also on 2-ring boundary fits (held_out_two_ring_fits), or
+  /// where the flow folds against it (max_border_angle_ratio 1.5);
   /// and both linear solvers use the minimum-degree ordering, whose analysis is far cheaper on
   /// patch-sized systems. From a flattened cap the plain defaults do not settle
   /// beyond about a thousand free vertices (docs/blend.md). Used by fill_holes and `fairsurf fair`; not
