@@ -58,6 +58,22 @@ FilledTwice fill_twice(const Mesh& cut, const Mesh& truth) {
   return r;
 }
 
+// data/`mesh` cut by a ball of `radius` mean edge lengths around `centre`, filled twice (fill_twice).
+struct BallHole {
+  Mesh truth, cut;
+  double h = 0;
+  FilledTwice r;
+};
+
+BallHole fill_ball_hole(const std::string& mesh, const Eigen::Vector3d& centre, double radius) {
+  BallHole b;
+  b.truth = read_mesh(test::data_path(mesh));
+  b.h = test::mean_edge_length(b.truth);
+  b.cut = test::cut_ball(b.truth, centre, radius * b.h);
+  b.r = fill_twice(b.cut, b.truth);
+  return b;
+}
+
 class RealHoles : public ::testing::TestWithParam<RealHole> {};
 
 }  // namespace
@@ -118,10 +134,7 @@ INSTANTIATE_TEST_SUITE_P(Data, RealHoles,
 // far closer to the uncut surface. The flows, which would start from the re-evaluated solution, are
 // not tried.
 TEST(RealHoleTailFin, OneSolveFromThePatchBeforeItsMembraneIsChosenAndLandsCloser) {
-  const Mesh truth = read_mesh(test::data_path("blub.obj"));
-  const double h = test::mean_edge_length(truth);
-  const Mesh cut = test::cut_ball(truth, {0.00697216, -0.181279, -1.03702}, 4 * h);
-  const FilledTwice r = fill_twice(cut, truth);
+  const FilledTwice r = fill_ball_hole("blub.obj", {0.00697216, -0.181279, -1.03702}, 4).r;
 
   ASSERT_EQ(r.report.holes.size(), 1u);
   const HoleReport& hole = r.hole();
@@ -145,10 +158,8 @@ TEST(RealHoleTailFin, OneSolveFromThePatchBeforeItsMembraneIsChosenAndLandsClose
 // the ∆³ solution it started from turns it by 19°, and lies 0.14 h from the uncut scan against the
 // floor's 0.024 h. The fold check (FairRegionOptions::max_border_angle_ratio) keeps the floor.
 TEST(RealHoleFold, AFlowThatFoldsAgainstItsLinearStartIsNotDelivered) {
-  const Mesh truth = read_mesh(test::data_path("hammer_rawscan.obj"));
-  const double h = test::mean_edge_length(truth);
-  const Mesh cut = test::cut_ball(truth, {0.058795, -0.207038, -4.098659}, 3 * h);
-  const FilledTwice r = fill_twice(cut, truth);
+  const BallHole ball = fill_ball_hole("hammer_rawscan.obj", {0.058795, -0.207038, -4.098659}, 3);
+  const FilledTwice& r = ball.r;
 
   ASSERT_EQ(r.report.holes.size(), 1u);
   const HoleReport& hole = r.hole();
@@ -160,7 +171,7 @@ TEST(RealHoleFold, AFlowThatFoldsAgainstItsLinearStartIsNotDelivered) {
   EXPECT_NEAR(r.distance, r.floor_distance, 1e-9);
 
   // Without the check the flow is delivered, folded and farther from the scan.
-  Mesh folded = cut;
+  Mesh folded = ball.cut;
   FillOptions unchecked;
   unchecked.max_border_angle_ratio = std::numeric_limits<double>::infinity();
   const FillReport report = fill_holes(folded, unchecked);
@@ -168,7 +179,7 @@ TEST(RealHoleFold, AFlowThatFoldsAgainstItsLinearStartIsNotDelivered) {
   const HoleReport& flowed = report.holes.front();
   EXPECT_EQ(delivered_label(flowed.supported, flowed.linear), "G2") << flowed.note;
   EXPECT_GT(flowed.continuity.max_normal_angle, 1.5 * hole.continuity.max_normal_angle);
-  const double flowed_distance = mean_new_vertex_distance(folded, cut.num_vertices(), truth) / h;
+  const double flowed_distance = mean_new_vertex_distance(folded, ball.cut.num_vertices(), ball.truth) / ball.h;
   std::printf("[fold] hammer 3h: border angle %.1f deg, %.3f h (flow without the check: %.1f deg, %.3f h)\n",
               hole.continuity.max_normal_angle * 180 / std::numbers::pi, r.distance,
               flowed.continuity.max_normal_angle * 180 / std::numbers::pi, flowed_distance);
