@@ -413,8 +413,9 @@ Row blend_case(const Loaded& m, const Slab& slab) {
   try {
     // BlendOptions{} is what `fairsurf blend` runs without options (apps/fairsurf/cmd_blend.cpp).
     const BlendReport report = blend_loops(mesh, BlendOptions{});
-    row.status = report.fair.flow.stop_reason == FlowStopReason::steady ? "steady" : "not steady";
-    row.continuity = std::string(to_string(report.fair.supported));
+    row.status = report.fair.linear || report.fair.flow.stop_reason == FlowStopReason::steady ? "steady" : "not steady";
+    row.continuity = delivered_label(report.fair.supported, report.fair.linear);
+    add_note(row, report.fair.note);
     row.steps = report.fair.flow.accepted_steps;
     row.seconds = report.seconds;
     row.angle = std::max(report.a.border.max_normal_angle, report.b.border.max_normal_angle);
@@ -432,13 +433,13 @@ Row blend_case(const Loaded& m, const Slab& slab) {
 std::string blend_section(const std::vector<Loaded>& meshes, bool quick) {
   std::printf("== blend: the band of the slab |(x - centre)·axis| < 2h through `centre` removed, the two loops "
               "blended; distances in h ==\n");
-  std::printf("%-9s %6s %4s %-8s %-10s %-4s %5s %6s | %-12s | %6s %6s %s\n", "mesh", "centre", "axis", "loops",
+  std::printf("%-9s %6s %4s %-8s %-10s %-11s %5s %6s | %-12s | %6s %6s %s\n", "mesh", "centre", "axis", "loops",
               "exit", "cont", "steps", "sec", "fairsurf h", "angle", "ref", "fold");
   int rows = 0, steady = 0, folds = 0;
   for (const Loaded& m : meshes)
     for (const Slab& slab : blend_slabs(m, quick ? 1 : 2)) {
       const Row r = blend_case(m, slab);
-      std::printf("%-9s %6d %4c %-8s %-10s %-4s %5d %6.2f | %s | %6s %6s %s%s%s\n", r.mesh.c_str(), r.centre,
+      std::printf("%-9s %6d %4c %-8s %-10s %-11s %5d %6.2f | %s | %6s %6s %s%s%s\n", r.mesh.c_str(), r.centre,
                   "xyz"[slab.axis], r.size.c_str(), r.status.c_str(), r.continuity.c_str(), r.steps, r.seconds,
                   pair_text(r.ours.count > 0, r.ours).c_str(), number(r.angle * kDegrees, "%.1f").c_str(),
                   number(r.uncut_angle * kDegrees, "%.1f").c_str(), r.fold ? "FOLD" : "-",

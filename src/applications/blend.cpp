@@ -1,5 +1,6 @@
 #include <fairsurf/applications/blend.h>
 #include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/face_intersection.h>
 #include <fairsurf/mesh/mesh_attributes.h>
 #include <fairsurf/mesh/topology.h>
 #include <fairsurf/patch/membrane.h>
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 
 namespace fairsurf {
@@ -119,16 +121,39 @@ FairRegionOptions descent_options(const FairRegionOptions& fair) {
   return o;
 }
 
+// Crossings of the tube's faces (from `first_tube_face` on) with the faces of `mesh`, at most 10.
+std::vector<FaceIntersection> tube_crossings(const Mesh& mesh, int first_tube_face) {
+  std::vector<int> tube(mesh.num_faces() - first_tube_face);
+  std::iota(tube.begin(), tube.end(), first_tube_face);
+  return find_face_intersections(mesh.V, mesh.F, tube, 10);
+}
+
+bool tube_crosses(const Mesh& mesh, int first_tube_face) { return !tube_crossings(mesh, first_tube_face).empty(); }
+
+// Why a faired tube is not delivered: its first crossing and how many (`also`: what else crossed).
+std::string crossing_message(const Mesh& mesh, int first_tube_face, const std::string& also) {
+  const std::vector<FaceIntersection> crossings = tube_crossings(mesh, first_tube_face);
+  const FaceIntersection& c = crossings.front();
+  return "blend_loops: the faired tube crosses the mesh (tube face " + std::to_string(c.query_face) + " crosses " +
+         (c.other_face >= first_tube_face ? "tube" : "input") + " face " + std::to_string(c.other_face) + ", " +
+         std::to_string(crossings.size()) + (crossings.size() >= 10 ? "+" : "") + " crossing" +
+         (crossings.size() == 1 ? "" : "s") + ")" + also;
+}
+
 // Fairs the tube as the options' FairRegionOptions base says; where that sixth-order flow steps in
 // time and ends unsettled or throws (a real mesh's irregular rings: the fitted EL is not the
-// gradient of the discrete energy there, flow.md), the energy descent takes over from its last
-// accepted state and runs until E stops decreasing. `topo`: the connectivity of mesh.F, validated
-// by each fair_region.
-FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, const BlendOptions& options,
-                           const FlowObserver& observer) {
+// gradient of the discrete energy there, flow.md), the energy descent takes over and runs until E
+// stops decreasing, from two starts: the time-stepped flow's last accepted state and the tube it
+// started from. A diverging time-stepped flow can leave a state tangled through the mesh that the
+// descent only settles; the tube as built is often clear of it. The result whose tube does not
+// cross the mesh is kept, and between two that both cross or both do not, the one of lower energy.
+// `topo`: the connectivity of mesh.F, validated by each fair_region.
+FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
+                           const BlendOptions& options, const FlowObserver& observer) {
   const bool may_descend = options.descent_fallback && options.method == FairMethod::flow &&
                            options.flow.step_kind == FlowStepKind::implicit_flow;
   std::string failure;
+  const Vertices tube = mesh.V;
   try {
     FairRegionReport report = fair_region(mesh, topo, free, options, observer);
     if (!may_descend || report.linear || report.flow_kind != FlowKind::sixth_order ||
@@ -139,10 +164,63 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
     if (!may_descend || options.continuity != Continuity::G2) throw;
     failure = std::string("failed (") + e.what() + ")";  // mesh holds the last accepted state
   }
-  FairRegionReport report = fair_region(mesh, topo, free, descent_options(options), observer);
-  report.note = "the time-stepped flow " + failure + "; the energy descent continued from its last state" +
+  const FairRegionOptions descent = descent_options(options);
+  std::vector<StepRecord> steps, other_steps;  // the observer sees the delivered descent's only
+  FairRegionReport report = fair_region(mesh, topo, free, descent, [&](const StepRecord& r) { steps.push_back(r); });
+  std::string start = "its last state";
+  if (mesh.V != tube) {  // the time-stepped flow moved: the descent from the tube too
+    Mesh from_tube = mesh;
+    from_tube.V = tube;
+    try {
+      FairRegionReport other = fair_region(from_tube, topo, free, descent,
+                                           [&](const StepRecord& r) { other_steps.push_back(r); });
+      const bool crosses = tube_crosses(mesh, first_tube_face);
+      const bool other_crosses = tube_crosses(from_tube, first_tube_face);
+      if (crosses != other_crosses ? crosses : other.flow.final_energy < report.flow.final_energy) {
+        mesh.V = std::move(from_tube.V);
+        report = std::move(other);
+        steps = std::move(other_steps);
+        start = "the tube it started from";
+      }
+    } catch (const NumericalError&) {  // no second candidate
+    }
+  }
+  if (observer)
+    for (const StepRecord& r : steps) observer(r);
+  report.note = "the time-stepped flow " + failure + "; the energy descent continued from " + start +
                 (report.note.empty() ? "" : "; " + report.note);
   return report;
+}
+
+// Fairs the tube as the options' FairRegionOptions base says (flow_tube); where the result crosses
+// the mesh and the method is the flow, the linear ∆^k solution from the same tube takes its place
+// if that one does not (labelled linear, with the reason). Throws NumericalError where the tube
+// delivered would still cross the mesh (`mesh` then holds it).
+FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
+                           const BlendOptions& options, const FlowObserver& observer) {
+  const Vertices tube = mesh.V;
+  FairRegionReport report = flow_tube(mesh, topo, free, first_tube_face, options, observer);
+  if (!tube_crosses(mesh, first_tube_face)) return report;
+  if (options.method != FairMethod::flow) throw NumericalError(crossing_message(mesh, first_tube_face, ""));
+  Mesh linear = mesh;
+  linear.V = tube;
+  FairRegionOptions harmonic = options;
+  harmonic.method = FairMethod::harmonic;
+  try {
+    FairRegionReport floor = fair_region(linear, topo, free, harmonic);
+    if (!tube_crosses(linear, first_tube_face)) {
+      const int order = static_cast<int>(floor.supported) + 1;
+      floor.note = std::string("the ") + to_string(report.flow_kind) + " flow's tube crosses the mesh" +
+                   (report.note.empty() ? "" : " (" + report.note + ")") + "; kept the linear ∆" +
+                   std::to_string(order) + " tube";
+      mesh.V = std::move(linear.V);
+      return floor;
+    }
+  } catch (const NumericalError&) {  // no linear tube to fall back to
+  }
+  throw NumericalError(crossing_message(mesh, first_tube_face, ", and so does the linear ∆" +
+                                                                   std::to_string(static_cast<int>(report.supported) + 1) +
+                                                                   " tube from the same start"));
 }
 
 }  // namespace
@@ -187,7 +265,7 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
 
   // The tubed mesh's connectivity, built once by tube_patch: the fairing and the measures read it.
   const Topology& tubed = patch.topology;
-  report.fair = fair_tube(mesh, tubed, patch.free_vertices, options, observer);
+  report.fair = fair_tube(mesh, tubed, patch.free_vertices, patch.first_patch_face, options, observer);
   report.a.border = measure_near_loop(mesh, tubed, loop_a, options.measure_rings, patch.free_vertices, loop_a);
   report.b.border = measure_near_loop(mesh, tubed, loop_b, options.measure_rings, patch.free_vertices, loop_b);
   report.seconds = detail::seconds_since(start);

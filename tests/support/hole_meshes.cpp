@@ -3,7 +3,9 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <map>
 #include <random>
 #include <vector>
 
@@ -51,6 +53,34 @@ Mesh cut_ball(const Mesh& mesh, const Vec3& centre, double radius) {
       if ((mesh.V.row(mesh.F(f, k)).transpose() - centre).norm() > radius) return true;
     return false;
   });
+}
+
+Mesh cut_slab(const Mesh& mesh, const Vec3& point, const Vec3& axis, double half_width) {
+  const auto in_slab = [&](int f) {
+    for (int k = 0; k < 3; ++k)
+      if (std::abs((mesh.V.row(mesh.F(f, k)).transpose() - point).dot(axis)) >= half_width) return false;
+    return true;
+  };
+  // The band's faces connected across edges to those at the vertex nearest `point`.
+  int nearest = 0;
+  for (int v = 1; v < mesh.num_vertices(); ++v)
+    if ((mesh.V.row(v).transpose() - point).norm() < (mesh.V.row(nearest).transpose() - point).norm()) nearest = v;
+  std::map<std::pair<int, int>, std::vector<int>> edge_faces;
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k)
+      edge_faces[std::minmax(mesh.F(f, k), mesh.F(f, (k + 1) % 3))].push_back(f);
+  std::vector<char> removed(mesh.num_faces(), 0);
+  std::vector<int> stack;
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    if ((mesh.F.row(f).array() == nearest).any() && in_slab(f)) removed[f] = 1, stack.push_back(f);
+  while (!stack.empty()) {
+    const int f = stack.back();
+    stack.pop_back();
+    for (int k = 0; k < 3; ++k)
+      for (int g : edge_faces[std::minmax(mesh.F(f, k), mesh.F(f, (k + 1) % 3))])
+        if (!removed[g] && in_slab(g)) removed[g] = 1, stack.push_back(g);
+  }
+  return keep_faces(mesh, [&](int f) { return !removed[f]; });
 }
 
 void add_normal_noise(Mesh& mesh, double sigma, unsigned seed) {

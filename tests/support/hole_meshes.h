@@ -17,6 +17,10 @@ Mesh cut_hole(const Mesh& mesh, const std::function<bool(const Eigen::Vector3d&)
 /// vertices no face uses any more removed (the others keep their order): the cut of the real-hole
 /// measurement protocol.
 Mesh cut_ball(const Mesh& mesh, const Eigen::Vector3d& centre, double radius);
+/// `mesh` without the band of faces whose three vertices lie within `half_width` of the plane
+/// through `point` normal to the unit vector `axis`, connected across edges to the vertex nearest
+/// `point` (the vertices left keep their order): the cut of bench_real_holes' blend rows.
+Mesh cut_slab(const Mesh& mesh, const Eigen::Vector3d& point, const Eigen::Vector3d& axis, double half_width);
 
 /// Moves every vertex of `mesh` along its area-weighted normal by a normal deviate of standard
 /// deviation `sigma` (a scan's noise; the same `seed` gives the same draw).

@@ -39,9 +39,11 @@ struct BlendOptions : FairRegionOptions {
   /// sheet of slivers (quality 1e-9) that no flow can start from.
   double pinch_quality_ratio = 0.25;
   /// When the sixth-order flow steps in time (flow.step_kind = FlowStepKind::implicit_flow) and ends
-  /// without a steady state or throws, continue from its last accepted state with the energy descent
-  /// (FlowStepKind::energy_descent, steady once a step lowers E by less than 1e-5 of itself) and
-  /// say so in the report's fair.note. On real meshes the time-stepped flow often does not settle
+  /// without a steady state or throws, continue with the energy descent (FlowStepKind::energy_descent,
+  /// steady once a step lowers E by less than 1e-5 of itself) from its last accepted state and from
+  /// the tube it started from, keep the result whose tube does not cross the mesh (of both or
+  /// neither, the one of lower energy; the observer sees that descent's steps only) and say so in
+  /// the report's fair.note. On real meshes the time-stepped flow often does not settle
   /// (the fitted EL is not the gradient of the discrete energy on irregular rings); where it does,
   /// as on the analytic scenes, its result is kept unchanged.
   bool descent_fallback = true;
@@ -85,6 +87,10 @@ struct BlendReport {
 /// patch.h). Throws InvalidMeshError for fewer than two loops; InvalidArgument for an index out of
 /// range (the message lists every loop with its length), equal indices or only one index given; what tube_patch and
 /// fair_region throw otherwise (NumericalError with `mesh` at the last accepted state of the flow).
+/// The faired tube is checked against the mesh (find_face_intersections): where the flow's tube
+/// crosses it, the linear ∆^k tube from the same start is delivered instead if it does not
+/// (fair.linear, with the reason in fair.note); where that crosses too, NumericalError names the
+/// first crossing (`mesh` then holds the crossing tube).
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options = {}, const FlowObserver& observer = {});
 
 /// Measures continuity at the vertices of `loop` only: on the faces within `rings` rings of it,
