@@ -6,6 +6,7 @@
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/geometry/continuity_measure.h>
 #include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/face_intersection.h>
 #include <fairsurf/mesh/submesh.h>
 #include <fairsurf/mesh/topology.h>
 #include <fairsurf/mesh/validate.h>
@@ -325,16 +326,81 @@ FairRegionReport fair_checked_mesh(Mesh& mesh, const Topology& topo, std::span<c
 
 }  // namespace fair_detail
 
+namespace {
+
+// The faces with a vertex in `free_vertices`.
+std::vector<int> region_faces(const Mesh& mesh, std::span<const int> free_vertices) {
+  std::vector<char> free(mesh.num_vertices(), 0);
+  for (int v : free_vertices)
+    if (v >= 0 && v < mesh.num_vertices()) free[v] = 1;
+  std::vector<int> faces;
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    if (free[mesh.F(f, 0)] || free[mesh.F(f, 1)] || free[mesh.F(f, 2)]) faces.push_back(f);
+  return faces;
+}
+
+// "face a crosses face b, N crossings" for the first of `crossings` (at most 10 were sought).
+std::string crossing_text(const std::vector<FaceIntersection>& crossings) {
+  const FaceIntersection& c = crossings.front();
+  return "face " + std::to_string(c.query_face) + " crosses face " + std::to_string(c.other_face) + ", " +
+         std::to_string(crossings.size()) + (crossings.size() >= 10 ? "+" : "") + " crossing" +
+         (crossings.size() == 1 ? "" : "s");
+}
+
+// With the linear floor, a faired region that crosses the mesh where the given one did not is
+// replaced by the first linear solution from the given positions that does not cross, at the
+// continuity reached and then at each lower one (as fill's fallback: C2 → C1 → C0), reported linear
+// with the reason; otherwise NumericalError, with mesh.V at the crossing result.
+// `fair`: the fairing itself, on `mesh`.
+template <class Fair>
+FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                const FairRegionOptions& options, Fair&& fair) {
+  const bool floor = options.linear_floor && options.harmonic_start_iterations > 0;
+  const std::vector<int> faces = floor ? region_faces(mesh, free_vertices) : std::vector<int>();
+  if (!floor || !find_face_intersections(mesh.V, mesh.F, faces, 1).empty()) return fair();
+  const Vertices given = mesh.V;
+  FairRegionReport report = fair();
+  const std::vector<FaceIntersection> crossings = find_face_intersections(mesh.V, mesh.F, faces, 10);
+  if (crossings.empty()) return report;
+  const std::string what = report.linear ? std::string("the linear ∆") + std::to_string(static_cast<int>(report.supported) + 1) + " solution"
+                                         : std::string("the ") + to_string(report.flow_kind) + " flow's result";
+  const int highest = static_cast<int>(report.supported) - (report.linear ? 1 : 0);
+  for (int c = highest; c >= 0; --c) {
+    Mesh linear = mesh;
+    linear.V = given;
+    FairRegionOptions harmonic = options;
+    harmonic.method = FairMethod::harmonic;
+    harmonic.continuity = static_cast<Continuity>(c);
+    try {
+      FairRegionReport floor_report = fair_detail::fair_valid_mesh(linear, topo, free_vertices, harmonic, {});
+      if (!find_face_intersections(linear.V, linear.F, faces, 1).empty()) continue;
+      floor_report.requested = report.requested;
+      floor_report.note = what + " crosses the mesh (" + crossing_text(crossings) + "); kept the linear ∆" +
+                          std::to_string(c + 1) + " solution, the first that does not";
+      mesh.V = std::move(linear.V);
+      return floor_report;
+    } catch (const NumericalError&) {  // no linear solution at this continuity
+    }
+  }
+  throw NumericalError("fair_region: the faired region crosses the mesh where the given one did not (" +
+                       crossing_text(crossings) + "), and so does every linear solution down to ∆1");
+}
+
+}  // namespace
+
 FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
                              const FairRegionOptions& options, const FlowObserver& observer) {
   // validate builds the mesh's connectivity: kept, not built again.
   const Topology topo = detail::validated_topology(mesh, Requirements{}, "fair_region");
-  return fair_detail::fair_valid_mesh(mesh, topo, free_vertices, options, observer);
+  return fair_uncrossed(mesh, topo, free_vertices, options,
+                        [&] { return fair_detail::fair_valid_mesh(mesh, topo, free_vertices, options, observer); });
 }
 
 FairRegionReport fair_region(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                              const FairRegionOptions& options, const FlowObserver& observer) {
-  return fair_detail::fair_checked_mesh(mesh, topo, free_vertices, options, observer);
+  require_valid(validate(mesh, topo), Requirements{}, "fair_region");
+  return fair_uncrossed(mesh, topo, free_vertices, options,
+                        [&] { return fair_detail::fair_valid_mesh(mesh, topo, free_vertices, options, observer); });
 }
 
 }  // namespace fairsurf
