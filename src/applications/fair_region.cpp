@@ -362,7 +362,8 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
   FairRegionReport report = fair();
   const std::vector<FaceIntersection> crossings = find_face_intersections(mesh.V, mesh.F, faces, 10);
   if (crossings.empty()) return report;
-  const std::string what = report.linear ? std::string("the linear ∆") + std::to_string(static_cast<int>(report.supported) + 1) + " solution"
+  const int order = static_cast<int>(report.supported) + 1;
+  const std::string what = report.linear ? "the linear ∆" + std::to_string(order) + " solution"
                                          : std::string("the ") + to_string(report.flow_kind) + " flow's result";
   const int highest = static_cast<int>(report.supported) - (report.linear ? 1 : 0);
   for (int c = highest; c >= 0; --c) {
