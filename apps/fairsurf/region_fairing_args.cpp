@@ -91,7 +91,7 @@ std::string summary(const FairRegionReport& r) {
                 ? " (more steps drift further from a steady state: a lower --max-steps keeps an earlier "
                   "state; docs/blend.md, regions with no steady state)"
                 : " (max|V| was still falling: raise --max-steps)");
-  if (r.supported != r.requested)
+  if (r.supported != r.requested && !r.crossing_fallback)
     out += "; requested " + std::string(to_string(r.requested)) + " but the fixed rings support only " +
            std::string(to_string(r.supported));
   return out;

@@ -358,6 +358,7 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
   const bool floor = options.linear_floor && options.harmonic_start_iterations > 0;
   const std::vector<int> faces = floor ? region_faces(mesh, free_vertices) : std::vector<int>();
   if (!floor || !find_face_intersections(mesh.V, mesh.F, faces, 1).empty()) return fair();
+  const auto start = detail::Clock::now();
   const Vertices given = mesh.V;
   FairRegionReport report = fair();
   const std::vector<FaceIntersection> crossings = find_face_intersections(mesh.V, mesh.F, faces, 10);
@@ -376,6 +377,8 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
       FairRegionReport floor_report = fair_detail::fair_valid_mesh(linear, topo, free_vertices, harmonic, {});
       if (!find_face_intersections(linear.V, linear.F, faces, 1).empty()) continue;
       floor_report.requested = report.requested;
+      floor_report.crossing_fallback = true;
+      floor_report.seconds = detail::seconds_since(start);  // the crossing fairing's too
       floor_report.note = what + " crosses the mesh (" + crossing_text(crossings) + "); kept the linear ∆" +
                           std::to_string(c + 1) + " solution, the first that does not";
       mesh.V = std::move(linear.V);

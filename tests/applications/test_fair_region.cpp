@@ -271,6 +271,8 @@ TEST(FairRegionReal, AResultThatCrossesTheMeshGivesWayToALinearOneThatDoesNot) {
   EXPECT_TRUE(r.linear);
   EXPECT_EQ(delivered_label(r.supported, r.linear), "C1 (linear)") << r.note;
   EXPECT_NE(r.note.find("crosses the mesh"), std::string::npos) << r.note;
+  EXPECT_TRUE(r.crossing_fallback);
+  EXPECT_EQ(r.requested, Continuity::G2);
   EXPECT_TRUE(region_crossings(faired, region).empty());
 
   // The ∆³ solution without the check crosses.

@@ -122,6 +122,10 @@ struct FairRegionReport {
   /// where its held-out error is under half the re-evaluated linear solution's, from which the
   /// flows start; they are then not tried (their errors NaN).
   bool refined_start = false;
+  /// The fairing first reached crossed the mesh, and the linear solution delivered is the first
+  /// that does not, possibly at a lower continuity than the rings support (`supported` is then
+  /// that lower one; `note` says so).
+  bool crossing_fallback = false;
   /// The flow ran with FlowOptions::two_ring_boundary_fits (given, or chosen by the held-out rings).
   bool two_ring_boundary_fits = false;
   ContinuityMeasure continuity;                ///< measured after fairing
