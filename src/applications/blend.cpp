@@ -6,6 +6,7 @@
 #include <fairsurf/patch/membrane.h>
 #include <fairsurf/patch/tube.h>
 
+#include "mesh/crossing_count.h"
 #include "stopwatch.h"
 
 #include <Eigen/Geometry>
@@ -121,23 +122,23 @@ FairRegionOptions descent_options(const FairRegionOptions& fair) {
   return o;
 }
 
-// Crossings of the tube's faces (from `first_tube_face` on) with the faces of `mesh`, at most 10.
+// Crossings of the tube's faces (from `first_tube_face` on) with the faces of `mesh`, the first
+// kCrossingsSought.
 std::vector<FaceIntersection> tube_crossings(const Mesh& mesh, int first_tube_face) {
   std::vector<int> tube(mesh.num_faces() - first_tube_face);
   std::iota(tube.begin(), tube.end(), first_tube_face);
-  return find_face_intersections(mesh.V, mesh.F, tube, 10);
+  return find_face_intersections(mesh.V, mesh.F, tube, detail::kCrossingsSought);
 }
 
 bool tube_crosses(const Mesh& mesh, int first_tube_face) { return !tube_crossings(mesh, first_tube_face).empty(); }
 
 // Why a faired tube is not delivered: its first crossing and how many (`also`: what else crossed).
-std::string crossing_message(const Mesh& mesh, int first_tube_face, const std::string& also) {
-  const std::vector<FaceIntersection> crossings = tube_crossings(mesh, first_tube_face);
+std::string crossing_message(const std::vector<FaceIntersection>& crossings, int first_tube_face,
+                             const std::string& also) {
   const FaceIntersection& c = crossings.front();
   return "blend_loops: the faired tube crosses the mesh (tube face " + std::to_string(c.query_face) + " crosses " +
          (c.other_face >= first_tube_face ? "tube" : "input") + " face " + std::to_string(c.other_face) + ", " +
-         std::to_string(crossings.size()) + (crossings.size() >= 10 ? "+" : "") + " crossing" +
-         (crossings.size() == 1 ? "" : "s") + ")" + also;
+         detail::crossing_count(crossings) + ")" + also;
 }
 
 // Fairs the tube as the options' FairRegionOptions base says; where that sixth-order flow steps in
@@ -147,13 +148,13 @@ std::string crossing_message(const Mesh& mesh, int first_tube_face, const std::s
 // started from. A diverging time-stepped flow can leave a state tangled through the mesh that the
 // descent only settles; the tube as built is often clear of it. The result whose tube does not
 // cross the mesh is kept, and between two that both cross or both do not, the one of lower energy.
-// `topo`: the connectivity of mesh.F, validated by each fair_region.
+// `tube`: mesh.V as the tube was built. `topo`: the connectivity of mesh.F, validated by each
+// fair_region.
 FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
-                           const BlendOptions& options, const FlowObserver& observer) {
+                           const Vertices& tube, const BlendOptions& options, const FlowObserver& observer) {
   const bool may_descend = options.descent_fallback && options.method == FairMethod::flow &&
                            options.flow.step_kind == FlowStepKind::implicit_flow;
   std::string failure;
-  const Vertices tube = mesh.V;
   try {
     FairRegionReport report = fair_region(mesh, topo, free, options, observer);
     if (!may_descend || report.linear || report.flow_kind != FlowKind::sixth_order ||
@@ -199,9 +200,10 @@ FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<i
 FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
                            const BlendOptions& options, const FlowObserver& observer) {
   const Vertices tube = mesh.V;
-  FairRegionReport report = flow_tube(mesh, topo, free, first_tube_face, options, observer);
-  if (!tube_crosses(mesh, first_tube_face)) return report;
-  if (options.method != FairMethod::flow) throw NumericalError(crossing_message(mesh, first_tube_face, ""));
+  FairRegionReport report = flow_tube(mesh, topo, free, first_tube_face, tube, options, observer);
+  const std::vector<FaceIntersection> crossings = tube_crossings(mesh, first_tube_face);
+  if (crossings.empty()) return report;
+  if (options.method != FairMethod::flow) throw NumericalError(crossing_message(crossings, first_tube_face, ""));
   Mesh linear = mesh;
   linear.V = tube;
   FairRegionOptions harmonic = options;
@@ -218,7 +220,7 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
     }
   } catch (const NumericalError&) {  // no linear tube to fall back to
   }
-  throw NumericalError(crossing_message(mesh, first_tube_face, ", and so does the linear ∆" +
+  throw NumericalError(crossing_message(crossings, first_tube_face, ", and so does the linear ∆" +
                                                                    std::to_string(static_cast<int>(report.supported) + 1) +
                                                                    " tube from the same start"));
 }

@@ -1,5 +1,6 @@
 #include "flow/flow_failure.h"
 #include "held_out.h"
+#include "mesh/crossing_count.h"
 #include "mesh/validated.h"
 #include "stopwatch.h"
 
@@ -339,12 +340,11 @@ std::vector<int> region_faces(const Mesh& mesh, std::span<const int> free_vertic
   return faces;
 }
 
-// "face a crosses face b, N crossings" for the first of `crossings` (at most 10 were sought).
+// "face a crosses face b, N crossings" for the first of `crossings`.
 std::string crossing_text(const std::vector<FaceIntersection>& crossings) {
   const FaceIntersection& c = crossings.front();
   return "face " + std::to_string(c.query_face) + " crosses face " + std::to_string(c.other_face) + ", " +
-         std::to_string(crossings.size()) + (crossings.size() >= 10 ? "+" : "") + " crossing" +
-         (crossings.size() == 1 ? "" : "s");
+         detail::crossing_count(crossings);
 }
 
 // With the linear floor, a faired region that crosses the mesh where the given one did not is
@@ -361,7 +361,8 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
   const auto start = detail::Clock::now();
   const Vertices given = mesh.V;
   FairRegionReport report = fair();
-  const std::vector<FaceIntersection> crossings = find_face_intersections(mesh.V, mesh.F, faces, 10);
+  const std::vector<FaceIntersection> crossings =
+      find_face_intersections(mesh.V, mesh.F, faces, detail::kCrossingsSought);
   if (crossings.empty()) return report;
   const int order = static_cast<int>(report.supported) + 1;
   const std::string what = report.linear ? "the linear ∆" + std::to_string(order) + " solution"

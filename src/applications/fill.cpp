@@ -8,6 +8,7 @@
 #include <fairsurf/mesh/validate.h>
 
 #include "held_out.h"
+#include "mesh/crossing_count.h"
 #include "mesh/validated.h"
 #include "patch/border_pinches.h"
 #include "stopwatch.h"
@@ -214,8 +215,7 @@ std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int 
   const bool other_new = c.other_face >= input_faces;
   std::string reason = "the faired patch crosses the mesh: new face " + std::to_string(c.query_face) + " crosses " +
                        (other_new ? "new" : "input") + " face " + std::to_string(c.other_face) + " (" +
-                       std::to_string(crossings.size()) + (crossings.size() >= 10 ? "+" : "") + " crossing" +
-                       (crossings.size() == 1 ? "" : "s") + ")";
+                       detail::crossing_count(crossings) + ")";
   const Components parts = connected_components(F, topo);
   if (parts.face_component[c.query_face] != parts.face_component[c.other_face])
     reason += ", a face of another part of the mesh: openings that face each other are joined by blend";
@@ -302,7 +302,8 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
   std::vector<int> new_faces(patch.mesh.num_faces() - patch.first_patch_face);
   std::iota(new_faces.begin(), new_faces.end(), patch.first_patch_face);
   if (options.check_intersections) {
-    const auto crossings = find_face_intersections(patch.mesh.V, patch.mesh.F, new_faces, 10);
+    const auto crossings =
+        find_face_intersections(patch.mesh.V, patch.mesh.F, new_faces, detail::kCrossingsSought);
     if (!crossings.empty()) return crossing_reason(crossings, mesh.num_faces(), patch.mesh.F, patch.topology);
   }
 
