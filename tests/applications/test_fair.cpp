@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "analytic_meshes.h"
 #include "scratch_dir.h"
 #include "test_support.h"
 
@@ -95,6 +96,21 @@ TEST_F(CliFair, AFlowStoppedAtItsStepLimitKeepsTheLinearSolutionAndSaysSo) {
   ASSERT_EQ(full.exit_code, 0) << full.out;
   EXPECT_EQ(full.out.find("NOT steady"), std::string::npos) << full.out;
   EXPECT_EQ(full.out.find("(linear)"), std::string::npos) << full.out;
+}
+
+// airplane.obj's fair region 1206 8h (FairRegionReal in test_fair_region.cpp): its ∆³ solution
+// crosses the mesh and the ∆² one is written. The summary says why, and does not blame the fixed
+// rings for the lower continuity.
+TEST_F(CliFair, ARegionWhoseFairingCrossesTheMeshSaysWhichLinearSolutionItKept) {
+  const std::string mesh = test::data_path("airplane.obj");
+  const double radius = 8 * test::mean_edge_length(read_mesh(mesh));
+  const CliRun r = run_cli("fair '" + mesh + "' -o '" + path("out.obj") + "' --region-sphere -7.10032,0.122909,3.11757," +
+                           std::to_string(radius) + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("C1 (linear)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("crosses the mesh"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("kept the linear ∆2 solution, the first that does not"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("fixed rings support only"), std::string::npos) << r.out;
 }
 
 TEST_F(CliFair, RegionErrorsHaveClearMessagesAndExitCodes) {
