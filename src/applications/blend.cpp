@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <string>
 
 namespace fairsurf {
@@ -118,6 +119,7 @@ FairRegionOptions descent_options(const FairRegionOptions& fair) {
   o.flow.step_kind = FlowStepKind::energy_descent;
   o.flow.steady_energy_tolerance = 1e-5;
   o.flow.max_consecutive_rejections = 30;
+  o.flow.reject_crossings = true;
   o.harmonic_start_iterations = 0;  // from the time-stepped flow's last state
   return o;
 }
@@ -141,15 +143,65 @@ std::string crossing_message(const std::vector<FaceIntersection>& crossings, int
          detail::crossing_count(crossings) + ")" + also;
 }
 
+// The linear ∆^k tube: the tube `tube` of mesh faired by the options' cotangent solve.
+struct LinearTube {
+  Mesh mesh;
+  FairRegionReport report;
+  int order() const { return static_cast<int>(report.supported) + 1; }
+};
+
+// Nothing where the solve throws.
+std::optional<LinearTube> linear_tube(const Mesh& mesh, const Topology& topo, const std::vector<int>& free,
+                                      const Vertices& tube, const BlendOptions& options) {
+  LinearTube linear{mesh, {}};
+  linear.mesh.V = tube;
+  FairRegionOptions harmonic = options;
+  harmonic.method = FairMethod::harmonic;
+  try {
+    linear.report = fair_region(linear.mesh, topo, free, harmonic);
+  } catch (const NumericalError&) {
+    return std::nullopt;
+  }
+  return linear;
+}
+
+// One energy descent of the tube: its result, report and steps, and whether it crosses the mesh.
+struct TubeDescent {
+  Vertices V;
+  FairRegionReport report;
+  std::vector<StepRecord> steps;
+  bool crosses = false;
+  std::string start;  ///< where it started, for the note
+};
+
+// The energy descent from the positions `start` of mesh's tube; nothing where it throws.
+std::optional<TubeDescent> descend_tube(const Mesh& mesh, const Topology& topo, const std::vector<int>& free,
+                                        int first_tube_face, Vertices start, const FairRegionOptions& descent,
+                                        std::string name) {
+  Mesh from = mesh;
+  from.V = std::move(start);
+  TubeDescent d;
+  try {
+    d.report = fair_region(from, topo, free, descent, [&](const StepRecord& r) { d.steps.push_back(r); });
+  } catch (const NumericalError&) {
+    return std::nullopt;
+  }
+  d.crosses = tube_crosses(from, first_tube_face);
+  d.V = std::move(from.V);
+  d.start = std::move(name);
+  return d;
+}
+
 // Fairs the tube as the options' FairRegionOptions base says; where that sixth-order flow steps in
 // time and ends unsettled or throws (a real mesh's irregular rings: the fitted EL is not the
 // gradient of the discrete energy there, flow.md), the energy descent takes over and runs until E
-// stops decreasing, from two starts: the time-stepped flow's last accepted state and the tube it
-// started from. A diverging time-stepped flow can leave a state tangled through the mesh that the
-// descent only settles; the tube as built is often clear of it. The result whose tube does not
-// cross the mesh is kept, and between two that both cross or both do not, the one of lower energy.
-// `tube`: mesh.V as the tube was built. `topo`: the connectivity of mesh.F, validated by each
-// fair_region.
+// stops decreasing, from three starts: the time-stepped flow's last accepted state, the tube it
+// started from and the linear ∆^k tube from that. A diverging time-stepped flow can leave a state
+// tangled through the mesh that the descent only settles; the tube as built is often clear of it,
+// and the linear tube is the classical fairing the descent lowers E from in fill and fair. The
+// descent that does not cross the mesh is kept, and among those that all cross or all do not, the
+// one of lowest energy. `tube`: mesh.V as the tube was built. `topo`: the connectivity of mesh.F,
+// validated by each fair_region.
 FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
                            const Vertices& tube, const BlendOptions& options, const FlowObserver& observer) {
   const bool may_descend = options.descent_fallback && options.method == FairMethod::flow &&
@@ -166,29 +218,26 @@ FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<i
     failure = std::string("failed (") + e.what() + ")";  // mesh holds the last accepted state
   }
   const FairRegionOptions descent = descent_options(options);
-  std::vector<StepRecord> steps, other_steps;  // the observer sees the delivered descent's only
-  FairRegionReport report = fair_region(mesh, topo, free, descent, [&](const StepRecord& r) { steps.push_back(r); });
-  std::string start = "its last state";
-  if (mesh.V != tube) {  // the time-stepped flow moved: the descent from the tube too
-    Mesh from_tube = mesh;
-    from_tube.V = tube;
-    try {
-      FairRegionReport other = fair_region(from_tube, topo, free, descent,
-                                           [&](const StepRecord& r) { other_steps.push_back(r); });
-      const bool crosses = tube_crosses(mesh, first_tube_face);
-      const bool other_crosses = tube_crosses(from_tube, first_tube_face);
-      if (crosses != other_crosses ? crosses : other.flow.final_energy < report.flow.final_energy) {
-        mesh.V = std::move(from_tube.V);
-        report = std::move(other);
-        steps = std::move(other_steps);
-        start = "the tube it started from";
-      }
-    } catch (const NumericalError&) {  // no second candidate
-    }
-  }
+  std::vector<std::optional<TubeDescent>> descents;
+  descents.push_back(descend_tube(mesh, topo, free, first_tube_face, mesh.V, descent, "its last state"));
+  if (mesh.V != tube)  // the time-stepped flow moved
+    descents.push_back(descend_tube(mesh, topo, free, first_tube_face, tube, descent, "the tube it started from"));
+  if (std::optional<LinearTube> linear = linear_tube(mesh, topo, free, tube, options))
+    descents.push_back(descend_tube(mesh, topo, free, first_tube_face, std::move(linear->mesh.V), descent,
+                                    "the linear ∆" + std::to_string(linear->order()) + " tube"));
+  const TubeDescent* best = nullptr;
+  for (const std::optional<TubeDescent>& d : descents)
+    if (d && (!best || (d->crosses != best->crosses ? best->crosses
+                                                    : d->report.flow.final_energy < best->report.flow.final_energy)))
+      best = &*d;
+  if (!best)
+    throw NumericalError("blend_loops: the time-stepped flow " + failure +
+                         ", and the energy descent failed from its last state, the tube and the linear tube");
   if (observer)
-    for (const StepRecord& r : steps) observer(r);
-  report.note = "the time-stepped flow " + failure + "; the energy descent continued from " + start +
+    for (const StepRecord& r : best->steps) observer(r);
+  mesh.V = best->V;
+  FairRegionReport report = best->report;
+  report.note = "the time-stepped flow " + failure + "; the energy descent continued from " + best->start +
                 (report.note.empty() ? "" : "; " + report.note);
   return report;
 }
@@ -204,21 +253,13 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
   const std::vector<FaceIntersection> crossings = tube_crossings(mesh, first_tube_face);
   if (crossings.empty()) return report;
   if (options.method != FairMethod::flow) throw NumericalError(crossing_message(crossings, first_tube_face, ""));
-  Mesh linear = mesh;
-  linear.V = tube;
-  FairRegionOptions harmonic = options;
-  harmonic.method = FairMethod::harmonic;
-  try {
-    FairRegionReport floor = fair_region(linear, topo, free, harmonic);
-    if (!tube_crosses(linear, first_tube_face)) {
-      const int order = static_cast<int>(floor.supported) + 1;
-      floor.note = std::string("the ") + to_string(report.flow_kind) + " flow's tube crosses the mesh" +
-                   (report.note.empty() ? "" : " (" + report.note + ")") + "; kept the linear ∆" +
-                   std::to_string(order) + " tube";
-      mesh.V = std::move(linear.V);
-      return floor;
-    }
-  } catch (const NumericalError&) {  // no linear tube to fall back to
+  std::optional<LinearTube> linear = linear_tube(mesh, topo, free, tube, options);
+  if (linear && !tube_crosses(linear->mesh, first_tube_face)) {
+    linear->report.note = std::string("the ") + to_string(report.flow_kind) + " flow's tube crosses the mesh" +
+                          (report.note.empty() ? "" : " (" + report.note + ")") + "; kept the linear ∆" +
+                          std::to_string(linear->order()) + " tube";
+    mesh.V = std::move(linear->mesh.V);
+    return linear->report;
   }
   throw NumericalError(crossing_message(crossings, first_tube_face, ", and so does the linear ∆" +
                                                                    std::to_string(static_cast<int>(report.supported) + 1) +

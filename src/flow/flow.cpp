@@ -8,6 +8,7 @@
 #include <fairsurf/flow/orientation_guard.h>
 #include <fairsurf/flow/tangential_relaxation.h>
 #include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/face_intersection.h>
 #include <fairsurf/mesh/topology.h>
 
 #include <Eigen/Geometry>
@@ -96,6 +97,7 @@ class FlowRun {
   void limit_displacement(Eigen::VectorXd& d) const;
   bool displacement_ok(const Eigen::VectorXd& d, StepRecord& record) const;
   bool faces_ok(StepRecord& record);
+  bool crossings_ok(StepRecord& record);
   bool evaluate_trial(StepRecord& record);
   bool reject(StepRecord& record, StepRejection why, std::string detail);
   bool model_minimum_reached(int consecutive_rejections) const;
@@ -118,6 +120,7 @@ class FlowRun {
   FlowReport report_;
   double energy_floor_ = 0;
   std::vector<int> moving_faces_;  // faces with a free vertex
+  bool guard_crossings_ = false;   // FlowOptions::reject_crossings, where the start does not cross
 
   // The accepted state's figures the next trial needs (the state itself is overwritten by a trial).
   Vertices X_, X_trial_;
@@ -160,6 +163,8 @@ void FlowRun::initialize() {
       moving_faces_.push_back(f);
 
   input_face_direction_ = face_directions(X_, F_, moving_faces_);
+  guard_crossings_ = options_.step_control && options_.reject_crossings &&
+                     find_face_intersections(X_, F_, moving_faces_, 1).empty();
   std::vector<int> fixed;  // FlowOptions::two_ring_boundary_fits
   if (options_.two_ring_boundary_fits)
     for (int v = 0; v < n; ++v)
@@ -320,6 +325,15 @@ bool FlowRun::faces_ok(StepRecord& record) {
   return true;
 }
 
+bool FlowRun::crossings_ok(StepRecord& record) {
+  if (!guard_crossings_) return true;
+  const std::vector<FaceIntersection> crossings = find_face_intersections(X_trial_, F_, moving_faces_, 1);
+  if (crossings.empty()) return true;
+  return reject(record, StepRejection::crossing,
+                "face " + std::to_string(crossings.front().query_face) + " crosses face " +
+                    std::to_string(crossings.front().other_face));
+}
+
 bool FlowRun::evaluate_trial(StepRecord& record) {
   const auto start = Clock::now();
   try {
@@ -356,7 +370,7 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
     const Eigen::MatrixX3d* const references[] = {&face_direction_, &input_face_direction_};
     record.held_back_vertices = hold_back_turned_faces(X_, X_trial_, F_, moving_faces_, references);
   }
-  if (!faces_ok(record) || !evaluate_trial(record)) return false;
+  if (!faces_ok(record) || !crossings_ok(record) || !evaluate_trial(record)) return false;
   if (descending() && !(state_.energy < energy_))
     return reject(record, StepRejection::energy,
                   format("energy %.17g does not decrease from %.17g", state_.energy, energy_));

@@ -14,6 +14,7 @@ const char* to_string(StepRejection reason) {
     case StepRejection::non_finite: return "non-finite";
     case StepRejection::inverted_face: return "inverted face";
     case StepRejection::solver: return "solver";
+    case StepRejection::crossing: return "crossing";
   }
   return "?";
 }

@@ -1,16 +1,21 @@
 // The geometric flows (method.md §5–§8): energy decrease, the sign of the sixth-order flow,
 // stationarity of spheres and cylinders against the baselines, denoising, and failure handling.
 // Every test prints its figures; docs/flow.md quotes them beside the reference prototype's.
+#include "analytic_meshes.h"
 #include "flow_meshes.h"
+#include "test_support.h"
 
 #include <fairsurf/flow/flow.h>
 #include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/face_intersection.h>
+#include <fairsurf/mesh/region.h>
 #include <fairsurf/mesh/topology.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -285,6 +290,52 @@ TEST(FlowFailure, RejectionLimitZeroKeepsInput) {
     EXPECT_EQ(std::string(e.what()).rfind("run_flow: step 1 (t = 0, tau = 0.001): 1 consecutive rejected steps; the last: displacement: |d| ", 0), 0u) << e.what();
   }
   EXPECT_EQ(V, m.V);
+}
+
+// A unit sphere shrinking under mean curvature flow, with a fixed square plate inside it below its
+// north pole (a second component, not in the region): the free sphere would pass through the plate
+// by T = 0.1. With reject_crossings every trial that would cross is rejected and τ shrinks, so the
+// flow creeps up to the plate and no further (it ends at max_steps short of T, not crossing);
+// without it the sphere runs through.
+TEST(FlowCrossings, RejectedTrialsStopTheFlowShortOfAnotherSheet) {
+  const Mesh sphere = test::icosphere(3);
+  const Mesh plate = test::regular_grid(6, 6, 0.1);  // 0.6 by 0.6, in z = 0
+  Mesh m = sphere;
+  const int n = sphere.num_vertices();
+  m.V.conservativeResize(n + plate.num_vertices(), 3);
+  for (int v = 0; v < plate.num_vertices(); ++v)
+    m.V.row(n + v) = plate.V.row(v) + Eigen::RowVector3d(-0.3, -0.3, 0.7);
+  m.F.conservativeResize(sphere.num_faces() + plate.num_faces(), 3);
+  m.F.bottomRows(plate.num_faces()) = plate.F.array() + n;
+  std::vector<int> free(n), sphere_faces(sphere.num_faces());
+  std::iota(free.begin(), free.end(), 0);
+  std::iota(sphere_faces.begin(), sphere_faces.end(), 0);
+  const Topology topo = build_topology(m.F, m.num_vertices());
+  const Region region = make_region(topo, free, Continuity::G0);
+  ASSERT_TRUE(find_face_intersections(m.V, m.F, sphere_faces).empty());
+
+  FlowOptions o = options_for(FlowKind::mean_curvature);
+  o.normalize = false;
+  o.end_time = 0.1;
+  o.tau = o.tau_max = 0.005;
+  Vertices through = m.V;
+  run_flow(through, m.F, region, o);
+  EXPECT_FALSE(find_face_intersections(through, m.F, sphere_faces, 1).empty());
+
+  o.reject_crossings = true;
+  o.max_steps = 100;
+  Vertices guarded = m.V;
+  const FlowReport r = run_flow(guarded, m.F, region, o);
+  int crossing_rejections = 0;
+  for (const StepRecord& s : r.records) crossing_rejections += s.rejection == StepRejection::crossing;
+  std::printf("[crossings] guarded: %s at t = %.4f, %d crossing rejections, top of the sphere at z = %.4f\n",
+              to_string(r.stop_reason), r.time, crossing_rejections, guarded.col(2).head(n).maxCoeff());
+  EXPECT_EQ(r.stop_reason, FlowStopReason::max_steps);
+  EXPECT_LT(r.time, 0.1);
+  EXPECT_GT(crossing_rejections, 0);
+  EXPECT_TRUE(find_face_intersections(guarded, m.F, sphere_faces, 1).empty());
+  EXPECT_LT(guarded.col(2).head(n).maxCoeff(), 1.0);  // it did shrink towards the plate
+  EXPECT_GT(guarded.col(2).head(n).maxCoeff(), 0.7);
 }
 
 TEST(FlowOptionsTest, InvalidOptionsAreRejected) {

@@ -40,10 +40,11 @@ struct BlendOptions : FairRegionOptions {
   double pinch_quality_ratio = 0.25;
   /// When the sixth-order flow steps in time (flow.step_kind = FlowStepKind::implicit_flow) and ends
   /// without a steady state or throws, continue with the energy descent (FlowStepKind::energy_descent,
-  /// steady once a step lowers E by less than 1e-5 of itself) from its last accepted state and from
-  /// the tube it started from, keep the result whose tube does not cross the mesh (of both or
-  /// neither, the one of lower energy; the observer sees that descent's steps only) and say so in
-  /// the report's fair.note. On real meshes the time-stepped flow often does not settle
+  /// steady once a step lowers E by less than 1e-5 of itself, trials that would cross the mesh
+  /// rejected: FlowOptions::reject_crossings) from its last accepted state, from the tube it started
+  /// from and from the linear ∆^k tube from that, keep the result whose tube does not cross the mesh
+  /// (of several, the one of lowest energy; the observer sees that descent's steps only) and say so
+  /// in the report's fair.note. On real meshes the time-stepped flow often does not settle
   /// (the fitted EL is not the gradient of the discrete energy on irregular rings); where it does,
   /// as on the analytic scenes, its result is kept unchanged.
   bool descent_fallback = true;

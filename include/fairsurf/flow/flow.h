@@ -150,6 +150,14 @@ struct FlowOptions {
   /// solved. Keeps needle triangles of raw scans from flipping or accumulating turns over steps.
   /// Only with step_control; `fairsurf smooth` turns it on.
   bool hold_back_turned_faces = false;
+  /// Reject a trial whose moving faces (those with a free vertex) cross a face of the mesh
+  /// (find_face_intersections), as an inverted face is rejected, so that τ shrinks and the flow
+  /// stops short of the contact instead of passing through it: a time-stepped flow creeps towards
+  /// it in ever smaller steps (and ends at max_steps), the energy descent ends steady there, once
+  /// its steps lower E by less than steady_energy_tolerance. Off for a run whose start already
+  /// crosses. Only with step_control; costs one crossing search per trial. The energy descent of
+  /// blend's tubes turns it on, where a thin part's two sheets meet (docs/blend.md).
+  bool reject_crossings = false;
   /// Tangential relaxation of every trial state (tangential_relaxation.h): after the normal step,
   /// each free vertex moves this fraction of the way towards its neighbours' mean within its
   /// tangent plane at x^k; the trial is then checked (faces, energy, finiteness) as a whole. Keeps
@@ -181,7 +189,7 @@ struct FlowOptions {
 };
 
 /// Why a trial step was rejected (none for accepted steps).
-enum class StepRejection { none, displacement, energy, non_finite, inverted_face, solver };
+enum class StepRejection { none, displacement, energy, non_finite, inverted_face, solver, crossing };
 const char* to_string(StepRejection reason);
 
 /// One trial step. Energies and velocities are those of the trial state, in the flow's units.
