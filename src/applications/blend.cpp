@@ -6,6 +6,7 @@
 #include <fairsurf/patch/membrane.h>
 #include <fairsurf/patch/tube.h>
 
+#include "border_fold.h"
 #include "mesh/crossing_count.h"
 #include "stopwatch.h"
 
@@ -13,9 +14,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <string>
+#include <tuple>
 
 namespace fairsurf {
 namespace {
@@ -199,8 +202,8 @@ std::optional<TubeDescent> descend_tube(const Mesh& mesh, const Topology& topo, 
 // started from and the linear ∆^k tube from that. A diverging time-stepped flow can leave a state
 // tangled through the mesh that the descent only settles; the tube as built is often clear of it,
 // and the linear tube is the classical fairing the descent lowers E from in fill and fair. The
-// descent that does not cross the mesh is kept, and among those that all cross or all do not, the
-// one of lowest energy. `tube`: mesh.V as the tube was built. `topo`: the connectivity of mesh.F,
+// descent kept is one that does not cross the mesh, then one that does not fold against the linear
+// tube (fill's rule, border_fold.h), then the one of lowest energy. `tube`: mesh.V as the tube was built. `topo`: the connectivity of mesh.F,
 // validated by each fair_region.
 FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
                            const Vertices& tube, const BlendOptions& options, const FlowObserver& observer) {
@@ -222,14 +225,21 @@ FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<i
   descents.push_back(descend_tube(mesh, topo, free, first_tube_face, mesh.V, descent, "its last state"));
   if (mesh.V != tube)  // the time-stepped flow moved
     descents.push_back(descend_tube(mesh, topo, free, first_tube_face, tube, descent, "the tube it started from"));
-  if (std::optional<LinearTube> linear = linear_tube(mesh, topo, free, tube, options))
+  double linear_angle = std::numeric_limits<double>::infinity();  // no fold without a linear tube
+  if (std::optional<LinearTube> linear = linear_tube(mesh, topo, free, tube, options)) {
+    linear_angle = linear->report.continuity.max_normal_angle;
     descents.push_back(descend_tube(mesh, topo, free, first_tube_face, std::move(linear->mesh.V), descent,
                                     "the linear ∆" + std::to_string(linear->order()) + " tube"));
+  }
+  // fill's fold rule (FairRegionOptions::harmonic_started()'s max_border_angle_ratio)
+  const double fold_ratio = FairRegionOptions::harmonic_started().max_border_angle_ratio;
+  auto rank = [&](const TubeDescent& d) {
+    return std::tuple(d.crosses, detail::folds_against(d.report.continuity.max_normal_angle, linear_angle, fold_ratio),
+                      d.report.flow.final_energy);
+  };
   const TubeDescent* best = nullptr;
   for (const std::optional<TubeDescent>& d : descents)
-    if (d && (!best || (d->crosses != best->crosses ? best->crosses
-                                                    : d->report.flow.final_energy < best->report.flow.final_energy)))
-      best = &*d;
+    if (d && (!best || rank(*d) < rank(*best))) best = &*d;
   if (!best)
     throw NumericalError("blend_loops: the time-stepped flow " + failure +
                          ", and the energy descent failed from its last state, the tube and the linear tube");

@@ -1,3 +1,4 @@
+#include "border_fold.h"
 #include "flow/flow_failure.h"
 #include "held_out.h"
 #include "mesh/crossing_count.h"
@@ -69,19 +70,16 @@ FairRegionOptions FairRegionOptions::harmonic_started() {
 
 namespace {
 
-// The smallest border angle counted as a fold: below it the one-sided fits' own scatter on a
-// clean mesh (bench_real_holes' fold rule, issue #11).
-constexpr double kSmallestFoldAngle = 5 * std::numbers::pi / 180;
-
 // Empty, or why the flow's steady state folds against the ∆^k solution `start` it started from:
 // its max normal angle across the region's border exceeds both
-// FairRegionOptions::max_border_angle_ratio times the linear solution's and kSmallestFoldAngle.
+// FairRegionOptions::max_border_angle_ratio times the linear solution's and kSmallestFoldAngle
+// (border_fold.h).
 std::string border_fold_reason(const Submesh& sub, const Topology& local, const Vertices& start,
                                const FairRegionOptions& options) {
   if (std::isinf(options.max_border_angle_ratio)) return "";
   const double flowed = measure_continuity(sub.mesh.V, sub.mesh.F, local, sub.free_local).max_normal_angle;
   const double linear = measure_continuity(start, sub.mesh.F, local, sub.free_local).max_normal_angle;
-  if (!(flowed > std::max(options.max_border_angle_ratio * linear, kSmallestFoldAngle))) return "";
+  if (!detail::folds_against(flowed, linear, options.max_border_angle_ratio)) return "";
   constexpr double kDegrees = 180 / std::numbers::pi;
   char text[200];
   std::snprintf(text, sizeof text,

@@ -42,10 +42,11 @@ struct BlendOptions : FairRegionOptions {
   /// without a steady state or throws, continue with the energy descent (FlowStepKind::energy_descent,
   /// steady once a step lowers E by less than 1e-5 of itself, trials that would cross the mesh
   /// rejected: FlowOptions::reject_crossings) from its last accepted state, from the tube it started
-  /// from and from the linear ∆^k tube from that, keep the result whose tube does not cross the mesh
-  /// (of several, the one of lowest energy; the observer sees that descent's steps only) and say so
-  /// in the report's fair.note. On real meshes the time-stepped flow often does not settle
-  /// (the fitted EL is not the gradient of the discrete energy on irregular rings); where it does,
+  /// from and from the linear ∆^k tube from that, keep the result whose tube does not cross the mesh,
+  /// then one that does not fold against the linear tube (its border normal angle above 1.5 times
+  /// the linear tube's and above 5°, fill's rule), then the one of lowest energy (the observer sees
+  /// that descent's steps only) and say so in the report's fair.note. On real meshes the
+  /// time-stepped flow often does not settle (the fitted EL is not the gradient of the discrete energy on irregular rings); where it does,
   /// as on the analytic scenes, its result is kept unchanged.
   bool descent_fallback = true;
   /// Rings around each loop kept when the continuity is measured at one border (both sides' 2-ring
