@@ -125,7 +125,8 @@ enum class HeldOutChoice { flow, two_ring_flow, linear, refined_linear };
 
 // FairRegionOptions::held_out_rings: whichever of the flow as given, the flow with its boundary data
 // fitted over 2-rings (held_out_two_ring_fits) and the linear ∆^k solution re-predicts the held-out
-// rings best, with the reason in report.note where it is not the flow as given. Ties keep the flow.
+// rings best, with the reason in report.note where it is not the flow as given. The linear solution
+// must win by FairRegionOptions::held_out_margin; ties keep the flow.
 // `refined` (fill): one ∆^k solve from these positions of the free vertices is weighed first, and
 // taken where it beats the re-evaluated solution by kRefinedStartMargin (the flows are then not tried).
 HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, const FairRegionOptions& options,
@@ -153,7 +154,7 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
   }
   const bool two_ring = errors.two_ring_flow < errors.flow;  // false for NaN (not weighed)
   const double best_flow = two_ring ? errors.two_ring_flow : errors.flow;
-  if (errors.linear < best_flow) {
+  if (errors.linear * options.held_out_margin < best_flow) {
     report.flow.well_posedness = errors.flow_well_posedness;  // the flow that was weighed, not run here
     std::snprintf(text, sizeof text,
                   "the linear ∆%d solution re-predicts the %d rings around the region better than the %s "
@@ -265,6 +266,9 @@ FairRegionReport fair_valid(Mesh& mesh, const Topology& topo, std::span<const in
                             bool* whole, const HarmonicReport* solved_start, const Vertices* refined) {
   const auto start = detail::Clock::now();
   if (free_vertices.empty()) throw InvalidArgument("fair_region: the free region is empty");
+  if (!(options.held_out_margin >= 1))
+    throw InvalidArgument("fair_region: held_out_margin must be at least 1, not " +
+                          std::to_string(options.held_out_margin));
   const FlowKind wanted = flow_for(options.continuity);
   if (options.flow.kind && *options.flow.kind != wanted)
     throw InvalidArgument(std::string("fair_region: flow.kind ") + to_string(*options.flow.kind) + " cannot reach " +

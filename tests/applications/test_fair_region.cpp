@@ -209,6 +209,14 @@ TEST(FairRegion, RejectsBadInput) {
     EXPECT_STREQ(e.what(), "fair_region: flow.kind mean-curvature cannot reach G2, which needs the sixth-order "
                            "flow; leave flow.kind unset");
   }
+  FairRegionOptions eager = FairRegionOptions::harmonic_started();
+  eager.held_out_margin = 0.9;  // would hand the linear solution wins it did not earn
+  try {
+    fair_region(m, std::vector<int>{1}, eager);
+    FAIL() << "no exception";
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "fair_region: held_out_margin must be at least 1, not 0.900000");
+  }
   FairRegionOptions agreeing;
   agreeing.continuity = Continuity::G0;
   agreeing.flow.kind = FlowKind::mean_curvature;
