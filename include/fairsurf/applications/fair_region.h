@@ -69,10 +69,10 @@ struct FairRegionOptions {
   bool held_out_two_ring_fits = false;
   /// With held_out_rings: the linear solution is delivered only where its held-out error times this
   /// stays below the flow's (the better of the two flows'). Within a few percent the held-out rings
-  /// cannot tell the two apart: on bench_real_holes' 28 fills and fairings whose choice a margin of
-  /// 1.05 turns from the linear solution to the flow, the flow lands 0.97 times as far from the
-  /// surface (geometric mean; 14 closer, 11 farther), so such a tie goes to the G2 that was asked
-  /// for (docs/fill.md, "Ties go to the flow"). At least 1.
+  /// cannot tell the two apart: on the 47 benchmark and stress holes and regions whose choice a
+  /// margin of 1.05 turns from the linear solution to the flow, the flow lands 0.99 times as far
+  /// from the surface (geometric mean; 25 closer, 19 farther), so such a tie goes to the G2 that was
+  /// asked for (docs/fill.md, "Ties go to the flow"). At least 1.
   double held_out_margin = 1.05;
   /// With the linear floor: a flow whose steady state turns the normal across the region's border
   /// (ContinuityMeasure::max_normal_angle) by more than this many times the ∆^k solution it started
