@@ -195,6 +195,21 @@ std::optional<TubeDescent> descend_tube(const Mesh& mesh, const Topology& topo, 
   return d;
 }
 
+// The descent kept: one whose tube does not cross the mesh, then one that does not fold against
+// the linear tube (whose largest border normal angle is `linear_angle`; fill's rule, border_fold.h),
+// then the one of lowest energy. Null where every descent threw.
+const TubeDescent* kept_descent(const std::vector<std::optional<TubeDescent>>& descents, double linear_angle) {
+  const double fold_ratio = FairRegionOptions::harmonic_started().max_border_angle_ratio;
+  auto rank = [&](const TubeDescent& d) {
+    return std::tuple(d.crosses, detail::folds_against(d.report.continuity.max_normal_angle, linear_angle, fold_ratio),
+                      d.report.flow.final_energy);
+  };
+  const TubeDescent* best = nullptr;
+  for (const std::optional<TubeDescent>& d : descents)
+    if (d && (!best || rank(*d) < rank(*best))) best = &*d;
+  return best;
+}
+
 // Fairs the tube as the options' FairRegionOptions base says; where that sixth-order flow steps in
 // time and ends unsettled or throws (a real mesh's irregular rings: the fitted EL is not the
 // gradient of the discrete energy there, flow.md), the energy descent takes over and runs until E
@@ -231,15 +246,7 @@ FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<i
     descents.push_back(descend_tube(mesh, topo, free, first_tube_face, std::move(linear->mesh.V), descent,
                                     "the linear ∆" + std::to_string(linear->order()) + " tube"));
   }
-  // fill's fold rule (FairRegionOptions::harmonic_started()'s max_border_angle_ratio)
-  const double fold_ratio = FairRegionOptions::harmonic_started().max_border_angle_ratio;
-  auto rank = [&](const TubeDescent& d) {
-    return std::tuple(d.crosses, detail::folds_against(d.report.continuity.max_normal_angle, linear_angle, fold_ratio),
-                      d.report.flow.final_energy);
-  };
-  const TubeDescent* best = nullptr;
-  for (const std::optional<TubeDescent>& d : descents)
-    if (d && (!best || rank(*d) < rank(*best))) best = &*d;
+  const TubeDescent* best = kept_descent(descents, linear_angle);
   if (!best)
     throw NumericalError("blend_loops: the time-stepped flow " + failure +
                          ", and the energy descent failed from its last state, the tube and the linear tube");
