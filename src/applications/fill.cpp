@@ -396,6 +396,9 @@ FillOptions::FillOptions() : FairRegionOptions(harmonic_started()) {
   // A patch starts as a membrane, not a surface estimate: its own operator carries the membrane's
   // kink along the border, so ∆^k is re-evaluated until it settles (fair_region.h).
   harmonic_start_iterations = 8;
+  // Within 5% the held-out rings cannot tell a hole's flow and linear fill apart (docs/fill.md,
+  // "Ties go to the flow"): such a tie goes to the G2 that was asked for.
+  held_out_margin = 1.05;
 }
 
 FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver& observer) {

@@ -1,5 +1,5 @@
 // End-to-end tests of `fairsurf fill`: per-hole lines, hole selection, the JSON log, exit codes.
-#include <fairsurf/applications/fair_region.h>
+#include <fairsurf/applications/fill.h>
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/topology.h>
 
@@ -68,7 +68,7 @@ TEST_F(CliFill, SelectedHolesAreFilledOneLineEachWithALog) {
   EXPECT_EQ(hole["held_out_two_ring_flow_error"].is_number(), !refined) << hole.dump();
   const double one_ring = refined ? 0 : hole["held_out_flow_error"].get<double>();
   const double two_ring = refined ? 0 : hole["held_out_two_ring_flow_error"].get<double>();
-  const double margin = FairRegionOptions::harmonic_started().held_out_margin;
+  const double margin = FillOptions{}.held_out_margin;
   const bool flow_wins = !refined && std::min(one_ring, two_ring) <= margin * linear;
   EXPECT_EQ(hole["delivered"], flow_wins ? "G2" : "C2 (linear)") << hole.dump();
   EXPECT_EQ(hole["linear"], !flow_wins);

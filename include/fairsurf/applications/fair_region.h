@@ -68,12 +68,11 @@ struct FairRegionOptions {
   /// data over two rings"). Costs one more fairing of the enlarged region.
   bool held_out_two_ring_fits = false;
   /// With held_out_rings: the linear solution is delivered only where its held-out error times this
-  /// stays below the flow's (the better of the two flows'). Within a few percent the held-out rings
-  /// cannot tell the two apart: on the 47 benchmark and stress holes and regions whose choice a
-  /// margin of 1.05 turns from the linear solution to the flow, the flow lands 0.99 times as far
-  /// from the surface (geometric mean; 25 closer, 19 farther), so such a tie goes to the G2 that was
-  /// asked for (docs/fill.md, "Ties go to the flow"). At least 1.
-  double held_out_margin = 1.05;
+  /// stays below the flow's (the better of the two flows'). 1 (here, and for `fairsurf fair`): the
+  /// plain comparison. FillOptions uses 1.05: within a few percent the held-out rings cannot tell a
+  /// hole's two fills apart, and such a tie goes to the G2 that was asked for; on marked regions it
+  /// does not pay (docs/fill.md, "Ties go to the flow"). At least 1.
+  double held_out_margin = 1.0;
   /// With the linear floor: a flow whose steady state turns the normal across the region's border
   /// (ContinuityMeasure::max_normal_angle) by more than this many times the ∆^k solution it started
   /// from does, and by more than 5 degrees, folds against it: the linear solution is kept, reported
@@ -90,9 +89,8 @@ struct FairRegionOptions {
   /// with a Newton-like first step (flow.tau = 1e-2; a rejected step still quarters it); the
   /// sixth-order flow descends the energy (FlowStepKind::energy_descent, steady once a step lowers E
   /// by less than 1e-5 of itself, 30 rejections in a row allowed), keeps the ∆³ solution as its
-  /// floor (linear_floor) and delivers it where it re-predicts 2 held-out rings better by more than
-  /// 5% (held_out_rings, held_out_margin), the flow weighed also on 2-ring boundary fits
-  /// (held_out_two_ring_fits), or
+  /// floor (linear_floor) and delivers it where it re-predicts 2 held-out rings better
+  /// (held_out_rings), the flow weighed also on 2-ring boundary fits (held_out_two_ring_fits), or
   /// where the flow folds against it (max_border_angle_ratio 1.5);
   /// and both linear solvers use the minimum-degree ordering, whose analysis is far cheaper on
   /// patch-sized systems. From a flattened cap the plain defaults do not settle

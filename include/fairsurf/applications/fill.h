@@ -56,6 +56,8 @@ struct FillOptions : FairRegionOptions {
   /// From there the flow takes a Newton-like first step (τ = 1e-2: the step control quarters it on
   /// rejection), and both linear solvers use the minimum-degree ordering (LinearSolverOptions::
   /// ordering), whose analysis is far cheaper than nested dissection's on patch-sized systems.
+  /// The linear solution is delivered only where the held-out rings prefer it by more than 5%
+  /// (held_out_margin = 1.05; docs/fill.md, "Ties go to the flow").
   FillOptions();
 
   PatchOptions patch;  ///< triangulation, refinement and membrane of the initial patch
