@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "command.h"
 #include "flow_log.h"
@@ -92,14 +93,17 @@ void run_blend(const BlendArgs& args) {
               {"hermite_quality", report.hermite_quality},
               {"membrane_quality", report.membrane_quality},
               {"relaxed", report.relaxed},
+              {"straight_rings", report.straight_rings},
               {"fair", to_json(report.fair)},
               {"seconds", report.seconds}});
-  const char* start = report.relaxed                 ? "from the membrane"
-                      : args.no_relax                  ? "from the Hermite tube"
-                                                       : "from the Hermite tube (the membrane pinched off)";
+  const std::string rings = report.straight_rings ? "the tube of straight rings (the Hermite tube crossed the mesh)"
+                                                   : "the Hermite tube";
+  const std::string start = report.relaxed ? "from the membrane" + std::string(report.straight_rings ? " of " + rings : "")
+                            : args.no_relax ? "from " + rings
+                                            : "from " + rings + " (the membrane pinched off)";
   std::printf("blended loops %d and %d of %d%s: tube of %d vertices, %d faces, %s; %s\n  %s\n  %s\n%.2f s; wrote %s\n",
               report.a.index, report.b.index, report.loops_found, report.automatic ? " (closest pair)" : "",
-              report.tube_vertices, report.tube_faces, start, summary(report.fair).c_str(),
+              report.tube_vertices, report.tube_faces, start.c_str(), summary(report.fair).c_str(),
               border_text("a", report.a).c_str(), border_text("b", report.b).c_str(), report.seconds,
               args.output.c_str());
 }

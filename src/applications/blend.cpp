@@ -127,6 +127,13 @@ FairRegionOptions descent_options(const FairRegionOptions& fair) {
   return o;
 }
 
+// A faired tube that still crosses the mesh (fair_tube): blend_loops builds the tube again with
+// straight rings before it gives up.
+class TubeCrossing : public NumericalError {
+ public:
+  using NumericalError::NumericalError;
+};
+
 // Crossings of the tube's faces (from `first_tube_face` on) with the faces of `mesh`, the first
 // kCrossingsSought.
 std::vector<FaceIntersection> tube_crossings(const Mesh& mesh, int first_tube_face) {
@@ -269,7 +276,7 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
   FairRegionReport report = flow_tube(mesh, topo, free, first_tube_face, tube, options, observer);
   const std::vector<FaceIntersection> crossings = tube_crossings(mesh, first_tube_face);
   if (crossings.empty()) return report;
-  if (options.method != FairMethod::flow) throw NumericalError(crossing_message(crossings, first_tube_face, ""));
+  if (options.method != FairMethod::flow) throw TubeCrossing(crossing_message(crossings, first_tube_face, ""));
   std::optional<LinearTube> linear = linear_tube(mesh, topo, free, tube, options);
   if (linear && !tube_crosses(linear->mesh, first_tube_face)) {
     linear->report.note = std::string("the ") + to_string(report.flow_kind) + " flow's tube crosses the mesh" +
@@ -278,9 +285,33 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
     mesh.V = std::move(linear->mesh.V);
     return linear->report;
   }
-  throw NumericalError(crossing_message(crossings, first_tube_face, ", and so does the linear ∆" +
+  throw TubeCrossing(crossing_message(crossings, first_tube_face, ", and so does the linear ∆" +
                                                                    std::to_string(static_cast<int>(report.supported) + 1) +
                                                                    " tube from the same start"));
+}
+
+// Builds the tube between the loops of `mesh` (connectivity `topo`) as the options say, appends it
+// to `mesh` and fairs it (fair_tube), filling the tube's and the fairing's fields of `report` and
+// both borders' measurements. Throws TubeCrossing with `mesh` holding the crossing tube.
+void blend_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& loop_a, const std::vector<int>& loop_b,
+                const BlendOptions& options, const FlowObserver& observer, BlendReport& report) {
+  InitialPatch patch = initial_tube(mesh, topo, loop_a, loop_b, options, report);
+  report.tube_vertices = patch.mesh.num_vertices() - mesh.num_vertices();
+  report.tube_faces = patch.mesh.num_faces() - patch.first_patch_face;
+  report.tube_rings = patch.tube.rings;
+  // The input's faces come first, unchanged: they keep their texture coordinates, normals and
+  // polygons, the tube's faces have none; vertex values are dropped, the tube's vertices have none.
+  mesh.V = std::move(patch.mesh.V);
+  mesh.F = std::move(patch.mesh.F);
+  mesh.vertex_scalars.clear();
+  mesh.vertex_colors.resize(0, 3);
+  pad_face_attributes(mesh);
+
+  // The tubed mesh's connectivity, built once by tube_patch: the fairing and the measures read it.
+  const Topology& tubed = patch.topology;
+  report.fair = fair_tube(mesh, tubed, patch.free_vertices, patch.first_patch_face, options, observer);
+  report.a.border = measure_near_loop(mesh, tubed, loop_a, options.measure_rings, patch.free_vertices, loop_a);
+  report.b.border = measure_near_loop(mesh, tubed, loop_b, options.measure_rings, patch.free_vertices, loop_b);
 }
 
 }  // namespace
@@ -311,23 +342,28 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
     report.a.reference = reference_at_loop(mesh, topo, loop_a, options.reference_ring, options.measure_rings);
     report.b.reference = reference_at_loop(mesh, topo, loop_b, options.reference_ring, options.measure_rings);
   }
-  InitialPatch patch = initial_tube(mesh, topo, loop_a, loop_b, options, report);
-  report.tube_vertices = patch.mesh.num_vertices() - mesh.num_vertices();
-  report.tube_faces = patch.mesh.num_faces() - patch.first_patch_face;
-  report.tube_rings = patch.tube.rings;
-  // The input's faces come first, unchanged: they keep their texture coordinates, normals and
-  // polygons, the tube's faces have none; vertex values are dropped, the tube's vertices have none.
-  mesh.V = std::move(patch.mesh.V);
-  mesh.F = std::move(patch.mesh.F);
-  mesh.vertex_scalars.clear();
-  mesh.vertex_colors.resize(0, 3);
-  pad_face_attributes(mesh);
-
-  // The tubed mesh's connectivity, built once by tube_patch: the fairing and the measures read it.
-  const Topology& tubed = patch.topology;
-  report.fair = fair_tube(mesh, tubed, patch.free_vertices, patch.first_patch_face, options, observer);
-  report.a.border = measure_near_loop(mesh, tubed, loop_a, options.measure_rings, patch.free_vertices, loop_a);
-  report.b.border = measure_near_loop(mesh, tubed, loop_b, options.measure_rings, patch.free_vertices, loop_b);
+  const bool may_straighten = options.patch.tube.hermite;
+  Mesh input;  // for a second tube
+  if (may_straighten) input = mesh;
+  try {
+    blend_tube(mesh, topo, loop_a, loop_b, options, observer, report);
+  } catch (const TubeCrossing& hermite) {
+    if (!may_straighten) throw;
+    // Hermite rings between unlike loops, or loops a slab grazes, can pass through each other
+    // before any fairing; straight rings between the same points do not twist.
+    mesh = std::move(input);
+    BlendOptions straight = options;
+    straight.patch.tube.hermite = false;
+    try {
+      blend_tube(mesh, topo, loop_a, loop_b, straight, observer, report);
+    } catch (const TubeCrossing& e) {
+      throw NumericalError(std::string(hermite.what()) + "; built again with straight rings: " + e.what());
+    }
+    report.straight_rings = true;
+    report.fair.note = std::string("the tube from Hermite rings crossed the mesh (") + hermite.what() +
+                       "); built again with straight rings" +
+                       (report.fair.note.empty() ? "" : "; " + report.fair.note);
+  }
   report.seconds = detail::seconds_since(start);
   return report;
 }

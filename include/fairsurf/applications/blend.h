@@ -80,6 +80,10 @@ struct BlendReport {
   /// refined Hermite tube, and of the membrane (0 when not relaxed).
   double hermite_quality = 0, membrane_quality = 0;
   bool relaxed = false;       ///< the flow started from the membrane (false: not asked, or it pinched)
+  /// The tube from Hermite rings crossed the mesh after fairing, even linear, and was built again
+  /// with straight rings (TubeOptions::hermite = false); the qualities, sizes and `relaxed` are then
+  /// that second tube's, and fair.note says why.
+  bool straight_rings = false;
   FairRegionReport fair;      ///< requested/supported continuity, steps, final max|V|, whole border
   double seconds = 0;         ///< wall time of the whole call
 };
@@ -91,8 +95,10 @@ struct BlendReport {
 /// fair_region throw otherwise (NumericalError with `mesh` at the last accepted state of the flow).
 /// The faired tube is checked against the mesh (find_face_intersections): where the flow's tube
 /// crosses it, the linear ∆^k tube from the same start is delivered instead if it does not
-/// (fair.linear, with the reason in fair.note); where that crosses too, NumericalError names the
-/// first crossing (`mesh` then holds the crossing tube).
+/// (fair.linear, with the reason in fair.note); where that crosses too, a tube from Hermite rings
+/// is built again with straight rings and faired the same way (straight_rings; the observer sees
+/// both fairings' steps), and where that one crosses as well, NumericalError names both first
+/// crossings (`mesh` then holds the straight tube).
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options = {}, const FlowObserver& observer = {});
 
 /// Measures continuity at the vertices of `loop` only: on the faces within `rings` rings of it,
