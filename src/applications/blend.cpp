@@ -65,6 +65,8 @@ InitialPatch initial_tube(const Mesh& mesh, const Topology& topo, const std::vec
   InitialPatch patch = tube_patch(mesh, topo, loop_a, loop_b, hermite);
   const Faces& F = patch.mesh.F;
   report.hermite_quality = worst_quality(patch.mesh.V, F, patch.first_patch_face);
+  report.membrane_quality = 0;  // this tube's figures only, also when a first tube was built
+  report.relaxed = false;
   if (!options.patch.relax || patch.free_vertices.empty()) return patch;
   Vertices relaxed = patch.mesh.V;
   MembraneReport membrane = relax_membrane(relaxed, F, patch.topology, patch.free_vertices, options.patch.membrane,
@@ -225,8 +227,8 @@ const TubeDescent* kept_descent(const std::vector<std::optional<TubeDescent>>& d
 // tangled through the mesh that the descent only settles; the tube as built is often clear of it,
 // and the linear tube is the classical fairing the descent lowers E from in fill and fair. The
 // descent kept is one that does not cross the mesh, then one that does not fold against the linear
-// tube (fill's rule, border_fold.h), then the one of lowest energy. `tube`: mesh.V as the tube was built. `topo`: the connectivity of mesh.F,
-// validated by each fair_region.
+// tube (fill's rule, border_fold.h), then the one of lowest energy. `tube`: mesh.V as the tube was
+// built. `topo`: the connectivity of mesh.F, validated by each fair_region.
 FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
                            const Vertices& tube, const BlendOptions& options, const FlowObserver& observer) {
   const bool may_descend = options.descent_fallback && options.method == FairMethod::flow &&
@@ -285,9 +287,11 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
     mesh.V = std::move(linear->mesh.V);
     return linear->report;
   }
-  throw TubeCrossing(crossing_message(crossings, first_tube_face, ", and so does the linear ∆" +
-                                                                   std::to_string(static_cast<int>(report.supported) + 1) +
-                                                                   " tube from the same start"));
+  const std::string linear_order = "∆" + std::to_string(static_cast<int>(report.supported) + 1);
+  throw TubeCrossing(crossing_message(crossings, first_tube_face,
+                                      linear ? ", and so does the linear " + linear_order + " tube from the same start"
+                                             : ", and the linear " + linear_order +
+                                                   " tube from the same start could not be solved"));
 }
 
 // Builds the tube between the loops of `mesh` (connectivity `topo`) as the options say, appends it

@@ -46,8 +46,9 @@ struct BlendOptions : FairRegionOptions {
   /// then one that does not fold against the linear tube (its border normal angle above 1.5 times
   /// the linear tube's and above 5°, fill's rule), then the one of lowest energy (the observer sees
   /// that descent's steps only) and say so in the report's fair.note. On real meshes the
-  /// time-stepped flow often does not settle (the fitted EL is not the gradient of the discrete energy on irregular rings); where it does,
-  /// as on the analytic scenes, its result is kept unchanged.
+  /// time-stepped flow often does not settle (the fitted EL is not the gradient of the discrete
+  /// energy on irregular rings); where it does, as on the analytic scenes, its result is kept
+  /// unchanged.
   bool descent_fallback = true;
   /// Rings around each loop kept when the continuity is measured at one border (both sides' 2-ring
   /// fits must fit inside). Each figure is taken at its own loop's vertices only.
