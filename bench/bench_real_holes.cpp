@@ -27,6 +27,7 @@
 #include "real_holes.h"
 #include "real_holes_cases.h"
 #include "real_holes_rows.h"
+#include "region_energy.h"
 #ifdef FAIRSURF_BENCH_CGAL
 #include "cgal_reference.h"
 #endif
@@ -279,8 +280,8 @@ std::string fill_section(const std::vector<Loaded>& meshes, bool cgal) {
 // ---------------------------------------------------------------------------------------------
 // Fair: the ball's vertices freed on the uncut mesh
 
-void fair_ours(const Mesh& mesh, const std::vector<int>& region, const Truth& truth, double h,
-               Row& row) {
+void fair_ours(const Mesh& mesh, const Topology& topo, const std::vector<int>& region, const Truth& truth,
+               double h, Row& row) {
   // `fairsurf fair` without options: harmonic_started() with the flags' defaults (G2, f = H, flow,
   // 200 steps), which are its own (apps/fairsurf/cmd_fair.cpp, region_fairing_args.cpp).
   Mesh faired = mesh;
@@ -293,6 +294,7 @@ void fair_ours(const Mesh& mesh, const std::vector<int>& region, const Truth& tr
     row.seconds = report.seconds;
     row.angle = report.continuity.max_normal_angle;
     row.ours = measure(truth, faired.V, region, h);
+    row.energy = bench::region_energy(faired.V, faired.F, topo, region);
     add_choice(row, report);
   } catch (const std::exception& e) {
     row.seconds = seconds_since(start);
@@ -302,8 +304,8 @@ void fair_ours(const Mesh& mesh, const std::vector<int>& region, const Truth& tr
   }
 }
 
-void fair_baseline(const Mesh& mesh, const std::vector<int>& region, const Truth& truth, double h,
-                   Row& row) {
+void fair_baseline(const Mesh& mesh, const Topology& topo, const std::vector<int>& region, const Truth& truth,
+                   double h, Row& row) {
   Mesh faired = mesh;
   FairRegionOptions options = FairRegionOptions::harmonic_started();
   options.method = FairMethod::harmonic;
@@ -311,12 +313,32 @@ void fair_baseline(const Mesh& mesh, const std::vector<int>& region, const Truth
     fair_region(faired, region, options);
     row.has_baseline = true;
     row.baseline = measure(truth, faired.V, region, h);
+    row.baseline_energy = bench::region_energy(faired.V, faired.F, topo, region);
   } catch (const std::exception& e) {
     add_note(row, "∆³: " + std::string(e.what()));
   }
 }
 
-void fair_cgal([[maybe_unused]] const Mesh& mesh, [[maybe_unused]] const std::vector<int>& region,
+// The flow's own steady state, as if the held-out rings and the fold check always let it through:
+// what the energy prefers, beside what is delivered.
+void fair_flow_alone(const Mesh& mesh, const Topology& topo, const std::vector<int>& region, const Truth& truth,
+                     double h, Row& row) {
+  Mesh faired = mesh;
+  FairRegionOptions options = FairRegionOptions::harmonic_started();
+  options.held_out_rings = 0;
+  options.max_border_angle_ratio = std::numeric_limits<double>::infinity();
+  try {
+    const FairRegionReport report = fair_region(faired, region, options);
+    if (report.linear) return;  // did not settle: the floor, no flow state to measure
+    row.has_flow = true;
+    row.flow = measure(truth, faired.V, region, h);
+    row.flow_energy = bench::region_energy(faired.V, faired.F, topo, region);
+  } catch (const std::exception&) {
+  }
+}
+
+void fair_cgal([[maybe_unused]] const Mesh& mesh, [[maybe_unused]] const Topology& topo,
+               [[maybe_unused]] const std::vector<int>& region,
                [[maybe_unused]] const Truth& truth, [[maybe_unused]] double h,
                [[maybe_unused]] Row& row) {
 #ifdef FAIRSURF_BENCH_CGAL
@@ -325,6 +347,7 @@ void fair_cgal([[maybe_unused]] const Mesh& mesh, [[maybe_unused]] const std::ve
   row.cgal_ok = result.ok;
   if (row.has_cgal) {
     row.cgal = measure(truth, result.V, result.moved, h);
+    row.cgal_energy = bench::region_energy(result.V, mesh.F, topo, region);
     const ContinuityMeasure border = measure_continuity(result.V, mesh.F, region);
     if (border.border_vertices > 0) row.cgal_angle = border.max_normal_angle;
   }
@@ -341,28 +364,71 @@ Row fair_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) 
   const std::vector<int> region = vertices_in_ball(m.mesh.V, c, radius_h * m.h);
   row.size = std::to_string(region.size());
   const Truth truth(m, c);
-  fair_ours(mesh, region, truth, m.h, row);
-  fair_baseline(mesh, region, truth, m.h, row);
-  if (cgal) fair_cgal(mesh, region, truth, m.h, row);
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  row.truth_energy = bench::region_energy(m.mesh.V, m.mesh.F, topo, region);
+  fair_ours(mesh, topo, region, truth, m.h, row);
+  fair_baseline(mesh, topo, region, truth, m.h, row);
+  fair_flow_alone(mesh, topo, region, truth, m.h, row);
+  if (cgal) fair_cgal(mesh, topo, region, truth, m.h, row);
   row.uncut_angle = measure_continuity(m.mesh.V, m.mesh.F, region).max_normal_angle;
   if (row.has_cgal && row.cgal_ok && row.ours.count > 0 && row.cgal.mean > 0) set_ratios(row);
   flag_fold(row);
   return row;
 }
 
+// The flow's steady state (fair_flow_alone): its mean distance in h, then the region's energy on the
+// uncut surface and on the ∆³ baseline's result over the flow's.
+std::string flow_text(const Row& r) {
+  const auto over_flow = [&](double e) { return number(e / r.flow_energy, "%.2f"); };
+  char text[64];
+  std::snprintf(text, sizeof text, "%6s %5s %5s", r.has_flow ? number(r.flow.mean, "%.3f").c_str() : "-",
+                over_flow(r.truth_energy).c_str(), over_flow(r.baseline_energy).c_str());
+  return text;
+}
+
+// Over the clean rows where the flow settled (fair_flow_alone): how the energy ranks the surface
+// the region was cut from, the flow's steady state and the ∆³ baseline's result (geometric means of
+// their energies over the flow's), and how the distances to that surface rank the last two.
+struct EnergyTally {
+  int rows = 0, truth_higher = 0, flow_closer = 0;
+  double log_truth = 0, log_baseline = 0, log_distance = 0;
+  void add(const Row& r) {
+    if (r.noise > 0 || !r.has_flow || !r.has_baseline || !(r.flow_energy > 0) || !(r.truth_energy > 0) ||
+        !(r.baseline_energy > 0) || !(r.baseline.mean > 0))
+      return;
+    ++rows;
+    truth_higher += r.truth_energy > r.flow_energy;
+    flow_closer += r.flow.mean < r.baseline.mean;
+    log_truth += std::log(r.truth_energy / r.flow_energy);
+    log_baseline += std::log(r.baseline_energy / r.flow_energy);
+    log_distance += std::log(r.flow.mean / r.baseline.mean);
+  }
+  std::string text() const {
+    const auto mean = [&](double log_sum) { return number(rows > 0 ? std::exp(log_sum / rows) : NAN, "%.2f"); };
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "flow's steady state (clean, %d settled): energy of the uncut surface %s times its own "
+                  "(higher on %d), of D3 %s; distance %s times D3's (closer on %d)",
+                  rows, mean(log_truth).c_str(), truth_higher, mean(log_baseline).c_str(),
+                  mean(log_distance).c_str(), flow_closer);
+    return text;
+  }
+};
+
 void print_fair_header() {
-  std::printf("%-9s %6s %2s %5s %5s %-10s %-4s %5s %6s | %-12s | %-12s | %-12s | %5s | %-26s | %6s %6s %-4s %6s\n", "mesh",
-              "centre", "r", "noise", "free", "exit", "cont", "steps", "sec", "fairsurf h", "D3 h", "CGAL C2 h",
-              "ratio", "smooth: fs, D3, CGAL, ratio", "angle", "uncut", "fold", "cgal");
+  std::printf("%-9s %6s %2s %5s %5s %-10s %-4s %5s %6s | %-12s | %-12s | %-12s | %5s | %-26s | %6s %6s %-4s %6s | %-18s\n",
+              "mesh", "centre", "r", "noise", "free", "exit", "cont", "steps", "sec", "fairsurf h", "D3 h", "CGAL C2 h",
+              "ratio", "smooth: fs, D3, CGAL, ratio", "angle", "uncut", "fold", "cgal", "flow h E/flow: uncut D3");
 }
 
 void print_fair_row(const Row& r) {
-  std::printf("%-9s %6d %2d %5.2f %5s %-10s %-4s %5d %6.2f | %s | %s | %s | %5s | %s | %6s %6s %-4s %6s%s%s\n", r.mesh.c_str(),
-              r.centre, r.radius_h, r.noise, r.size.c_str(), r.status.c_str(), r.continuity.c_str(), r.steps,
-              r.seconds, pair_text(r.ours.count > 0, r.ours).c_str(), pair_text(r.has_baseline, r.baseline).c_str(),
-              pair_text(r.has_cgal, r.cgal).c_str(), number(r.ratio, "%.2f").c_str(), smooth_text(r).c_str(),
-              number(r.angle * kDegrees, "%.1f").c_str(), number(r.uncut_angle * kDegrees, "%.1f").c_str(),
-              r.fold ? "FOLD" : "-", cgal_angle_text(r).c_str(), r.note.empty() ? "" : "  ", r.note.c_str());
+  std::printf("%-9s %6d %2d %5.2f %5s %-10s %-4s %5d %6.2f | %s | %s | %s | %5s | %s | %6s %6s %-4s %6s | %-18s%s%s\n",
+              r.mesh.c_str(), r.centre, r.radius_h, r.noise, r.size.c_str(), r.status.c_str(), r.continuity.c_str(),
+              r.steps, r.seconds, pair_text(r.ours.count > 0, r.ours).c_str(),
+              pair_text(r.has_baseline, r.baseline).c_str(), pair_text(r.has_cgal, r.cgal).c_str(),
+              number(r.ratio, "%.2f").c_str(), smooth_text(r).c_str(), number(r.angle * kDegrees, "%.1f").c_str(),
+              number(r.uncut_angle * kDegrees, "%.1f").c_str(), r.fold ? "FOLD" : "-", cgal_angle_text(r).c_str(),
+              flow_text(r).c_str(), r.note.empty() ? "" : "  ", r.note.c_str());
   std::fflush(stdout);
 }
 
@@ -370,6 +436,7 @@ std::string fair_section(const std::vector<Loaded>& meshes, bool cgal) {
   std::printf("== fair: the vertices strictly inside the ball freed on the uncut mesh; distances in h ==\n");
   print_fair_header();
   Tally tally;
+  EnergyTally energies;
   int errors = 0;
   for (int noisy = 0; noisy < 2; ++noisy)
     for (const Loaded& m : meshes)
@@ -377,6 +444,7 @@ std::string fair_section(const std::vector<Loaded>& meshes, bool cgal) {
         for (int radius_h : {4, 8}) {
           const Row row = fair_case(m, centre, radius_h, noisy, cgal);
           print_fair_row(row);
+          energies.add(row);
           add_csv(row);
           ++tally.rows;
           errors += row.status == "error";
@@ -386,8 +454,9 @@ std::string fair_section(const std::vector<Loaded>& meshes, bool cgal) {
           tally.compare(row);
         }
   char text[1024];
-  std::snprintf(text, sizeof text, "fair: %d steady G2 of %d, errors %d, folds %d (CGAL %d), %s", tally.steady,
-                tally.rows, errors, tally.folds, tally.cgal_folds, tally.comparison_text().c_str());
+  std::snprintf(text, sizeof text, "fair: %d steady G2 of %d, errors %d, folds %d (CGAL %d), %s; %s", tally.steady,
+                tally.rows, errors, tally.folds, tally.cgal_folds, tally.comparison_text().c_str(),
+                energies.text().c_str());
   std::printf("fair summary: %s\n\n", text);
   return text;
 }

@@ -25,6 +25,12 @@ struct Row {
   bool has_baseline = false, has_cgal = false, cgal_ok = false, fold = false, cgal_fold = false;
   bool disks = true;  // fill: the cut removed disks only (a ball across a thin tube removes an annulus)
   double ratio = NAN, smooth_ratio = NAN, angle = NAN, uncut_angle = NAN, cgal_angle = NAN;
+  // fair: region_energy of the uncut (clean) mesh, of fairsurf's result, the ∆³ baseline's and CGAL's,
+  // and the sixth-order flow's steady state delivered whatever the held-out rings and fold check
+  // say (flow: its distances; has_flow where it settled).
+  double truth_energy = NAN, energy = NAN, baseline_energy = NAN, cgal_energy = NAN, flow_energy = NAN;
+  DistanceStats flow;
+  bool has_flow = false;
 };
 
 // Ratios of fairsurf's mean distance to CGAL's, and comparisons with the ∆³ baseline's, by one
