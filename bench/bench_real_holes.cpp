@@ -141,6 +141,16 @@ FillReport run_fill(const Mesh& cut, const FillOptions& options, const Truth& tr
   return report;
 }
 
+// The largest max normal angle across a filled hole's border; NaN where no patch has an interior
+// vertex (border_vertices 0: no measure, not 0°).
+double max_border_angle(const FillReport& report) {
+  double angle = NAN;
+  for (const HoleReport& r : report.holes)
+    if (r.continuity.border_vertices > 0)
+      angle = std::isnan(angle) ? r.continuity.max_normal_angle : std::max(angle, r.continuity.max_normal_angle);
+  return angle;
+}
+
 void fill_ours(const Mesh& cut, const Truth& truth, double h, Row& row) {
   // FillOptions{} is exactly what `fairsurf fill` runs without options (apps/fairsurf/cmd_fill.cpp
   // starts from it and sets continuity G2, method flow, f = H: the defaults).
@@ -150,14 +160,11 @@ void fill_ours(const Mesh& cut, const Truth& truth, double h, Row& row) {
     row.continuity = continuity_text(report);
     row.seconds = report.seconds;
     row.status = report.failed > 0 ? "failed" : "ok";
+    row.angle = max_border_angle(report);
     for (const HoleReport& r : report.holes) {
       row.steps += r.steps;
       if (r.status == HoleStatus::filled)
         add_choice(row, r);
-      // A patch without interior vertex has no measure (border_vertices 0); NaN then, not 0°.
-      if (r.continuity.border_vertices > 0)
-        row.angle = std::isnan(row.angle) ? r.continuity.max_normal_angle
-                                          : std::max(row.angle, r.continuity.max_normal_angle);
       if (r.status == HoleStatus::failed) add_note(row, r.reason);
     }
   } catch (const std::exception& e) {
@@ -174,6 +181,7 @@ void fill_baseline(const Mesh& cut, const Truth& truth, double h, Row& row) {
   try {
     const FillReport report = run_fill(cut, options, truth, h, row.baseline);
     row.has_baseline = report.failed == 0;
+    row.baseline_angle = max_border_angle(report);
     if (report.failed > 0) add_note(row, "∆³ failed");
   } catch (const std::exception& e) {
     add_note(row, "∆³: " + std::string(e.what()));

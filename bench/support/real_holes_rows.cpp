@@ -14,7 +14,7 @@ std::string csv_header() {
   return "section,mesh,centre,radius_h,noise_h,size,status,continuity,steps,seconds,mean_h,max_h,"
          "baseline_mean_h,baseline_max_h,cgal_mean_h,cgal_max_h,ratio,angle_deg,uncut_angle_deg,fold,"
          "cgal_angle_deg,cgal_fold,smooth_mean_h,baseline_smooth_mean_h,cgal_smooth_mean_h,smooth_ratio,disks,new_vertices,cgal_new_vertices,choice,held_out,"
-         "truth_energy,energy,baseline_energy,cgal_energy,flow_mean_h,flow_energy,note\n";
+         "truth_energy,energy,baseline_energy,cgal_energy,flow_mean_h,flow_energy,baseline_angle_deg,note\n";
 }
 
 std::string number(double x, const char* format) {
@@ -56,7 +56,8 @@ std::string csv_line(const Row& r) {
               "," + std::to_string(r.ours.count) + "," + (r.has_cgal ? std::to_string(r.cgal.count) : std::string()) +
               "," + csv_escape(r.choice) + "," + csv_escape(r.held_out) + "," + number(r.truth_energy) + "," +
               number(r.energy) + "," + number(r.baseline_energy) + "," + number(r.cgal_energy) + "," +
-              stat(r.has_flow, r.flow.mean) + "," + number(r.flow_energy) + "," + csv_escape(r.note) + "\n";
+              stat(r.has_flow, r.flow.mean) + "," + number(r.flow_energy) + "," + number(r.baseline_angle * kDegrees) + "," +
+              csv_escape(r.note) + "\n";
 }
 
 std::string cgal_angle_text(const Row& r) {
