@@ -337,11 +337,13 @@ void fair_flow_alone(const Mesh& mesh, const Topology& topo, const std::vector<i
   options.max_border_angle_ratio = std::numeric_limits<double>::infinity();
   try {
     const FairRegionReport report = fair_region(faired, region, options);
-    if (report.linear) return;  // did not settle: the floor, no flow state to measure
+    // The floor (the flow did not settle, or its state crossed the mesh): no flow state to weigh.
+    if (report.linear) return;
     row.has_flow = true;
     row.flow = measure(truth, faired.V, region, h);
     row.flow_energy = bench::region_energy(faired.V, faired.F, topo, region);
   } catch (const std::exception&) {
+    // Nor where it threw; the delivered fairing's own run reports the error.
   }
 }
 
