@@ -131,11 +131,12 @@ enum class HeldOutChoice { flow, two_ring_flow, linear, refined_linear };
 // taken where it beats the re-evaluated solution by kRefinedStartMargin (the flows are then not tried).
 HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, const FairRegionOptions& options,
                                  FairRegionReport& report, const Vertices* refined) {
-  if (options.method != FairMethod::flow || !options.linear_floor || options.held_out_rings <= 0 ||
-      options.harmonic_start_iterations <= 0)
-    return HeldOutChoice::flow;
+  const bool linear_method = options.method == FairMethod::harmonic;
+  if (linear_method ? !refined || options.held_out_rings <= 0
+                    : !options.linear_floor || options.held_out_rings <= 0 || options.harmonic_start_iterations <= 0)
+    return linear_method ? HeldOutChoice::linear : HeldOutChoice::flow;
   const fair_detail::HeldOutErrors errors =
-      fair_detail::held_out_errors(sub, local, options.held_out_rings, options, refined);
+      fair_detail::held_out_errors(sub, local, options.held_out_rings, options, refined, !linear_method);
   report.held_out_flow_error = errors.flow;
   report.held_out_two_ring_flow_error = errors.two_ring_flow;
   report.held_out_linear_error = errors.linear;
@@ -144,14 +145,22 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
   const int order = static_cast<int>(report.supported) + 1;
   char text[320];
   if (errors.refined_start_wins()) {
-    std::snprintf(text, sizeof text,
-                  "one linear ∆%d solve from the patch before its membrane re-predicts the %d rings around the "
-                  "region more than twice as well as the re-evaluated ∆%d solution the %s flow starts from "
-                  "(%.3g against %.3g mean edges off the input); the flow was not tried",
-                  order, options.held_out_rings, order, flow_name, errors.refined_linear, errors.linear);
+    if (linear_method)
+      std::snprintf(text, sizeof text,
+                    "one linear ∆%d solve from the patch before its membrane re-predicts the %d rings around the "
+                    "region more than twice as well as the re-evaluated ∆%d solution (%.3g against %.3g mean "
+                    "edges off the input)",
+                    order, options.held_out_rings, order, errors.refined_linear, errors.linear);
+    else
+      std::snprintf(text, sizeof text,
+                    "one linear ∆%d solve from the patch before its membrane re-predicts the %d rings around the "
+                    "region more than twice as well as the re-evaluated ∆%d solution the %s flow starts from "
+                    "(%.3g against %.3g mean edges off the input); the flow was not tried",
+                    order, options.held_out_rings, order, flow_name, errors.refined_linear, errors.linear);
     report.note = text;
     return HeldOutChoice::refined_linear;
   }
+  if (linear_method) return HeldOutChoice::linear;
   const bool two_ring = errors.two_ring_flow < errors.flow;  // false for NaN (not weighed)
   const double best_flow = two_ring ? errors.two_ring_flow : errors.flow;
   if (errors.linear * options.held_out_margin < best_flow) {
@@ -214,9 +223,7 @@ void fair_submesh(Submesh& sub, const Topology& local, const Region& region, con
   harmonic.solver = options.harmonic_solver;
   harmonic.iterations = std::max(1, options.harmonic_start_iterations);
   harmonic.tolerance = options.harmonic_start_tolerance;
-  HeldOutChoice choice = options.method == FairMethod::harmonic
-                             ? HeldOutChoice::linear
-                             : choose_by_held_out(sub, local, options, report, refined);
+  HeldOutChoice choice = choose_by_held_out(sub, local, options, report, refined);
   if (choice == HeldOutChoice::refined_linear) {
     HarmonicOptions once = harmonic;
     once.iterations = 1;

@@ -97,7 +97,7 @@ double flow_held_out_error(const Mesh& mesh, const Topology& topo, const std::ve
 }  // namespace
 
 HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int rings, const FairRegionOptions& fairing,
-                              const Vertices* refined) {
+                              const Vertices* refined, bool weigh_flows) {
   const std::vector<int> free = k_ring(topo, sub.free_local, rings);
   std::vector<int> held_out;
   std::set_difference(free.begin(), free.end(), sub.free_local.begin(), sub.free_local.end(),
@@ -130,11 +130,12 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
     from.V = *refined;
     from.F = sub.mesh.F;
     errors.refined_linear = linear_trial(std::move(from), sub.mesh, topo, free, held_out, normal, edge, once).error;
-    if (errors.refined_start_wins()) {  // the flows would start from the solution it beats
-      errors.flow = std::numeric_limits<double>::quiet_NaN();
-      if (weigh_two_ring) errors.two_ring_flow = errors.flow;
-      return errors;
-    }
+  }
+  // Where the refined solve wins, the flows would start from the solution it beats.
+  if (errors.refined_start_wins() || !weigh_flows) {
+    errors.flow = std::numeric_limits<double>::quiet_NaN();
+    if (weigh_two_ring) errors.two_ring_flow = errors.flow;
+    return errors;
   }
   // The flow trials start from it (or, without a harmonic start, from the input).
   const LinearTrial* start = linear.ok && flow.harmonic_start_iterations > 0 ? &linear : nullptr;

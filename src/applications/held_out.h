@@ -44,10 +44,11 @@ struct HeldOutErrors {
 /// linear ∆^k solution alone, and measures how far each moved the held-out vertices off the input's
 /// tangent planes there. `refined`, if given (#V of sub.mesh by 3, differing from it at the free
 /// vertices only), is weighed too, before the flows: one ∆^k solve from those positions; where it
-/// wins (HeldOutErrors::refined_start_wins) the flows are not tried.
+/// wins (HeldOutErrors::refined_start_wins) the flows are not tried, nor where `weigh_flows` is false
+/// (the linear method: only the two linear solutions are weighed).
 /// `local`: the connectivity of sub.mesh.
 HeldOutErrors held_out_errors(const Submesh& sub, const Topology& local, int rings, const FairRegionOptions& fairing,
-                              const Vertices* refined = nullptr);
+                              const Vertices* refined = nullptr, bool weigh_flows = true);
 
 /// fair_region on a mesh that has passed its validation, with `topo` the connectivity of mesh.F.
 /// `measure`: measure report.continuity (a trial whose report is discarded skips it). `whole`, if

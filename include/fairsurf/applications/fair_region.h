@@ -126,7 +126,8 @@ struct FairRegionReport {
   double held_out_refined_linear_error = std::numeric_limits<double>::quiet_NaN();
   /// Fill only: the delivered linear solution is that one (report.linear is then true too), taken
   /// where its held-out error is under half the re-evaluated linear solution's, from which the
-  /// flows start; they are then not tried (their errors NaN).
+  /// flows start; they are then not tried (their errors NaN). The linear method (method = harmonic,
+  /// with held_out_rings) weighs the same two linear solutions and no flow.
   bool refined_start = false;
   /// The fairing first reached crossed the mesh, and the linear solution delivered is the first
   /// that does not, possibly at a lower continuity than the rings support (`supported` is then

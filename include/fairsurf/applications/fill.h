@@ -93,7 +93,9 @@ struct HoleReport {
   Continuity requested = Continuity::G2;
   Continuity supported = Continuity::G2;  ///< the continuity the fairing used
   /// The patch is the linear ∆^k solution (k = supported + 1): C(k−1), not G(k−1) — the harmonic
-  /// method, or the floor kept when the flow did not settle or its patch crossed the mesh.
+  /// method, or the floor kept when the flow did not settle or its patch crossed the mesh. It is
+  /// the re-evaluated solution from the membrane, except where the held-out rings prefer one solve
+  /// from the patch before its membrane by more than twice (refined_start; no flow is then tried).
   /// delivered_label(supported, linear) names it ("G2", "C2 (linear)"). A patch without interior
   /// vertex (a small loop's triangulation alone) is reported C0 (linear), with a note.
   bool linear = false;
