@@ -37,7 +37,7 @@ struct Row {
 // Ratios of fairsurf's mean distance to CGAL's, and comparisons with the ∆³ baseline's, by one
 // measure (to the uncut mesh, or to its smooth stand-in).
 struct Comparison {
-  int compared = 0, below = 0, baseline_compared = 0, below_baseline = 0;
+  int compared = 0, below = 0, baseline_compared = 0, below_baseline = 0, same_as_baseline = 0;
   double log_ratio = 0, worst = 0;
   void ratio(double r) {
     if (std::isnan(r) || r <= 0) return;
@@ -49,6 +49,7 @@ struct Comparison {
   void baseline(double ours, double baseline) {
     ++baseline_compared;
     below_baseline += ours < baseline;
+    same_as_baseline += ours == baseline;  // the linear solution delivered: the baseline's own fill
   }
   std::string text() const {
     std::string t = "no CGAL comparison";
@@ -58,7 +59,8 @@ struct Comparison {
                     below, compared, 100.0 * below / compared, std::exp(log_ratio / compared), worst);
       t = text;
     }
-    return t + ", below D3 on " + std::to_string(below_baseline) + " of " + std::to_string(baseline_compared);
+    return t + ", below D3 on " + std::to_string(below_baseline) + " of " + std::to_string(baseline_compared) +
+           " (the same as D3 on " + std::to_string(same_as_baseline) + ")";
   }
 };
 
