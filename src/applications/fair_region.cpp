@@ -129,6 +129,8 @@ enum class HeldOutChoice { flow, two_ring_flow, linear, refined_linear };
 // must win by FairRegionOptions::held_out_margin; ties keep the flow.
 // `refined` (fill): one ∆^k solve from these positions of the free vertices is weighed first, and
 // taken where it beats the re-evaluated solution by kRefinedStartMargin (the flows are then not tried).
+// The linear method (method = harmonic) weighs only these two: with `refined` and held-out rings it
+// returns refined_linear or linear, else linear.
 HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, const FairRegionOptions& options,
                                  FairRegionReport& report, const Vertices* refined) {
   const bool linear_method = options.method == FairMethod::harmonic;
@@ -145,18 +147,13 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
   const int order = static_cast<int>(report.supported) + 1;
   char text[320];
   if (errors.refined_start_wins()) {
-    if (linear_method)
-      std::snprintf(text, sizeof text,
-                    "one linear ∆%d solve from the patch before its membrane re-predicts the %d rings around the "
-                    "region more than twice as well as the re-evaluated ∆%d solution (%.3g against %.3g mean "
-                    "edges off the input)",
-                    order, options.held_out_rings, order, errors.refined_linear, errors.linear);
-    else
-      std::snprintf(text, sizeof text,
-                    "one linear ∆%d solve from the patch before its membrane re-predicts the %d rings around the "
-                    "region more than twice as well as the re-evaluated ∆%d solution the %s flow starts from "
-                    "(%.3g against %.3g mean edges off the input); the flow was not tried",
-                    order, options.held_out_rings, order, flow_name, errors.refined_linear, errors.linear);
+    const std::string flow_start = linear_method ? "" : std::string(" the ") + flow_name + " flow starts from";
+    std::snprintf(text, sizeof text,
+                  "one linear ∆%d solve from the patch before its membrane re-predicts the %d rings around the "
+                  "region more than twice as well as the re-evaluated ∆%d solution%s (%.3g against %.3g mean edges "
+                  "off the input)%s",
+                  order, options.held_out_rings, order, flow_start.c_str(), errors.refined_linear, errors.linear,
+                  linear_method ? "" : "; the flow was not tried");
     report.note = text;
     return HeldOutChoice::refined_linear;
   }
