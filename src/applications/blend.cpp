@@ -177,6 +177,31 @@ std::optional<LinearTube> linear_tube(const Mesh& mesh, const Topology& topo, co
   return linear;
 }
 
+// The linear ∆^k tube from the tube as built, solved at most once: flow_tube's descent starts from
+// it and fair_tube falls back to it where the flow's tube crosses the mesh. Of `mesh` only its
+// faces are read (linear_tube replaces its positions by `tube`), so the flow may move it meanwhile.
+class LinearTubeOnce {
+ public:
+  LinearTubeOnce(const Mesh& mesh, const Topology& topo, const std::vector<int>& free, const Vertices& tube,
+                 const BlendOptions& options)
+      : mesh_(mesh), topo_(topo), free_(free), tube_(tube), options_(options) {}
+  // Empty where the solve threw.
+  std::optional<LinearTube>& get() {
+    if (!solved_) linear_ = linear_tube(mesh_, topo_, free_, tube_, options_);
+    solved_ = true;
+    return linear_;
+  }
+
+ private:
+  const Mesh& mesh_;
+  const Topology& topo_;
+  const std::vector<int>& free_;
+  const Vertices& tube_;
+  const BlendOptions& options_;
+  bool solved_ = false;
+  std::optional<LinearTube> linear_;
+};
+
 // One energy descent of the tube: its result, report and steps, and whether it crosses the mesh.
 struct TubeDescent {
   Vertices V;
@@ -228,9 +253,11 @@ const TubeDescent* kept_descent(const std::vector<std::optional<TubeDescent>>& d
 // and the linear tube is the classical fairing the descent lowers E from in fill and fair. The
 // descent kept is one that does not cross the mesh, then one that does not fold against the linear
 // tube (fill's rule, border_fold.h), then the one of lowest energy. `tube`: mesh.V as the tube was
-// built. `topo`: the connectivity of mesh.F, validated by each fair_region.
+// built; `linear`: the linear tube from it. `topo`: the connectivity of mesh.F, validated by each
+// fair_region.
 FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
-                           const Vertices& tube, const BlendOptions& options, const FlowObserver& observer) {
+                           const Vertices& tube, LinearTubeOnce& linear, const BlendOptions& options,
+                           const FlowObserver& observer) {
   const bool may_descend = options.descent_fallback && options.method == FairMethod::flow &&
                            options.flow.step_kind == FlowStepKind::implicit_flow;
   std::string failure;
@@ -250,10 +277,10 @@ FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<i
   if (mesh.V != tube)  // the time-stepped flow moved
     descents.push_back(descend_tube(mesh, topo, free, first_tube_face, tube, descent, "the tube it started from"));
   double linear_angle = std::numeric_limits<double>::infinity();  // no fold without a linear tube
-  if (std::optional<LinearTube> linear = linear_tube(mesh, topo, free, tube, options)) {
-    linear_angle = linear->report.continuity.max_normal_angle;
-    descents.push_back(descend_tube(mesh, topo, free, first_tube_face, std::move(linear->mesh.V), descent,
-                                    "the linear ∆" + std::to_string(linear->order()) + " tube"));
+  if (const std::optional<LinearTube>& solved = linear.get()) {
+    linear_angle = solved->report.continuity.max_normal_angle;
+    descents.push_back(descend_tube(mesh, topo, free, first_tube_face, solved->mesh.V, descent,
+                                    "the linear ∆" + std::to_string(solved->order()) + " tube"));
   }
   const TubeDescent* best = kept_descent(descents, linear_angle);
   if (!best)
@@ -275,11 +302,12 @@ FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<i
 FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
                            const BlendOptions& options, const FlowObserver& observer) {
   const Vertices tube = mesh.V;
-  FairRegionReport report = flow_tube(mesh, topo, free, first_tube_face, tube, options, observer);
+  LinearTubeOnce linear_once(mesh, topo, free, tube, options);
+  FairRegionReport report = flow_tube(mesh, topo, free, first_tube_face, tube, linear_once, options, observer);
   const std::vector<FaceIntersection> crossings = tube_crossings(mesh, first_tube_face);
   if (crossings.empty()) return report;
   if (options.method != FairMethod::flow) throw TubeCrossing(crossing_message(crossings, first_tube_face, ""));
-  std::optional<LinearTube> linear = linear_tube(mesh, topo, free, tube, options);
+  std::optional<LinearTube>& linear = linear_once.get();
   if (linear && !tube_crosses(linear->mesh, first_tube_face)) {
     linear->report.note = std::string("the ") + to_string(report.flow_kind) + " flow's tube crosses the mesh" +
                           (report.note.empty() ? "" : " (" + report.note + ")") + "; kept the linear ∆" +
