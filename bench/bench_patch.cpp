@@ -49,11 +49,13 @@ Hole wavy_hole(int n) {
   return h;
 }
 
-void triangulate(benchmark::State& state, int threshold) {
+// `starts`: HoleTriangulationOptions::start_vertices.
+void triangulate(benchmark::State& state, int threshold, int starts = HoleTriangulationOptions{}.start_vertices) {
   const Hole h = wavy_hole(static_cast<int>(state.range(0)));
   HoleTriangulation t;
   for (auto _ : state) {
-    t = triangulate_hole(h.mesh.V, h.mesh.F, h.topo, h.loop, {.max_dynamic_programming_size = threshold});
+    t = triangulate_hole(h.mesh.V, h.mesh.F, h.topo, h.loop,
+                         {.max_dynamic_programming_size = threshold, .start_vertices = starts});
     benchmark::DoNotOptimize(t.faces.data());
   }
   state.counters["loop_edges"] = static_cast<double>(h.loop.size());
@@ -62,6 +64,7 @@ void triangulate(benchmark::State& state, int threshold) {
 }
 
 void BM_TriangulateHole(benchmark::State& state) { triangulate(state, 200); }
+void BM_TriangulateHoleFirstStartOnly(benchmark::State& state) { triangulate(state, 200, 1); }
 void BM_TriangulateHoleWholeProgramme(benchmark::State& state) { triangulate(state, 100000); }
 
 double target_for(double new_vertices) { return std::sqrt(2 * std::numbers::pi / (std::sqrt(3.0) * new_vertices)); }
@@ -104,6 +107,7 @@ void BM_RelaxMembrane(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_TriangulateHole)->Arg(50)->Arg(200)->Arg(800)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TriangulateHoleFirstStartOnly)->Arg(50)->Arg(200)->Arg(800)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TriangulateHoleWholeProgramme)->Arg(400)->Arg(800)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_RefinePatch)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_RelaxMembrane)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond)->Iterations(1);

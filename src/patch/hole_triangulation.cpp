@@ -127,14 +127,14 @@ struct Polygon {
 
 class Triangulator {
  public:
-  Triangulator(const Vertices& V, const Topology& topo, int threshold,
+  Triangulator(const Vertices& V, const Topology& topo, const HoleTriangulationOptions& options,
                const Forbidden& forbidden)
-      : V_(V), topo_(topo), threshold_(threshold), forbidden_(forbidden) {}
+      : V_(V), topo_(topo), options_(options), forbidden_(forbidden) {}
 
   // Appends the triangles of `poly` to `out` (each as (v_k, v_j, v_i), reversing the loop order).
   void triangulate(const Polygon& poly, std::vector<Eigen::Vector3i>& out) {
     const auto repeat = repeated_positions(poly);
-    if (repeat.first < 0 && poly.size() <= threshold_) return solve(poly, out);
+    if (repeat.first < 0 && poly.size() <= options_.max_dynamic_programming_size) return solve(poly, out);
     divided_ = divided_ || repeat.first < 0;
     const auto [a, b] = repeat.first < 0 ? best_cut(poly) : bridge_cut(poly, repeat.first, repeat.second);
     Polygon first, second;
@@ -235,8 +235,58 @@ class Triangulator {
     return Vec3::Zero();
   }
 
-  // Liepa's dynamic programme on one polygon.
+  // Liepa's dynamic programme on one polygon, from `start_vertices` starts evenly spaced round it.
+  // The first start's triangulation is kept unless another's is lighter by the exact weight with
+  // its largest angle raised by `start_margin` (HoleTriangulationOptions).
   void solve(const Polygon& poly, std::vector<Eigen::Vector3i>& out) {
+    const int m = poly.size(), starts = std::min(options_.start_vertices, m);
+    std::vector<Eigen::Vector3i> best;
+    Weight best_weight{kInfinity, kInfinity};
+    for (int q = 0; q < starts; ++q) {
+      const Polygon rotated = rotate(poly, static_cast<int>(static_cast<long long>(q) * m / starts));
+      // A later start can only replace the best below this largest angle: candidates above it are
+      // skipped, which prunes most of its programme.
+      const double bound = q == 0 ? kInfinity : best_weight.angle - options_.start_margin + kAngleTie;
+      std::vector<Eigen::Vector3i> faces = solve_from_start(rotated, bound);
+      if (faces.empty()) continue;  // nothing below the bound
+      const TriangulationWeight w = piece_weight(rotated, faces);
+      const Weight handicapped{w.max_dihedral_angle + (q > 0 ? options_.start_margin : 0.0), w.area};
+      if (best.empty() || lighter(handicapped, best_weight)) best = std::move(faces), best_weight = handicapped;
+    }
+    for (const Eigen::Vector3i& f : best) {
+      out.push_back(f);
+      for (int k = 0; k < 3; ++k)  // its diagonals (and sides, already mesh edges or cuts) are taken
+        made_.insert(undirected_key(f[k], f[(k + 1) % 3]));
+    }
+  }
+
+  // The polygon with vertex `r` first, its sides following their vertices.
+  static Polygon rotate(const Polygon& poly, int r) {
+    Polygon rotated;
+    for (int t = 0; t < poly.size(); ++t) {
+      rotated.vertices.push_back(poly.vertices[(r + t) % poly.size()]);
+      rotated.side_normals.push_back(poly.side_normals[(r + t) % poly.size()]);
+    }
+    return rotated;
+  }
+
+  // The header's weight of `faces` triangulating `poly`: against the faces outside its sides, where
+  // known (a cut not yet weighed has none).
+  TriangulationWeight piece_weight(const Polygon& poly, const std::vector<Eigen::Vector3i>& faces) const {
+    std::unordered_map<std::uint64_t, Vec3> outside;
+    for (int t = 0; t < poly.size(); ++t)
+      if (!poly.side_normals[t].isZero())
+        outside[edge_key(poly.vertices[t], poly.vertices[(t + 1) % poly.size()])] = poly.side_normals[t];
+    Faces F(static_cast<Eigen::Index>(faces.size()), 3);
+    for (std::size_t f = 0; f < faces.size(); ++f) F.row(static_cast<Eigen::Index>(f)) = faces[f].transpose();
+    return weigh(V_, F, outside);
+  }
+
+  // Liepa's dynamic programme from the polygon's first vertex: its triangles, each as
+  // (v_k, v_j, v_i), reversing the loop order. Candidates whose largest angle exceeds `bound` are
+  // not considered (their sub-polygons' weights are kept exact below it); none if none is left
+  // below a finite bound.
+  std::vector<Eigen::Vector3i> solve_from_start(const Polygon& poly, double bound) const {
     const int m = poly.size();
     std::vector<Weight> weight(static_cast<std::size_t>(m) * m);
     std::vector<int> apex(static_cast<std::size_t>(m) * m, -1);
@@ -263,37 +313,40 @@ class Triangulator {
             const Weight& right = weight[at(j, k)];
             // The sub-polygons' angles bound this candidate's from below: skip hopeless ones
             // before any trigonometry (this prunes most candidates).
-            if (std::max(left.angle, right.angle) > best.angle + kAngleTie) continue;
+            if (std::max(left.angle, right.angle) > std::min(best.angle + kAngleTie, bound)) continue;
             const Vec3 n = normal(i, j, k);
             double angle = std::max({left.angle, right.angle, dihedral(n, inner_normal(i, j)),
                                      dihedral(n, inner_normal(j, k))});
             if (top && !poly.side_normals[m - 1].isZero())
               angle = std::max(angle, dihedral(n, poly.side_normals[m - 1]));
+            if (angle > bound) continue;
             const Weight w{angle, left.area + right.area + 0.5 * n.norm()};
             if (lighter(w, best)) best = w, apex[at(i, k)] = j;
           }
         weight[at(i, k)] = best;
         if (apex[at(i, k)] >= 0) apex_normal[at(i, k)] = normal(i, apex[at(i, k)], k);
       }
+    if (apex[at(0, m - 1)] < 0 && bound < kInfinity) return {};
     if (apex[at(0, m - 1)] < 0)
       throw InvalidMeshError("triangulate_hole: no admissible triangulation of a hole of " +
                              std::to_string(m) + " edges (every candidate duplicates a mesh edge)");
+    std::vector<Eigen::Vector3i> faces;
     std::vector<std::pair<int, int>> stack{{0, m - 1}};
     while (!stack.empty()) {
       const auto [i, k] = stack.back();
       stack.pop_back();
       if (k - i < 2) continue;
       const int j = apex[at(i, k)];
-      out.emplace_back(vertex(k), vertex(j), vertex(i));
-      made_.insert(undirected_key(vertex(i), vertex(k)));
+      faces.emplace_back(vertex(k), vertex(j), vertex(i));
       stack.emplace_back(i, j);
       stack.emplace_back(j, k);
     }
+    return faces;
   }
 
   const Vertices& V_;
   const Topology& topo_;
-  int threshold_;
+  const HoleTriangulationOptions& options_;
   const Forbidden& forbidden_;  // what crossed the mesh in an earlier round
   bool divided_ = false;
   std::unordered_set<std::uint64_t> made_;  // diagonals of the pieces solved so far
@@ -320,8 +373,12 @@ HoleTriangulation triangulate_avoiding_crossings(const Vertices& V, const Faces&
   Forbidden forbidden;
   std::size_t fewest = std::numeric_limits<std::size_t>::max();
   std::vector<int> added;
+  // The rounds after the first solve from the first start only: each costs a whole programme, and
+  // a loop that crosses the mesh may take tens of them (docs/patch.md).
+  HoleTriangulationOptions later = options;
+  later.start_vertices = 1;
   for (int round = 0; round <= options.max_crossing_rounds; ++round) {
-    Triangulator triangulator(V, topo, options.max_dynamic_programming_size, forbidden);
+    Triangulator triangulator(V, topo, round == 0 ? options : later, forbidden);
     std::vector<Eigen::Vector3i> faces;
     try {
       triangulator.triangulate(poly, faces);
@@ -354,6 +411,12 @@ HoleTriangulation triangulate_hole(const Vertices& V, const Faces& F, const Topo
   if (options.max_dynamic_programming_size < 3)
     throw InvalidArgument("triangulate_hole: max_dynamic_programming_size must be at least 3, got " +
                           std::to_string(options.max_dynamic_programming_size));
+  if (options.start_vertices < 1)
+    throw InvalidArgument("triangulate_hole: start_vertices must be at least 1, got " +
+                          std::to_string(options.start_vertices));
+  if (!(options.start_margin >= 0))
+    throw InvalidArgument("triangulate_hole: start_margin must be at least 0, got " +
+                          std::to_string(options.start_margin));
   if (options.max_crossing_rounds < 0)
     throw InvalidArgument("triangulate_hole: max_crossing_rounds must be at least 0, got " +
                           std::to_string(options.max_crossing_rounds));

@@ -5,6 +5,7 @@
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/topology.h>
 #include <fairsurf/mesh/validate.h>
+#include <fairsurf/patch/hole_triangulation.h>
 
 #include <gtest/gtest.h>
 
@@ -22,6 +23,8 @@
 using namespace fairsurf;
 
 namespace {
+
+constexpr double kDegree = std::numbers::pi / 180;
 
 struct RealHole {
   std::string mesh;
@@ -109,7 +112,8 @@ TEST_P(RealHoles, FilledWatertightAndNeverAFlowThatPredictsWorseThanTheLinearFlo
     ASSERT_FALSE(std::isnan(hole.held_out_flow_error));
     ASSERT_FALSE(std::isnan(hole.held_out_two_ring_flow_error));
     const double best_flow = std::min(hole.held_out_flow_error, hole.held_out_two_ring_flow_error);
-    EXPECT_EQ(hole.linear, hole.held_out_linear_error < best_flow) << hole.note;
+    // Within the margin a tie goes to the flow (FillOptions::held_out_margin).
+    EXPECT_EQ(hole.linear, hole.held_out_linear_error * FillOptions{}.held_out_margin < best_flow) << hole.note;
     EXPECT_EQ(hole.two_ring_boundary_fits,
               !hole.linear && hole.held_out_two_ring_flow_error < hole.held_out_flow_error) << hole.note;
   }
@@ -175,6 +179,41 @@ TEST(RealHoleTailFin, TheLinearMethodAlsoTakesTheSolveFromBeforeTheMembrane) {
   EXPECT_EQ(linear.V, ball.r.filled.V);  // the default's fill of this hole, to the bit
   const double distance = mean_new_vertex_distance(linear, ball.cut.num_vertices(), ball.truth) / ball.h;
   EXPECT_LT(distance, 0.5 * ball.r.floor_distance);
+}
+
+// blub's 73-edge hole in the concave corner where a fin meets the body (bench_real_holes' random
+// centre 592, 8h). Liepa's programme from the loop's first vertex webs the corner over (largest
+// dihedral 69°), and every fill refined from that web lay 0.7 h from the surface (CGAL 5.5: 0.9 h
+// with its Delaunay-restricted search, 0.12 h without). Solved from 8 starts, another start finds
+// a triangulation that follows the corner (44°); the fill then lands within a tenth of an edge, and
+// the re-evaluated ∆³ floor within a fifth.
+TEST(RealHoleConcaveCorner, AnotherStartOfTheTriangulationFollowsTheCorner) {
+  const BallHole ball = fill_ball_hole("blub.obj", {0.39591, -0.122001, -0.340859}, 8);
+  ASSERT_EQ(ball.r.report.holes.size(), 1u);
+  const HoleReport& hole = ball.r.hole();
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  ASSERT_EQ(hole.border_edges, 73);
+
+  const Topology topo = build_topology(ball.cut.F, ball.cut.num_vertices());
+  const auto loop = boundary_loops(ball.cut.F, topo).front();
+  const HoleTriangulation first = triangulate_hole(ball.cut.V, ball.cut.F, topo, loop, {.start_vertices = 1});
+  const HoleTriangulation eight = triangulate_hole(ball.cut.V, ball.cut.F, topo, loop);
+  EXPECT_GT(first.max_dihedral_angle, 60 * kDegree);
+  EXPECT_LT(eight.max_dihedral_angle, 50 * kDegree);
+
+  // The web the first start drew, refined and faired the same way, for comparison.
+  Mesh webbed = ball.cut;
+  FillOptions first_start;
+  first_start.patch.triangulation.start_vertices = 1;
+  fill_holes(webbed, first_start);
+  const double webbed_distance = mean_new_vertex_distance(webbed, ball.cut.num_vertices(), ball.truth) / ball.h;
+  std::printf("[concave corner] blub 8h: largest dihedral %.1f° from the first start, %.1f° from 8; mean "
+              "distance %.3f h (∆³ %.3f h), from the first start's triangulation %.3f h\n",
+              first.max_dihedral_angle / kDegree, eight.max_dihedral_angle / kDegree, ball.r.distance,
+              ball.r.floor_distance, webbed_distance);
+  EXPECT_LT(ball.r.distance, 0.15);
+  EXPECT_LT(ball.r.floor_distance, 0.25);
+  EXPECT_GT(webbed_distance, 3 * ball.r.distance);
 }
 
 // A raw scan (data/hammer_rawscan.obj) cut by a 3 h ball: the held-out rings prefer the flow (0.143
