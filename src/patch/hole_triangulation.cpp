@@ -373,7 +373,7 @@ HoleTriangulation triangulate_avoiding_crossings(const Vertices& V, const Faces&
   Forbidden forbidden;
   std::size_t fewest = std::numeric_limits<std::size_t>::max();
   std::vector<int> added;
-  // The rounds after the first solve from the first start only: each costs a whole programme, and
+  // Rounds after the first are solved from the first start only: each costs a whole programme, and
   // a loop that crosses the mesh may take tens of them (docs/patch.md).
   HoleTriangulationOptions later = options;
   later.start_vertices = 1;

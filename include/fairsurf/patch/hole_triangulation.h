@@ -73,7 +73,7 @@ struct HoleTriangulationOptions {
   double start_margin = 10.0 * std::numbers::pi / 180.0;
   /// A triangulation whose faces cross the mesh (face_intersection.h) is solved again with the
   /// crossing triangles forbidden, at most this many times; the one with the fewest crossings is
-  /// kept. 0: no check. The rounds after the first solve from the loop's first vertex only.
+  /// kept. 0: no check. Rounds after the first are solved from the loop's first vertex only.
   int max_crossing_rounds = 100;
 };
 
