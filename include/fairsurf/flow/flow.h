@@ -84,8 +84,10 @@ namespace fairsurf {
 ///                   over accepted steps; the run is steady once E stops decreasing (FlowOptions::
 ///                   steady_energy_tolerance: an accepted step lowers E by less than that fraction,
 ///                   or two rejected trials in a row whose damping no longer changes the model's
-///                   promise (within 1%) are promised less than it: the model's own minimum is that
-///                   close; or max_consecutive_rejections rejections in a row: no descent is left to
+///                   promise (within 1%) are promised less than it, or less than ten times it and
+///                   less than E rose by on both: the model's own minimum is that close, or closer
+///                   than the model resolves; or max_consecutive_rejections rejections in a row: no
+///                   descent is left to
 ///                   round-off). For fill, fair and blend, which need the steady
 ///                   state only: on real meshes the fitted EL is not the gradient of the discrete E
 ///                   (method.md §3: composed operators are inconsistent on irregular meshes), so its
