@@ -134,9 +134,9 @@ enum class HeldOutChoice { flow, two_ring_flow, linear, refined_linear };
 HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, const FairRegionOptions& options,
                                  FairRegionReport& report, const Vertices* refined) {
   const bool linear_method = options.method == FairMethod::harmonic;
-  if (linear_method ? !refined || options.held_out_rings <= 0
-                    : !options.linear_floor || options.held_out_rings <= 0 || options.harmonic_start_iterations <= 0)
-    return linear_method ? HeldOutChoice::linear : HeldOutChoice::flow;
+  if (options.held_out_rings <= 0) return linear_method ? HeldOutChoice::linear : HeldOutChoice::flow;
+  if (linear_method && !refined) return HeldOutChoice::linear;
+  if (!linear_method && (!options.linear_floor || options.harmonic_start_iterations <= 0)) return HeldOutChoice::flow;
   const fair_detail::HeldOutErrors errors =
       fair_detail::held_out_errors(sub, local, options.held_out_rings, options, refined, !linear_method);
   report.held_out_flow_error = errors.flow;

@@ -386,9 +386,10 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
 // were promised the same decrease by the Gauss–Newton model (within 1%: shrinking τ no longer damps
 // the step, which is the model's own minimum) and that decrease is below steady_energy_tolerance·E,
 // or below ten times that and below what E rose by on both trials (the model's error there is
-// larger than its promise: it no longer resolves a decrease). Then E has stopped decreasing. Without this test
-// the rejections went on shrinking τ over a dozen orders of magnitude, each a factorization, until
-// the damping finally bit and a step lowered E by a few 1e-7 of it (docs/flow.md, "Energy descent").
+// larger than its promise: it no longer resolves a decrease). Then E has stopped decreasing.
+// Without this test the rejections went on shrinking τ over a dozen orders of magnitude, each a
+// factorization, until the damping finally bit and a step lowered E by a few 1e-7 of it
+// (docs/flow.md, "Energy descent").
 bool FlowRun::model_minimum_reached(int consecutive_rejections) const {
   const double tolerance = options_.steady_energy_tolerance;
   if (tolerance <= 0 || consecutive_rejections < 2 || report_.records.size() < 2) return false;

@@ -237,9 +237,14 @@ class Triangulator {
 
   // Liepa's dynamic programme on one polygon, from `start_vertices` starts evenly spaced round it.
   // The first start's triangulation is kept unless another's is lighter by the exact weight with
-  // its largest angle raised by `start_margin` (HoleTriangulationOptions).
+  // its largest angle raised by `start_margin` (HoleTriangulationOptions). A side with no face
+  // outside (a cut not yet weighed, or a degenerate face across a loop edge) is left out of the
+  // weight only as the closing side, where the first start has a cut: another start would weigh it
+  // as π and could never win, so such a polygon is solved from its first start alone.
   void solve(const Polygon& poly, std::vector<Eigen::Vector3i>& out) {
-    const int m = poly.size(), starts = std::min(options_.start_vertices, m);
+    const bool unweighed_side = std::any_of(poly.side_normals.begin(), poly.side_normals.end(),
+                                            [](const Vec3& n) { return n.isZero(); });
+    const int m = poly.size(), starts = unweighed_side ? 1 : std::min(options_.start_vertices, m);
     std::vector<Eigen::Vector3i> best;
     Weight best_weight{kInfinity, kInfinity};
     for (int q = 0; q < starts; ++q) {
@@ -270,13 +275,11 @@ class Triangulator {
     return rotated;
   }
 
-  // The header's weight of `faces` triangulating `poly`: against the faces outside its sides, where
-  // known (a cut not yet weighed has none).
+  // The header's weight of `faces` triangulating `poly`, against the faces outside its sides.
   TriangulationWeight piece_weight(const Polygon& poly, const std::vector<Eigen::Vector3i>& faces) const {
     std::unordered_map<std::uint64_t, Vec3> outside;
     for (int t = 0; t < poly.size(); ++t)
-      if (!poly.side_normals[t].isZero())
-        outside[edge_key(poly.vertices[t], poly.vertices[(t + 1) % poly.size()])] = poly.side_normals[t];
+      outside[edge_key(poly.vertices[t], poly.vertices[(t + 1) % poly.size()])] = poly.side_normals[t];
     Faces F(static_cast<Eigen::Index>(faces.size()), 3);
     for (std::size_t f = 0; f < faces.size(); ++f) F.row(static_cast<Eigen::Index>(f)) = faces[f].transpose();
     return weigh(V_, F, outside);
