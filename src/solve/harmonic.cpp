@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -13,19 +14,30 @@ namespace fairsurf {
 Eigen::SparseMatrix<double> cotangent_laplacian(const Vertices& V, const Faces& F) {
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(static_cast<std::size_t>(F.rows()) * 12);
-  for (int f = 0; f < F.rows(); ++f)
+  for (int f = 0; f < F.rows(); ++f) {
+    // The angle at corner k is opposite the edge (k+1, k+2).
+    double cot[3];
     for (int k = 0; k < 3; ++k) {
-      // The angle at corner k is opposite the edge (k+1, k+2).
-      const int o = F(f, k), i = F(f, (k + 1) % 3), j = F(f, (k + 2) % 3);
-      const Eigen::Vector3d a = V.row(i) - V.row(o), b = V.row(j) - V.row(o);
-      const double sine = a.cross(b).norm();
-      if (sine == 0) continue;  // a degenerate face contributes nothing rather than infinity
-      const double half_cot = 0.5 * a.dot(b) / sine;
+      const Eigen::Vector3d a = V.row(F(f, (k + 1) % 3)) - V.row(F(f, k));
+      const Eigen::Vector3d b = V.row(F(f, (k + 2) % 3)) - V.row(F(f, k));
+      cot[k] = a.dot(b) / a.cross(b).norm();
+    }
+    // A degenerate face contributes nothing rather than infinity.
+    if (!(std::isfinite(cot[0]) && std::isfinite(cot[1]) && std::isfinite(cot[2]))) continue;
+    // The three scaled together, not clamped one by one: cot α cot β + cot β cot γ + cot γ cot α = 1
+    // keeps the face's 3×3 block semi-definite, which clamping a needle's two sharp corners but not
+    // its blunt one would break.
+    const double largest = std::max({std::abs(cot[0]), std::abs(cot[1]), std::abs(cot[2])});
+    const double scale = largest > kMaxCotangent ? kMaxCotangent / largest : 1.0;
+    for (int k = 0; k < 3; ++k) {
+      const int i = F(f, (k + 1) % 3), j = F(f, (k + 2) % 3);
+      const double half_cot = 0.5 * scale * cot[k];
       entries.emplace_back(i, j, half_cot);
       entries.emplace_back(j, i, half_cot);
       entries.emplace_back(i, i, -half_cot);
       entries.emplace_back(j, j, -half_cot);
     }
+  }
   Eigen::SparseMatrix<double> L(V.rows(), V.rows());
   L.setFromTriplets(entries.begin(), entries.end());
   return L;

@@ -5,7 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <cmath>
 #include <iostream>
+#include <numbers>
 
 #include "analytic_meshes.h"
 #include "hole_meshes.h"
@@ -93,6 +98,29 @@ TEST(CotangentLaplacian, SymmetricZeroRowSumsAndMeanCurvatureNormal) {
             << ", worst " << worst << "\n";
   EXPECT_LT(weighted_error, 0.02);
   EXPECT_LT(worst, 0.2);
+}
+
+// A needle (corners 1°, 1°, 178°) and a fair triangle sharing an edge: the needle's three
+// cotangents (57.3, 57.3, −28.6) are scaled together so that the largest is kMaxCotangent; the fair
+// one's are exact. Clamping each corner alone would give the needle's block a negative eigenvalue.
+TEST(CotangentLaplacian, ASliverFacesCotangentsAreScaledTogetherAndStaySemiDefinite) {
+  const double degree = std::numbers::pi / 180, tip = std::tan(1 * degree);
+  Vertices V(4, 3);
+  V << 0, 0, 0, 2, 0, 0, 1, tip, 0, 1, -2, 0;  // needle 0-1-2; below it 0-3-1
+  Faces F(2, 3);
+  F << 0, 1, 2, 0, 3, 1;
+  const Eigen::MatrixXd L(cotangent_laplacian(V, F));
+  const double cot_sharp = 1 / std::tan(1 * degree), cot_blunt = 1 / std::tan(178 * degree);
+  const double scale = kMaxCotangent / cot_sharp;
+  // Edge 0-2 is opposite the needle's sharp corner at 1; edge 0-1 opposite its blunt corner at 2.
+  EXPECT_NEAR(L(0, 2), 0.5 * scale * cot_sharp, 1e-9);
+  EXPECT_NEAR(L(0, 2), 0.5 * kMaxCotangent, 1e-9);
+  const Eigen::Vector3d a = V.row(0) - V.row(3), b = V.row(1) - V.row(3);
+  const double cot_below = a.dot(b) / a.cross(b).norm();
+  EXPECT_NEAR(L(0, 1), 0.5 * (scale * cot_blunt + cot_below), 1e-9);
+  EXPECT_LT((L * Eigen::VectorXd::Ones(4)).cwiseAbs().maxCoeff(), 1e-12);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(L);
+  EXPECT_LT(eigen.eigenvalues().maxCoeff(), 1e-9);  // negative semi-definite
 }
 
 TEST(HarmonicFair, ReproducesAPlaneExactly) {

@@ -17,7 +17,16 @@
 
 namespace fairsurf {
 
-/// #V by #V cotangent Laplacian: L(i,j) = ½(cot α_ij + cot β_ij), L(i,i) = −Σ_j L(i,j).
+/// The largest |cot| of a corner in cotangent_laplacian: a face with a corner sharper than about
+/// 2.9° (or blunter than 177.1°) has its three cotangents scaled down together until that corner's
+/// is this. Raw scans have such slivers: 3 corners within 3 rings of a 37-edge hole cut from
+/// data/hammer_rawscan.obj, |cot| up to 92, made ∆³ = L(M⁻¹L)² raise a ridge 0.9 mean edges off the
+/// scan (0.08 with the bound; docs/fill.md, "Sliver triangles"). Faces without such a corner weigh
+/// as before.
+inline constexpr double kMaxCotangent = 20.0;
+
+/// #V by #V cotangent Laplacian: L(i,j) = ½(cot α_ij + cot β_ij), L(i,i) = −Σ_j L(i,j), a sliver
+/// face's cotangents scaled down (kMaxCotangent).
 /// Symmetric, negative semi-definite, rows sum to zero. With M = diag(vertex_areas), M⁻¹L x ≈ 2Hn in
 /// method.md §1's convention — in the mean: with barycentric areas the pointwise error does not vanish
 /// on irregular meshes (15% at valence-5 vertices of an icosphere), which is one reason the flows use
