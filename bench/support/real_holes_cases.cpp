@@ -24,7 +24,9 @@ std::vector<MeshCase> mesh_cases() {
            {{0.00697216, -0.181279, -1.03702}, {-0.565203, -0.333718, 0.0970017}, {0.176282, 0.148983, -0.699856}}},
           {"bunny", "stanford_bunny_remesh_closed.obj", {{-0.417303, 0.45242, 0.224485}}},
           {"airplane", "airplane.obj", {}},
-          {"torus", "torus.obj", {}}};
+          {"torus", "torus.obj", {}},
+          // A raw scan: irregular triangles, slivers among them, and the scanner's own noise.
+          {"hammer", "hammer_rawscan.obj", {{0.09738, 0.250714, -2.971089}}}};
 }
 
 int nearest_vertex(const Mesh& mesh, const Eigen::Vector3d& p) {

@@ -31,7 +31,7 @@ struct Loaded {
   GridSurfaceDistance smooth;
 };
 
-/// spot, blub, the closed remeshed bunny, airplane and torus (those whose file name contains
+/// spot, blub, the closed remeshed bunny, airplane, torus and the hammer raw scan (those whose file name contains
 /// `filter`, all if empty), with three ball centres each (--quick: one); a missing file is skipped
 /// with a printed note.
 std::vector<Loaded> load_meshes(const std::string& filter, bool quick);
