@@ -275,12 +275,13 @@ void report_fairing(const FairRegionReport& fairing, bool flowed, HoleReport& r)
 // moves the filled mesh's connectivity into `filled` (after the last use of `topo`, which may be
 // the old value) and fills the reports; on failure throws (mesh untouched) or returns the reason
 // the patch was rejected. `patch_loops` are the group's loops as they are triangulated (relinked at
-// pinches).
+// pinches). `flow_crossed` says whether the rejected patch was a flow's result that crosses the mesh.
 std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                        const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
                        const FillOptions& options, const FairRegionOptions& fairing_options,
                        const FillObserver& observer, std::vector<HoleReport>& reports,
-                       std::optional<Topology>& filled) {
+                       std::optional<Topology>& filled, bool& flow_crossed) {
+  flow_crossed = false;
   InitialPatch patch = hole_patch(mesh, topo, patch_loops, options.patch);
   const std::string non_manifold = detail::patch_non_manifold(patch.mesh.F, patch.topology, patch.first_patch_face);
   if (!non_manifold.empty()) return non_manifold;
@@ -304,7 +305,10 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
   if (options.check_intersections) {
     const auto crossings =
         find_face_intersections(patch.mesh.V, patch.mesh.F, new_faces, detail::kCrossingsSought);
-    if (!crossings.empty()) return crossing_reason(crossings, mesh.num_faces(), patch.mesh.F, patch.topology);
+    if (!crossings.empty()) {
+      flow_crossed = !fairing.linear && !patch.free_vertices.empty();
+      return crossing_reason(crossings, mesh.num_faces(), patch.mesh.F, patch.topology);
+    }
   }
 
   const PatchOwnership own = patch_ownership(patch, mesh.num_vertices(), loops, group);
@@ -405,6 +409,9 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
   const auto start = Clock::now();
   if (options.max_hole_edges < 0)
     throw InvalidArgument("fill_holes: max_hole_edges must be >= 0, got " + std::to_string(options.max_hole_edges));
+  if (!(options.crossing_retry_relaxation >= 0 && options.crossing_retry_relaxation <= 1))
+    throw InvalidArgument("fill_holes: crossing_retry_relaxation must lie in [0, 1], got " +
+                          std::to_string(options.crossing_retry_relaxation));
   const Topology topo = require_fillable(mesh);
   FillReport report;
   report.input_vertices = mesh.num_vertices();
@@ -430,30 +437,43 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
       for (int other : group)
         if (other != h) report.holes[h].filled_with.push_back(other);
     const auto group_start = Clock::now();
-    // Try the requested fairing, then (with fallback_on_failure) the linear ∆^k solutions from the
-    // requested continuity down: never a flow the user did not ask for.
+    // Try the requested fairing, then (with fallback_on_failure) the flow again with its trials
+    // relaxed tangentially where its patch crossed the mesh (crossing_retry_relaxation), then the
+    // linear ∆^k solutions from the requested continuity down: never a flow the user did not ask for.
     FairRegionOptions fairing = options;  // the fairing part of the options (sliced on purpose)
     std::string reason, first_failure;
+    bool relaxed_retry = false;
     for (;;) {
+      bool flow_crossed = false;
       try {
         reason = fill_group(mesh, filled ? *filled : topo, loops, group, patch_loops, options, fairing, observer,
-                            report.holes, filled);
+                            report.holes, filled, flow_crossed);
       } catch (const Error& e) {
         reason = e.what();
       }
       if (reason.empty() || !options.fallback_on_failure) break;
       if (fairing.method == FairMethod::harmonic && fairing.continuity == Continuity::G0) break;
       if (first_failure.empty()) first_failure = reason;
+      if (flow_crossed && fairing.flow.tangential_relaxation < options.crossing_retry_relaxation) {
+        fairing.flow.tangential_relaxation = options.crossing_retry_relaxation;
+        relaxed_retry = true;
+        continue;
+      }
       if (fairing.method == FairMethod::harmonic)
         fairing.continuity = static_cast<Continuity>(static_cast<int>(fairing.continuity) - 1);
       fairing.method = FairMethod::harmonic;
     }
     mark(report.holes, group, reason.empty() ? HoleStatus::filled : HoleStatus::failed, reason);
     if (reason.empty() && !first_failure.empty())
-      for (int h : group)
-        report.holes[h].note = "the " + std::string(to_string(options.continuity)) + " fill failed (" +
-                               first_failure + "); filled with " +
-                               delivered_label(fairing.continuity, report.holes[h].linear);
+      for (int h : group) {
+        HoleReport& r = report.holes[h];
+        const std::string failed = "the " + std::string(to_string(options.continuity)) + " fill failed (" + first_failure + ")";
+        if (relaxed_retry && fairing.method == FairMethod::flow)
+          r.note = failed + "; flowed again with its trial states relaxed tangentially" +
+                   (r.note.empty() ? "" : ": " + r.note);
+        else
+          r.note = failed + "; filled with " + delivered_label(fairing.continuity, r.linear);
+      }
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
   }
   for (const auto& r : report.holes) {

@@ -75,6 +75,12 @@ struct FillOptions : FairRegionOptions {
   /// continuity, then at each lower one down to the membrane (C0); the report's `note` says so. A
   /// lower continuity's flow runs only when asked for (`continuity`).
   bool fallback_on_failure = true;
+  /// With fallback_on_failure: where the flow's patch crosses the mesh, the flow is tried once more
+  /// before the linear fallback, each of its trial states relaxed tangentially by this fraction
+  /// (FlowOptions::tangential_relaxation). Such a crossing is mostly a few patch triangles sheared
+  /// over where the border has a notch; relaxed, they stay well shaped while the surface they
+  /// carry is the same (docs/fill.md, "A crossing flow, relaxed"). 0: no second try.
+  double crossing_retry_relaxation = 0.5;
 };
 
 enum class HoleStatus { filled, skipped, failed };
