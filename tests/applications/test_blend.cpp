@@ -441,6 +441,39 @@ TEST(BlendReal, AHermiteTubeThatCrossesTheMeshIsBuiltAgainWithStraightRings) {
   EXPECT_EQ(loop_count(m), 0);
 }
 
+// A band across the raw hammer scan's handle (bench_real_holes' hammer 14000 z). Both the Hermite
+// tube and the one with straight rings settle into sixth-order tubes whose triangles next to a loop
+// shear over and cross an input face. Flowed once more with its trial states relaxed tangentially
+// (BlendOptions::crossing_retry_relaxation), the straight-ring tube settles G2 clear of the mesh;
+// without that second try the linear ∆³ tube was delivered.
+TEST(BlendReal, AFlowsTubeThatCrossesTheMeshIsRelaxedAndTriedAgain) {
+  const Mesh hammer = read_mesh(test::data_path("hammer_rawscan.obj"));
+  const double h = test::mean_edge_length(hammer);
+  const Mesh cut = test::cut_slab(hammer, {0.160535, -0.177527, 1.188496}, Eigen::Vector3d::UnitZ(), 2 * h);
+  ASSERT_EQ(loop_count(cut), 2);
+  Mesh m = cut;
+  const BlendReport r = blend_loops(m, BlendOptions{});
+  print("hammer band", r);
+  EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "G2") << r.fair.note;
+  EXPECT_EQ(r.fair.flow.stop_reason, FlowStopReason::steady);
+  EXPECT_NE(r.fair.note.find("flowed again with its trial states relaxed tangentially"), std::string::npos)
+      << r.fair.note;
+  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
+  expect_clean(m);
+
+  BlendOptions once;
+  once.crossing_retry_relaxation = 0;
+  Mesh linear = cut;
+  const BlendReport l = blend_loops(linear, once);
+  EXPECT_EQ(delivered_label(l.fair.supported, l.fair.linear), "C2 (linear)") << l.fair.note;
+  EXPECT_NE(l.fair.note.find("kept the linear ∆3 tube"), std::string::npos) << l.fair.note;
+
+  BlendOptions bad;
+  bad.crossing_retry_relaxation = -0.5;
+  Mesh untouched = cut;
+  EXPECT_THROW(blend_loops(untouched, bad), InvalidArgument);
+}
+
 // Two open cylinders end to end with a plate between their facing ends: every tube between those
 // ends passes through the plate, from Hermite rings or straight ones, flowed or linear. No tube is
 // delivered as a success: NumericalError names the first crossing of both tubes, and the mesh
