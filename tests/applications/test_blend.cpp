@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -24,6 +25,13 @@
 
 namespace fairsurf {
 namespace {
+
+// data/`file` with the band of width 4h through `point` normal to `axis` removed, h its mean edge
+// length (bench_real_holes' blend rows).
+Mesh band_cut(const std::string& file, const Eigen::Vector3d& point, const Eigen::Vector3d& axis) {
+  const Mesh mesh = read_mesh(test::data_path(file));
+  return test::cut_slab(mesh, point, axis, 2 * test::mean_edge_length(mesh));
+}
 
 int loop_count(const Mesh& m) {
   return static_cast<int>(boundary_loops(m.F, build_topology(m.F, m.num_vertices())).size());
@@ -376,9 +384,7 @@ TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
 // built, but turns the normal across the loops by 14° where the linear tube turns it by 8.8°: it
 // folds against the linear tube, and the descent from the tube (11.3°) is kept.
 TEST(BlendReal, ADescentThatFoldsAgainstTheLinearTubeIsNotKept) {
-  const Mesh spot = read_mesh(test::data_path("spot.obj"));
-  const double h = test::mean_edge_length(spot);
-  const Mesh cut = test::cut_slab(spot, {-0.293232, 0.0711038, 0.460405}, Eigen::Vector3d::UnitY(), 2 * h);
+  const Mesh cut = band_cut("spot.obj", {-0.293232, 0.0711038, 0.460405}, Eigen::Vector3d::UnitY());
   ASSERT_EQ(loop_count(cut), 2);
   Mesh m = cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
@@ -447,9 +453,7 @@ TEST(BlendReal, AHermiteTubeThatCrossesTheMeshIsBuiltAgainWithStraightRings) {
 // (BlendOptions::crossing_retry_relaxation), the straight-ring tube settles G2 clear of the mesh;
 // without that second try the linear ∆³ tube was delivered.
 TEST(BlendReal, AFlowsTubeThatCrossesTheMeshIsRelaxedAndTriedAgain) {
-  const Mesh hammer = read_mesh(test::data_path("hammer_rawscan.obj"));
-  const double h = test::mean_edge_length(hammer);
-  const Mesh cut = test::cut_slab(hammer, {0.160535, -0.177527, 1.188496}, Eigen::Vector3d::UnitZ(), 2 * h);
+  const Mesh cut = band_cut("hammer_rawscan.obj", {0.160535, -0.177527, 1.188496}, Eigen::Vector3d::UnitZ());
   ASSERT_EQ(loop_count(cut), 2);
   Mesh m = cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
