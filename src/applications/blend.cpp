@@ -296,11 +296,9 @@ FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<i
 }
 
 // Fairs the tube as the options' FairRegionOptions base says (flow_tube); where the result crosses
-// the mesh and the method is the flow, the flow runs once more with its trial states relaxed
-// tangentially (BlendOptions::crossing_retry_relaxation) unless the tube passed through itself as
-// built, and then the linear ∆^k solution from the same tube takes its place if that one does not
-// cross (labelled linear, with the reason). Throws NumericalError where the tube delivered would
-// still cross the mesh (`mesh` then holds it).
+// the mesh and the method is the flow, the linear ∆^k solution from the same tube takes its place
+// if that one does not (labelled linear, with the reason). Throws NumericalError where the tube
+// delivered would still cross the mesh (`mesh` then holds it).
 FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
                            const BlendOptions& options, const FlowObserver& observer) {
   const Vertices tube = mesh.V;
@@ -309,28 +307,6 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
   const std::vector<FaceIntersection> crossings = tube_crossings(mesh, first_tube_face);
   if (crossings.empty()) return report;
   if (options.method != FairMethod::flow) throw TubeCrossing(crossing_message(crossings, first_tube_face, ""));
-  Mesh retry = mesh;
-  retry.V = tube;
-  // A tube that passed through itself as built (a Hermite tube twisted between unlike loops) stays
-  // tangled however its trials are relaxed; one that only grazed the input may come clear.
-  const auto built = tube_crossings(retry, first_tube_face);
-  const bool twisted = std::any_of(built.begin(), built.end(),
-                                   [&](const FaceIntersection& c) { return c.other_face >= first_tube_face; });
-  if (options.flow.tangential_relaxation < options.crossing_retry_relaxation && !twisted) {
-    BlendOptions relaxed = options;
-    relaxed.flow.tangential_relaxation = options.crossing_retry_relaxation;
-    try {
-      FairRegionReport again = flow_tube(retry, topo, free, first_tube_face, tube, linear_once, relaxed, observer);
-      if (!tube_crosses(retry, first_tube_face)) {
-        again.note = std::string("the ") + to_string(report.flow_kind) + " flow's tube crossed the mesh" +
-                     "; flowed again with its trial states relaxed tangentially" +
-                     (again.note.empty() ? "" : ": " + again.note);
-        mesh.V = std::move(retry.V);
-        return again;
-      }
-    } catch (const NumericalError&) {  // the linear tube below, as for the first try
-    }
-  }
   std::optional<LinearTube>& linear = linear_once.get();
   if (linear && !tube_crosses(linear->mesh, first_tube_face)) {
     linear->report.note = std::string("the ") + to_string(report.flow_kind) + " flow's tube crosses the mesh" +
@@ -379,9 +355,6 @@ ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector
 
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObserver& observer) {
   const auto start = detail::Clock::now();
-  if (!(options.crossing_retry_relaxation >= 0 && options.crossing_retry_relaxation <= 1))
-    throw InvalidArgument("blend_loops: crossing_retry_relaxation must lie in [0, 1], got " +
-                          std::to_string(options.crossing_retry_relaxation));
   const Topology topo = build_topology(mesh.F, mesh.num_vertices());
   const std::vector<std::vector<int>> loops = boundary_loops(mesh.F, topo);
   const LoopPair pair = chosen_pair(mesh.V, loops, options);

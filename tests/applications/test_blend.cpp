@@ -15,7 +15,6 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <string>
 #include <utility>
 #include <vector>
 
@@ -25,13 +24,6 @@
 
 namespace fairsurf {
 namespace {
-
-// data/`file` with the band of width 4h through `point` normal to `axis` removed, h its mean edge
-// length (bench_real_holes' blend rows).
-Mesh band_cut(const std::string& file, const Eigen::Vector3d& point, const Eigen::Vector3d& axis) {
-  const Mesh mesh = read_mesh(test::data_path(file));
-  return test::cut_slab(mesh, point, axis, 2 * test::mean_edge_length(mesh));
-}
 
 int loop_count(const Mesh& m) {
   return static_cast<int>(boundary_loops(m.F, build_topology(m.F, m.num_vertices())).size());
@@ -384,7 +376,9 @@ TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
 // built, but turns the normal across the loops by 14° where the linear tube turns it by 8.8°: it
 // folds against the linear tube, and the descent from the tube (11.3°) is kept.
 TEST(BlendReal, ADescentThatFoldsAgainstTheLinearTubeIsNotKept) {
-  const Mesh cut = band_cut("spot.obj", {-0.293232, 0.0711038, 0.460405}, Eigen::Vector3d::UnitY());
+  const Mesh spot = read_mesh(test::data_path("spot.obj"));
+  const double h = test::mean_edge_length(spot);
+  const Mesh cut = test::cut_slab(spot, {-0.293232, 0.0711038, 0.460405}, Eigen::Vector3d::UnitY(), 2 * h);
   ASSERT_EQ(loop_count(cut), 2);
   Mesh m = cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
@@ -445,37 +439,6 @@ TEST(BlendReal, AHermiteTubeThatCrossesTheMeshIsBuiltAgainWithStraightRings) {
   EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
   expect_clean(m);
   EXPECT_EQ(loop_count(m), 0);
-}
-
-// A band across the raw hammer scan's handle (bench_real_holes' hammer 14000 z). Both the Hermite
-// tube and the one with straight rings settle into sixth-order tubes whose triangles next to a loop
-// shear over and cross an input face. Flowed once more with its trial states relaxed tangentially
-// (BlendOptions::crossing_retry_relaxation), the straight-ring tube settles G2 clear of the mesh;
-// without that second try the linear ∆³ tube was delivered.
-TEST(BlendReal, AFlowsTubeThatCrossesTheMeshIsRelaxedAndTriedAgain) {
-  const Mesh cut = band_cut("hammer_rawscan.obj", {0.160535, -0.177527, 1.188496}, Eigen::Vector3d::UnitZ());
-  ASSERT_EQ(loop_count(cut), 2);
-  Mesh m = cut;
-  const BlendReport r = blend_loops(m, BlendOptions{});
-  print("hammer band", r);
-  EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "G2") << r.fair.note;
-  EXPECT_EQ(r.fair.flow.stop_reason, FlowStopReason::steady);
-  EXPECT_NE(r.fair.note.find("flowed again with its trial states relaxed tangentially"), std::string::npos)
-      << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
-  expect_clean(m);
-
-  BlendOptions once;
-  once.crossing_retry_relaxation = 0;
-  Mesh linear = cut;
-  const BlendReport l = blend_loops(linear, once);
-  EXPECT_EQ(delivered_label(l.fair.supported, l.fair.linear), "C2 (linear)") << l.fair.note;
-  EXPECT_NE(l.fair.note.find("kept the linear ∆3 tube"), std::string::npos) << l.fair.note;
-
-  BlendOptions bad;
-  bad.crossing_retry_relaxation = -0.5;
-  Mesh untouched = cut;
-  EXPECT_THROW(blend_loops(untouched, bad), InvalidArgument);
 }
 
 // Two open cylinders end to end with a plate between their facing ends: every tube between those

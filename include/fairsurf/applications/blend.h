@@ -50,11 +50,6 @@ struct BlendOptions : FairRegionOptions {
   /// energy on irregular rings); where it does, as on the analytic scenes, its result is kept
   /// unchanged.
   bool descent_fallback = true;
-  /// Where the flow's tube crosses the mesh, the flow is run once more before the linear tube takes
-  /// its place, each of its trial states relaxed tangentially by this fraction
-  /// (FlowOptions::tangential_relaxation), as fill does (FillOptions::crossing_retry_relaxation;
-  /// docs/blend.md, "A crossing tube, relaxed"). 0: no second try.
-  double crossing_retry_relaxation = 0.5;
   /// Rings around each loop kept when the continuity is measured at one border (both sides' 2-ring
   /// fits must fit inside). Each figure is taken at its own loop's vertices only.
   int measure_rings = 4;
