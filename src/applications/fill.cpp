@@ -206,19 +206,35 @@ std::vector<int> to_local(const Submesh& sub, const std::vector<int>& global) {
   return local;
 }
 
-// `F` and `topo`: the patched mesh. When the first crossing is with another connected part of the
-// mesh (two parts whose openings face each other, as in data/cgal_blobby_3cc.off), the reason says
-// that a blend, not a fill, is what joins them.
-std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int input_faces, const Faces& F,
-                            const Topology& topo) {
+// A vertex of face `a` at exactly the position of a different vertex of face `b`, as (a's, b's), or
+// (−1, −1): the two faces meet at a vertex that was split in two (`repair` splits a non-manifold
+// vertex or edge into copies at one position), which the crossing test does not treat as shared.
+std::pair<int, int> coincident_corners(const Vertices& V, const Faces& F, int a, int b) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (F(a, i) != F(b, j) && V.row(F(a, i)) == V.row(F(b, j))) return {F(a, i), F(b, j)};
+  return {-1, -1};
+}
+
+// (V, F) and `topo`: the patched mesh. When the first crossing is with another connected part of
+// the mesh (two parts whose openings face each other, as in data/cgal_blobby_3cc.off), the reason
+// says that a blend, not a fill, is what joins them; when the face crossed meets the patch at a
+// split vertex (the repaired data/stanford_bunny_zipper_res2.ply), that the hole is such a junction.
+std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int input_faces, const Vertices& V,
+                            const Faces& F, const Topology& topo) {
   const FaceIntersection& c = crossings.front();
   const bool other_new = c.other_face >= input_faces;
   std::string reason = "the faired patch crosses the mesh: new face " + std::to_string(c.query_face) + " crosses " +
                        (other_new ? "new" : "input") + " face " + std::to_string(c.other_face) + " (" +
                        detail::crossing_count(crossings) + ")";
   const Components parts = connected_components(F, topo);
-  if (parts.face_component[c.query_face] != parts.face_component[c.other_face])
-    reason += ", a face of another part of the mesh: openings that face each other are joined by blend";
+  const bool other_part = parts.face_component[c.query_face] != parts.face_component[c.other_face];
+  if (const auto [ours, theirs] = coincident_corners(V, F, c.query_face, c.other_face); ours >= 0)
+    return reason + ", " + (other_part ? "a face of another part of the mesh " : "") + "whose vertex " +
+           std::to_string(theirs) + " lies at vertex " + std::to_string(ours) +
+           "'s position: the hole's border passes through a vertex split in two (as repair splits a "
+           "non-manifold vertex or edge), and a patch there runs into the other side of the split";
+  if (other_part) reason += ", a face of another part of the mesh: openings that face each other are joined by blend";
   return reason;
 }
 
@@ -307,7 +323,7 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
         find_face_intersections(patch.mesh.V, patch.mesh.F, new_faces, detail::kCrossingsSought);
     if (!crossings.empty()) {
       flow_crossed = !fairing.linear && !patch.free_vertices.empty();
-      return crossing_reason(crossings, mesh.num_faces(), patch.mesh.F, patch.topology);
+      return crossing_reason(crossings, mesh.num_faces(), patch.mesh.V, patch.mesh.F, patch.topology);
     }
   }
 
