@@ -121,6 +121,9 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
   flow.max_border_angle_ratio = std::numeric_limits<double>::infinity();
   FairRegionOptions harmonic = flow;
   harmonic.method = FairMethod::harmonic;
+  // A trial at its step budget keeps its state (no floor) and is weighed as it stands.
+  flow.flow.max_steps = std::min(flow.flow.max_steps, kHeldOutTrialSteps);
+  flow.linear_floor = false;
   const LinearTrial linear = linear_trial(sub.mesh, sub.mesh, topo, free, held_out, normal, edge, harmonic);
   errors.linear = linear.error;
   if (refined) {

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "test_support.h"
@@ -59,6 +60,22 @@ TEST(HeldOutTrials, OnlyTheFlowFromAHarmonicStartTakesASolvedStart) {
   FairRegionOptions flat = FairRegionOptions::harmonic_started();
   flat.harmonic_start_iterations = 0;
   EXPECT_THROW(fair_detail::fair_valid_mesh_from(mesh, topo, region, flat, {}), InvalidArgument);
+}
+
+// The trials rank the fairings and need not settle: a flow trial at its step limit is weighed where
+// it stands (held_out.h, kHeldOutTrialSteps), where it used to count as a failed trial (∞) and to
+// crawl on to 200 steps first. Here the limit is one step, so neither trial settles.
+TEST(HeldOutTrials, AFlowTrialAtItsStepLimitIsWeighedWhereItStands) {
+  Mesh mesh = read_mesh(test::data_path("spot.obj"));
+  const std::vector<int> region = test::ball_vertices(mesh, {0.312594, 0.674309, -0.341185}, 0.190738);
+  FairRegionOptions options = FairRegionOptions::harmonic_started();
+  options.held_out_two_ring_fits = true;
+  options.flow.max_steps = 1;
+  const FairRegionReport report = fair_region(mesh, region, options);
+  EXPECT_TRUE(std::isfinite(report.held_out_flow_error));
+  EXPECT_TRUE(std::isfinite(report.held_out_two_ring_flow_error));
+  EXPECT_TRUE(std::isfinite(report.held_out_linear_error));
+  EXPECT_NE(report.held_out_flow_error, report.held_out_linear_error);  // the one step moved the rings
 }
 
 }  // namespace

@@ -59,7 +59,8 @@ struct FairRegionOptions {
   /// solution where it lies closer to the held-out input (mean distance along the input's vertex
   /// normals). A flow then never replaces the classical baseline where it extrapolates the
   /// surrounding surface worse (on real meshes the fitted energy can prefer shapes the surface does
-  /// not have; docs/fill.md). Costs two more fairings of a slightly larger region. 0: off.
+  /// not have; docs/fill.md). Costs two more fairings of a slightly larger region; the flow's trial
+  /// runs at most 40 accepted steps and is weighed where it stands (it only ranks). 0: off.
   int held_out_rings = 0;
   /// With held_out_rings: also weigh the flow with its boundary data fitted over 2-rings
   /// (FlowOptions::two_ring_boundary_fits, unless flow already sets it) and deliver whichever of the
