@@ -6,7 +6,10 @@
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/solve/distributed.h>
 
+#include <dlfcn.h>
+
 #include <algorithm>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -98,9 +101,22 @@ int serve(fairsurf::distributed::Session& session) {
   }
 }
 
+// Debian's OpenBLAS (libopenblas0-pthread) starts a thread a core, and its idle threads spin. The
+// BLAS work here is MUMPS's dense fronts, small on hole patches and regions: a second thread gains
+// little on an idle machine, and where other jobs hold the cores the spinning thread costs a
+// multiple (docs/flow.md, "Speed", Threads). So one thread, unless the environment asks for a number.
+// Looked up at run time: libblas.so.3 may be another BLAS, which has no such call.
+void use_one_blas_thread_unless_asked() {
+  for (const char* variable : {"OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS"})
+    if (std::getenv(variable)) return;
+  using SetThreads = void (*)(int);
+  if (const auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  use_one_blas_thread_unless_asked();
   fairsurf::distributed::Session session(argc, argv);
   if (session.is_worker()) return serve(session);
   const int code = run(argc, argv);
