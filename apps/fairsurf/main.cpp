@@ -1,15 +1,13 @@
 // fairsurf — command-line entry point. Parses, runs one subcommand, maps failures to exit codes.
 // Under `mpirun -n N`, rank 0 runs the command and the other ranks serve its mumps-mpi solves
 // (distributed.h); every rank exits with rank 0's code.
+#include "blas_threads.h"
 #include "command.h"
 
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/solve/distributed.h>
 
-#include <dlfcn.h>
-
 #include <algorithm>
-#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -58,6 +56,8 @@ int run(int argc, char** argv) {
   CLI::App app{"fairsurf: fair surfaces on triangle meshes with sixth-order geometric flows"};
   app.set_version_flag("--version", FAIRSURF_VERSION);
   app.require_subcommand(0, 1);
+  app.footer("Threads: OpenMP loops follow OMP_NUM_THREADS; OpenBLAS runs one thread unless OPENBLAS_NUM_THREADS, "
+             "GOTO_NUM_THREADS or OMP_NUM_THREADS is set (docs/cli.md, Threads).");
   auto& registry = command_registry();
   std::sort(registry.begin(), registry.end());
   for (const auto& entry : registry) entry.second(app);
@@ -101,22 +101,10 @@ int serve(fairsurf::distributed::Session& session) {
   }
 }
 
-// Debian's OpenBLAS (libopenblas0-pthread) starts a thread a core, and its idle threads spin. The
-// BLAS work here is MUMPS's dense fronts, small on hole patches and regions: a second thread gains
-// little on an idle machine, and where other jobs hold the cores the spinning thread costs a
-// multiple (docs/flow.md, "Speed", Threads). So one thread, unless the environment asks for a number.
-// Looked up at run time: libblas.so.3 may be another BLAS, which has no such call.
-void use_one_blas_thread_unless_asked() {
-  for (const char* variable : {"OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS"})
-    if (std::getenv(variable)) return;
-  using SetThreads = void (*)(int);
-  if (const auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  use_one_blas_thread_unless_asked();
+  fairsurf::cli::use_one_blas_thread_unless_asked();
   fairsurf::distributed::Session session(argc, argv);
   if (session.is_worker()) return serve(session);
   const int code = run(argc, argv);
