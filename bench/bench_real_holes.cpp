@@ -4,7 +4,7 @@
 // are described in docs/fill.md, "Real holes benchmark".
 //
 // Usage: bench_real_holes [--section fill|fair|blend|all] [--mesh NAME] [--no-cgal] [--quick]
-//                         [--random N [--seed S]] [--csv FILE]
+//                         [--random N [--seed S]] [--all-slabs] [--csv FILE]
 #include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/applications/fill.h>
@@ -43,6 +43,7 @@ constexpr double kNoise = 0.1;  // σ of the normal noise, in h
 struct Args {
   std::string section = "all", mesh, csv;
   bool cgal = true, quick = false;
+  bool all_slabs = false;  // blend: every_blend_slab instead of the fixed cases
   int random = 0;          // ball centres drawn at random instead of the fixed ones (0: fixed)
   std::uint64_t seed = 1;  // of those draws
 };
@@ -477,6 +478,21 @@ std::string fair_section(const std::vector<Loaded>& meshes, bool cgal) {
 
 
 
+// The linear ∆³ tube between the same loops (`fairsurf blend --method harmonic`): the baseline a
+// blend's G2 tube must not lose to.
+void blend_baseline(const Mesh& cut, const Truth& truth, double h, Row& row) {
+  Mesh mesh = cut;
+  BlendOptions options;
+  options.method = FairMethod::harmonic;
+  try {
+    blend_loops(mesh, options);
+    row.baseline = measure(truth, mesh.V, rows_from(cut.num_vertices(), mesh.num_vertices()), h);
+    row.has_baseline = true;
+  } catch (const std::exception& e) {
+    add_note(row, "∆³: " + std::string(e.what()));
+  }
+}
+
 Row blend_case(const Loaded& m, const Slab& slab) {
   Row row;
   row.section = "blend";
@@ -506,21 +522,59 @@ Row blend_case(const Loaded& m, const Slab& slab) {
     row.status = "error";
     add_note(row, e.what());
   }
+  blend_baseline(cut.mesh, truth, m.h, row);
   return row;
 }
 
-std::string blend_section(const std::vector<Loaded>& meshes, bool quick) {
+// The delivered tubes' mean distances over the linear ∆³ tubes' on the same slabs, by one measure.
+struct BaselineRatios {
+  int compared = 0, below = 0, same = 0, worse_by_a_tenth = 0;
+  double log_ratio = 0, worst = 0;
+  void add(double ours, double baseline) {
+    if (!(baseline > 0) || std::isnan(ours)) return;
+    const double ratio = ours / baseline;
+    ++compared;
+    below += ratio < 1;
+    same += ratio == 1;  // the linear tube delivered
+    worse_by_a_tenth += ratio > 1.1;
+    log_ratio += std::log(ratio);
+    worst = std::max(worst, ratio);
+  }
+  std::string text() const {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "below D3 on %d of %d (the same on %d), geo-mean ratio to D3 %.2f, above 1.1x D3 on %d, worst %.2fx",
+                  below, compared, same, compared > 0 ? std::exp(log_ratio / compared) : NAN, worse_by_a_tenth, worst);
+    return text;
+  }
+};
+
+// BaselineRatios to the uncut mesh and to its smooth stand-in (the torus's own surface).
+struct BlendRatios {
+  BaselineRatios faceted, smooth;
+  void add(const Row& row) {
+    if (row.ours.count == 0 || !row.has_baseline) return;
+    faceted.add(row.ours.mean, row.baseline.mean);
+    smooth.add(row.ours.smooth_mean, row.baseline.smooth_mean);
+  }
+  std::string text() const { return "mean distance " + faceted.text() + "; to the smooth surface: " + smooth.text(); }
+};
+
+std::string blend_section(const std::vector<Loaded>& meshes, bool quick, bool all_slabs) {
   std::printf("== blend: the band of the slab |(x - centre)·axis| < 2h through `centre` removed, the two loops "
               "blended; distances in h ==\n");
-  std::printf("%-9s %6s %4s %-8s %-10s %-11s %5s %6s | %-12s | %6s %6s %s\n", "mesh", "centre", "axis", "loops",
-              "exit", "cont", "steps", "sec", "fairsurf h", "angle", "ref", "fold");
+  std::printf("%-9s %6s %4s %-8s %-10s %-11s %5s %6s | %-12s | %-12s %5s | %6s %6s %s\n", "mesh", "centre", "axis",
+              "loops", "exit", "cont", "steps", "sec", "fairsurf h", "D3 h", "/D3", "angle", "ref", "fold");
   int rows = 0, steady = 0, folds = 0;
+  BlendRatios ratios;
   for (const Loaded& m : meshes)
-    for (const Slab& slab : blend_slabs(m, quick ? 1 : 2)) {
+    for (const Slab& slab : all_slabs ? bench::every_blend_slab(m) : blend_slabs(m, quick ? 1 : 2)) {
       const Row r = blend_case(m, slab);
-      std::printf("%-9s %6d %4c %-8s %-10s %-11s %5d %6.2f | %s | %6s %6s %s%s%s\n", r.mesh.c_str(), r.centre,
-                  "xyz"[slab.axis], r.size.c_str(), r.status.c_str(), r.continuity.c_str(), r.steps, r.seconds,
-                  pair_text(r.ours.count > 0, r.ours).c_str(), number(r.angle * kDegrees, "%.1f").c_str(),
+      const double ratio = r.ours.count > 0 && r.has_baseline ? r.ours.mean / r.baseline.mean : NAN;
+      std::printf("%-9s %6d %4c %-8s %-10s %-11s %5d %6.2f | %s | %s %5s | %6s %6s %s%s%s\n", r.mesh.c_str(),
+                  r.centre, "xyz"[slab.axis], r.size.c_str(), r.status.c_str(), r.continuity.c_str(), r.steps,
+                  r.seconds, pair_text(r.ours.count > 0, r.ours).c_str(), pair_text(r.has_baseline, r.baseline).c_str(),
+                  number(ratio, "%.2f").c_str(), number(r.angle * kDegrees, "%.1f").c_str(),
                   number(r.uncut_angle * kDegrees, "%.1f").c_str(), r.fold ? "FOLD" : "-",
                   r.note.empty() ? "" : "  ", r.note.c_str());
       std::fflush(stdout);
@@ -528,9 +582,10 @@ std::string blend_section(const std::vector<Loaded>& meshes, bool quick) {
       ++rows;
       steady += r.status == "steady" && r.continuity == "G2";
       folds += r.fold;
+      ratios.add(r);
     }
   const std::string text = "blend: " + std::to_string(steady) + " steady G2 of " + std::to_string(rows) + ", folds " +
-                           std::to_string(folds);
+                           std::to_string(folds) + ", " + ratios.text();
   std::printf("blend summary: %s\n\n", text.c_str());
   return text;
 }
@@ -553,9 +608,10 @@ Args parse_args(int argc, char** argv) {
     else if (a == "--seed") args.seed = std::stoull(value());
     else if (a == "--no-cgal") args.cgal = false;
     else if (a == "--quick") args.quick = true;
+    else if (a == "--all-slabs") args.all_slabs = true;
     else throw InvalidArgument("bench_real_holes: unknown argument " + a +
                                " (--section fill|fair|blend|all, --mesh NAME, --no-cgal, --quick, --random N, "
-                               "--seed S, --csv FILE)");
+                               "--seed S, --all-slabs, --csv FILE)");
   }
   if (args.random < 0) throw InvalidArgument("bench_real_holes: --random must be >= 0");
   if (args.section != "fill" && args.section != "fair" && args.section != "blend" && args.section != "all")
@@ -585,7 +641,7 @@ int main(int argc, char** argv) {
     const auto wanted = [&](const char* section) { return args.section == section || args.section == "all"; };
     if (wanted("fill")) summaries.push_back(fill_section(meshes, args.cgal));
     if (wanted("fair")) summaries.push_back(fair_section(meshes, args.cgal));
-    if (wanted("blend")) summaries.push_back(blend_section(meshes, args.quick));
+    if (wanted("blend")) summaries.push_back(blend_section(meshes, args.quick, args.all_slabs));
     std::string overall;
     for (const auto& s : summaries) overall += (overall.empty() ? "" : " | ") + s;
     std::printf("overall: %s\n", overall.c_str());

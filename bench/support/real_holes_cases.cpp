@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <numeric>
+#include <optional>
+#include <span>
 
 namespace fairsurf::bench {
 namespace {
@@ -85,24 +88,53 @@ DistanceStats measure(const Truth& truth, const Vertices& V, const std::vector<i
   return stats;
 }
 
+namespace {
+
+// The vertices of m sorted by their coordinate `axis`.
+std::vector<int> sorted_along(const Mesh& mesh, int axis) {
+  std::vector<int> order(mesh.num_vertices());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return mesh.V(a, axis) < mesh.V(b, axis); });
+  return order;
+}
+
+// The plane through the vertex at quantile `q` of `order` (sorted_along `axis`), where its slab leaves
+// two loops of at most kMaxBlendLoop edges.
+std::optional<Slab> slab_at(const Loaded& m, const std::vector<int>& order, int axis, double q) {
+  const int vertex = order[static_cast<std::size_t>(q * (order.size() - 1))];
+  const CutMesh cut = cut_slab(m.mesh, vertex, Eigen::Vector3d::Unit(axis), 2 * m.h);
+  const auto loops = loops_of(cut.mesh);
+  if (loops.size() == 2 && std::max(loops[0].size(), loops[1].size()) <= kMaxBlendLoop) return Slab{vertex, axis};
+  return std::nullopt;
+}
+
+constexpr double kSlabQuantiles[] = {0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0.95};
+constexpr double kMoreSlabQuantiles[] = {0.27, 0.42, 0.58, 0.73};
+
+}  // namespace
+
 std::vector<Slab> blend_slabs(const Loaded& m, std::size_t wanted) {
   std::vector<Slab> slabs;
   for (int axis = 0; axis < 3 && slabs.size() < wanted; ++axis) {
-    std::vector<int> order(m.mesh.num_vertices());
-    for (int v = 0; v < m.mesh.num_vertices(); ++v) order[v] = v;
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return m.mesh.V(a, axis) < m.mesh.V(b, axis); });
-    for (double q : {0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9, 0.95}) {
-      const int vertex = order[static_cast<std::size_t>(q * (order.size() - 1))];
-      const CutMesh cut = cut_slab(m.mesh, vertex, Eigen::Vector3d::Unit(axis), 2 * m.h);
-      const auto loops = loops_of(cut.mesh);
-      if (loops.size() == 2 && std::max(loops[0].size(), loops[1].size()) <= kMaxBlendLoop) {
-        slabs.push_back({vertex, axis});
+    const std::vector<int> order = sorted_along(m.mesh, axis);
+    for (double q : kSlabQuantiles)
+      if (const std::optional<Slab> slab = slab_at(m, order, axis, q)) {
+        slabs.push_back(*slab);
         break;  // one plane per axis
       }
-    }
   }
   return slabs;
 }
 
+std::vector<Slab> every_blend_slab(const Loaded& m) {
+  std::vector<Slab> slabs;
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::vector<int> order = sorted_along(m.mesh, axis);
+    for (const auto& quantiles : {std::span<const double>(kSlabQuantiles), std::span<const double>(kMoreSlabQuantiles)})
+      for (double q : quantiles)
+        if (const std::optional<Slab> slab = slab_at(m, order, axis, q)) slabs.push_back(*slab);
+  }
+  return slabs;
+}
 
 }  // namespace fairsurf::bench

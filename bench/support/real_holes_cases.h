@@ -56,5 +56,8 @@ struct Slab {
 /// whose slab of width 4h (cut_slab) leaves exactly two loops of at most 200 edges; at most one per
 /// axis, the first `wanted` of them.
 std::vector<Slab> blend_slabs(const Loaded& m, std::size_t wanted);
+/// Every such plane, at those quantiles and at 27%, 42%, 58%, 73%, on every axis: a larger sample
+/// of blends than the fixed cases (bench_real_holes --all-slabs).
+std::vector<Slab> every_blend_slab(const Loaded& m);
 
 }  // namespace fairsurf::bench
