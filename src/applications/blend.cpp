@@ -17,6 +17,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <span>
 #include <string>
 #include <tuple>
 
@@ -295,26 +296,68 @@ FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<i
   return report;
 }
 
+// Edges with a tube face (from `first_tube_face` on) whose two faces' normals are more than 90°
+// apart: creases, which no fair surface has. `topo`: the connectivity of F.
+int tube_creases(const Vertices& V, const Faces& F, const Topology& topo, int first_tube_face) {
+  const auto area_normal = [&](int f) -> Eigen::RowVector3d {
+    const Eigen::RowVector3d a = V.row(F(f, 0));
+    return (V.row(F(f, 1)) - a).cross(V.row(F(f, 2)) - a);
+  };
+  int creases = 0;
+  for (Eigen::Index e = 0; e < topo.edges.rows(); ++e) {
+    const std::span<const int> faces = topo.edge_faces.row(static_cast<int>(e));
+    if (faces.size() == 2 && std::max(faces[0], faces[1]) >= first_tube_face)
+      creases += area_normal(faces[0]).dot(area_normal(faces[1])) < 0;
+  }
+  return creases;
+}
+
+// The flow's tube creases against the linear one where it has more creased edges (tube_creases)
+// than twice the linear tube's and than the linear tube's plus kCreaseSlack: a fold of the tube into
+// itself that its border angles need not show (bench_real_holes' spot 1519 z: a fin out of the neck,
+// 68 creased edges where the linear tube has 16; docs/blend.md, "Creased tubes").
+constexpr int kCreaseSlack = 4;
+bool creases_against(int flow_creases, int linear_creases) {
+  return flow_creases > std::max(2 * linear_creases, linear_creases + kCreaseSlack);
+}
+
+// The linear tube `linear` delivered instead of the flow's (whose report is `flow`) for `reason`.
+FairRegionReport keep_linear_tube(Mesh& mesh, LinearTube& linear, const FairRegionReport& flow,
+                                  const std::string& reason) {
+  linear.report.note = std::string("the ") + to_string(flow.flow_kind) + " flow's tube " + reason +
+                       (flow.note.empty() ? "" : " (" + flow.note + ")") + "; kept the linear ∆" +
+                       std::to_string(linear.order()) + " tube";
+  mesh.V = std::move(linear.mesh.V);
+  return std::move(linear.report);
+}
+
 // Fairs the tube as the options' FairRegionOptions base says (flow_tube); where the result crosses
-// the mesh and the method is the flow, the linear ∆^k solution from the same tube takes its place
-// if that one does not (labelled linear, with the reason). Throws NumericalError where the tube
-// delivered would still cross the mesh (`mesh` then holds it).
+// the mesh or creases against the linear ∆^k solution from the same tube (creases_against) and the
+// method is the flow, that linear solution takes its place if it does not cross the mesh (labelled
+// linear, with the reason). Throws NumericalError where the tube delivered would still cross the
+// mesh (`mesh` then holds it).
 FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
                            const BlendOptions& options, const FlowObserver& observer) {
   const Vertices tube = mesh.V;
   LinearTubeOnce linear_once(mesh, topo, free, tube, options);
   FairRegionReport report = flow_tube(mesh, topo, free, first_tube_face, tube, linear_once, options, observer);
   const std::vector<FaceIntersection> crossings = tube_crossings(mesh, first_tube_face);
-  if (crossings.empty()) return report;
+  if (crossings.empty()) {
+    if (options.method != FairMethod::flow || report.linear) return report;
+    const int creases = tube_creases(mesh.V, mesh.F, topo, first_tube_face);
+    if (!creases_against(creases, 0)) return report;  // nor against any linear tube: no solve
+    std::optional<LinearTube>& linear = linear_once.get();
+    if (!linear || tube_crosses(linear->mesh, first_tube_face)) return report;
+    const int linear_creases = tube_creases(linear->mesh.V, mesh.F, topo, first_tube_face);
+    if (!creases_against(creases, linear_creases)) return report;
+    return keep_linear_tube(mesh, *linear, report,
+                            "creases (" + std::to_string(creases) + " of its edges turn by more than 90°, " +
+                                std::to_string(linear_creases) + " of the linear tube's)");
+  }
   if (options.method != FairMethod::flow) throw TubeCrossing(crossing_message(crossings, first_tube_face, ""));
   std::optional<LinearTube>& linear = linear_once.get();
-  if (linear && !tube_crosses(linear->mesh, first_tube_face)) {
-    linear->report.note = std::string("the ") + to_string(report.flow_kind) + " flow's tube crosses the mesh" +
-                          (report.note.empty() ? "" : " (" + report.note + ")") + "; kept the linear ∆" +
-                          std::to_string(linear->order()) + " tube";
-    mesh.V = std::move(linear->mesh.V);
-    return linear->report;
-  }
+  if (linear && !tube_crosses(linear->mesh, first_tube_face))
+    return keep_linear_tube(mesh, *linear, report, "crosses the mesh");
   const std::string linear_order = "∆" + std::to_string(static_cast<int>(report.supported) + 1);
   throw TubeCrossing(crossing_message(crossings, first_tube_face,
                                       linear ? ", and so does the linear " + linear_order + " tube from the same start"
