@@ -129,10 +129,6 @@ std::string continuity_text(const FillReport& report) {
   return text;
 }
 
-
-
-
-
 // fill_holes on a copy of `cut`; the new vertices' distances. Throws what fill_holes throws.
 FillReport run_fill(const Mesh& cut, const FillOptions& options, const Truth& truth, double h,
                     DistanceStats& stats) {
@@ -474,9 +470,6 @@ std::string fair_section(const std::vector<Loaded>& meshes, bool cgal) {
 
 // ---------------------------------------------------------------------------------------------
 // Blend: a slab of width 4h removed, the two loops joined again
-
-
-
 
 // The linear ∆³ tube between the same loops (`fairsurf blend --method harmonic`): the baseline a
 // blend's G2 tube must not lose to.

@@ -10,7 +10,6 @@
 #include <memory>
 #include <numbers>
 
-
 #include "command.h"
 #include "flow_log.h"
 #include "region_fairing_args.h"

@@ -24,7 +24,6 @@ std::string number(double x, const char* format) {
   return text;
 }
 
-
 bool folds(double angle, double uncut_angle) {
   return !std::isnan(angle) && !std::isnan(uncut_angle) && angle > std::max(1.5 * uncut_angle, 5.0 / kDegrees);
 }
@@ -79,8 +78,6 @@ std::string pair_text(bool has, const DistanceStats& s) {
   std::snprintf(text, sizeof text, "%6.3f %5.2f", s.mean, s.max);
   return text;
 }
-
-
 
 std::string percent(int part, int whole) {
   return whole > 0 ? number(100.0 * part / whole, "%.0f") + "%" : "-";

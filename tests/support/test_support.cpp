@@ -26,7 +26,6 @@ Mesh tetrahedron() {
   return m;
 }
 
-
 std::string data_path(const std::string& name) { return std::string(FAIRSURF_DATA_DIR) + "/" + name; }
 
 std::string cli_path() { return FAIRSURF_CLI; }
