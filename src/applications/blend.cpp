@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <span>
@@ -321,21 +322,55 @@ bool creases_against(int flow_creases, int linear_creases) {
   return flow_creases > std::max(2 * linear_creases, linear_creases + kCreaseSlack);
 }
 
-// The linear tube `linear` delivered instead of the flow's (whose report is `flow`) for `reason`.
+// The linear tube `linear` delivered instead of the flow's (whose report is `flow`) for `reason`:
+// reported as fair_region reports its floor, the flow's method and kind with `linear` set, and of
+// the flow's report only its well_posedness (what `fairsurf blend` warns from).
 FairRegionReport keep_linear_tube(Mesh& mesh, LinearTube& linear, const FairRegionReport& flow,
                                   const std::string& reason) {
-  linear.report.note = std::string("the ") + to_string(flow.flow_kind) + " flow's tube " + reason +
-                       (flow.note.empty() ? "" : " (" + flow.note + ")") + "; kept the linear ∆" +
-                       std::to_string(linear.order()) + " tube";
+  FairRegionReport report = std::move(linear.report);
+  report.note = std::string("the ") + to_string(flow.flow_kind) + " flow's tube " + reason +
+                (flow.note.empty() ? "" : " (" + flow.note + ")") + "; kept the linear ∆" +
+                std::to_string(linear.order()) + " tube";
+  report.method = flow.method;
+  report.flow_kind = flow.flow_kind;
+  report.flow.well_posedness = flow.flow.well_posedness;
   mesh.V = std::move(linear.mesh.V);
-  return std::move(linear.report);
+  return report;
 }
 
-// Fairs the tube as the options' FairRegionOptions base says (flow_tube); where the result crosses
-// the mesh or creases against the linear ∆^k solution from the same tube (creases_against) and the
-// method is the flow, that linear solution takes its place if it does not cross the mesh (labelled
-// linear, with the reason). Throws NumericalError where the tube delivered would still cross the
-// mesh (`mesh` then holds it).
+// A flow's tube turns more than the linear one across the loops where its largest border normal
+// angle exceeds the linear tube's this many times: within 5% the one-sided fits cannot tell the two
+// apart, and such a tie goes to the G2 asked for (as FillOptions::held_out_margin's).
+constexpr double kBorderAngleMargin = 1.05;
+
+// Why the flow's tube (in `mesh`, reported by `report`; `creases`: its tube_creases) is no gain over
+// the linear tube `linear` from the same start, or empty. Either it turns the normal across the
+// loops by more than the linear tube does (kBorderAngleMargin) and by more than
+// kSmallestFoldAngle: a G2 tube less smooth at its borders than the C2 one, which on the real slabs
+// of bench_real_holes --all-slabs lies farther from the surface than the linear tube on average
+// (docs/blend.md, "A G2 tube that turns more than the linear one"). Or it creases against it
+// (creases_against).
+std::string loses_to_linear(const Mesh& mesh, const FairRegionReport& report, int creases, const LinearTube& linear,
+                            const Topology& topo, int first_tube_face) {
+  const double angle = report.continuity.max_normal_angle, linear_angle = linear.report.continuity.max_normal_angle;
+  if (detail::folds_against(angle, linear_angle, kBorderAngleMargin)) {
+    char text[160];
+    std::snprintf(text, sizeof text, "turns the normal across the loops by %.3g°, more than the linear tube (%.3g°)",
+                  angle * 180 / std::numbers::pi, linear_angle * 180 / std::numbers::pi);
+    return text;
+  }
+  const int linear_creases = tube_creases(linear.mesh.V, mesh.F, topo, first_tube_face);
+  if (creases_against(creases, linear_creases))
+    return "creases (" + std::to_string(creases) + " of its edges turn by more than 90°, " +
+           std::to_string(linear_creases) + " of the linear tube's)";
+  return "";
+}
+
+// Fairs the tube as the options' FairRegionOptions base says (flow_tube); where the method is the
+// flow and the result crosses the mesh or is no gain over the linear ∆^k solution from the same
+// tube (loses_to_linear), that linear solution takes its place if it does not cross the mesh
+// (labelled linear, with the reason). Throws NumericalError where the tube delivered would still
+// cross the mesh (`mesh` then holds it).
 FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
                            const BlendOptions& options, const FlowObserver& observer) {
   const Vertices tube = mesh.V;
@@ -343,16 +378,18 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
   FairRegionReport report = flow_tube(mesh, topo, free, first_tube_face, tube, linear_once, options, observer);
   const std::vector<FaceIntersection> crossings = tube_crossings(mesh, first_tube_face);
   if (crossings.empty()) {
-    if (options.method != FairMethod::flow || report.linear) return report;
+    // An unsettled flow is delivered as it stands, NOT steady (descent_fallback off, or the descent
+    // at its step limit): the user asked for that state.
+    if (options.method != FairMethod::flow || report.linear || report.flow.stop_reason != FlowStopReason::steady)
+      return report;
     const int creases = tube_creases(mesh.V, mesh.F, topo, first_tube_face);
-    if (!creases_against(creases, 0)) return report;  // nor against any linear tube: no solve
+    // Neither rule of loses_to_linear can hold, whatever the linear tube: no solve.
+    if (report.continuity.max_normal_angle <= detail::kSmallestFoldAngle && !creases_against(creases, 0))
+      return report;
     std::optional<LinearTube>& linear = linear_once.get();
     if (!linear || tube_crosses(linear->mesh, first_tube_face)) return report;
-    const int linear_creases = tube_creases(linear->mesh.V, mesh.F, topo, first_tube_face);
-    if (!creases_against(creases, linear_creases)) return report;
-    return keep_linear_tube(mesh, *linear, report,
-                            "creases (" + std::to_string(creases) + " of its edges turn by more than 90°, " +
-                                std::to_string(linear_creases) + " of the linear tube's)");
+    const std::string reason = loses_to_linear(mesh, report, creases, *linear, topo, first_tube_face);
+    return reason.empty() ? report : keep_linear_tube(mesh, *linear, report, reason);
   }
   if (options.method != FairMethod::flow) throw TubeCrossing(crossing_message(crossings, first_tube_face, ""));
   std::optional<LinearTube>& linear = linear_once.get();

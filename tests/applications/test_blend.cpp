@@ -344,7 +344,10 @@ double tube_distance(const Mesh& m, int first_tube_vertex, const Mesh& uncut, do
 // A band of width 4h cut across blub (bench_real_holes' blub 517 y): the time-stepped flow diverges,
 // and the energy descent from its last state settles into a tube that passes through itself (49
 // crossings); from the linear ∆³ tube, with the trials that would cross rejected, it settles at a
-// lower energy than from the tube as built, and on blub's surface as closely as the linear tube.
+// lower energy than from the tube as built, without crossing. That G2 tube turns the normal across
+// the loops by 99.6° where the linear tube turns it by 86.3°: no gain in smoothness there, and it
+// lies a little farther from blub's surface (0.0388 h against 0.0378 h), so the linear tube is
+// delivered, with both reasons in the note.
 TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
   const Mesh blub = read_mesh(test::data_path("blub.obj"));
   const double h = test::mean_edge_length(blub);
@@ -353,11 +356,12 @@ TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
   Mesh m = cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
   print("blub band", r);
-  EXPECT_FALSE(r.fair.linear);
-  EXPECT_EQ(r.fair.flow.stop_reason, FlowStopReason::steady);
-  EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "G2");
+  EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)");
   EXPECT_NE(r.fair.note.find("the energy descent continued from the linear ∆3 tube"), std::string::npos)
       << r.fair.note;
+  EXPECT_NE(r.fair.note.find("the sixth-order flow's tube turns the normal across the loops by "), std::string::npos)
+      << r.fair.note;
+  EXPECT_NE(r.fair.note.find("kept the linear ∆3 tube"), std::string::npos) << r.fair.note;
   EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
   expect_clean(m);
   EXPECT_EQ(loop_count(m), 0);
@@ -365,17 +369,17 @@ TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
   BlendOptions linear_options;
   linear_options.method = FairMethod::harmonic;
   Mesh linear = cut;
-  blend_loops(linear, linear_options);
-  const double g2 = tube_distance(m, cut.num_vertices(), blub, h);
-  const double c2 = tube_distance(linear, cut.num_vertices(), blub, h);
-  std::printf("[blend] blub band: tube %.4f h from the uncut mesh, the linear tube %.4f h\n", g2, c2);
-  EXPECT_LT(g2, 1.1 * c2);
+  const BlendReport l = blend_loops(linear, linear_options);
+  EXPECT_EQ(m.V, linear.V);  // the linear tube itself
+  EXPECT_EQ(r.fair.continuity.max_normal_angle, l.fair.continuity.max_normal_angle);
 }
 
 // A band across spot's body (bench_real_holes' spot 2099 y): the time-stepped flow does not settle.
 // The descent from the linear ∆³ tube reaches a slightly lower energy than the one from the tube as
 // built, but turns the normal across the loops by 14° where the linear tube turns it by 8.8°: it
-// folds against the linear tube, and the descent from the tube (11.3°) is kept.
+// folds against the linear tube, and the descent from the tube (11.3°) is kept. That one still
+// turns the normal more than the linear tube, and lies farther from spot (0.046 h against 0.032 h):
+// the linear tube is delivered.
 TEST(BlendReal, ADescentThatFoldsAgainstTheLinearTubeIsNotKept) {
   const Mesh spot = read_mesh(test::data_path("spot.obj"));
   const double h = test::mean_edge_length(spot);
@@ -383,18 +387,18 @@ TEST(BlendReal, ADescentThatFoldsAgainstTheLinearTubeIsNotKept) {
   ASSERT_EQ(loop_count(cut), 2);
   Mesh m = cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
-  BlendOptions linear_options;
-  linear_options.method = FairMethod::harmonic;
-  Mesh linear = cut;
-  const BlendReport l = blend_loops(linear, linear_options);
-  const double angle = r.fair.continuity.max_normal_angle, linear_angle = l.fair.continuity.max_normal_angle;
-  std::printf("[blend] spot band: border angle %.1f deg, the linear tube's %.1f deg; %s\n", angle * 180 / M_PI,
-              linear_angle * 180 / M_PI, r.fair.note.c_str());
-  EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "G2");
+  std::printf("[blend] spot band: %s\n", r.fair.note.c_str());
+  EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)");
   EXPECT_NE(r.fair.note.find("the energy descent continued from the tube it started from"), std::string::npos)
       << r.fair.note;
-  EXPECT_LE(angle, std::max(1.5 * linear_angle, 5 * M_PI / 180));
+  EXPECT_NE(r.fair.note.find("the sixth-order flow's tube turns the normal across the loops by 11.3°, more than the "
+                             "linear tube (8.84°)"),
+            std::string::npos)
+      << r.fair.note;
   EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
+  const double delivered = tube_distance(m, cut.num_vertices(), spot, h);
+  std::printf("[blend] spot band: tube %.4f h from the uncut mesh\n", delivered);
+  EXPECT_LT(delivered, 0.04);
 }
 
 // The same band without the descent: the time-stepped flow's diverged tube passes through the mesh,

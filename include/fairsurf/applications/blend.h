@@ -96,10 +96,15 @@ struct BlendReport {
 /// fair_region throw otherwise (NumericalError with `mesh` at the last accepted state of the flow).
 /// The faired tube is checked against the mesh (find_face_intersections): where the flow's tube
 /// crosses it, the linear ∆^k tube from the same start is delivered instead if it does not
-/// (fair.linear, with the reason in fair.note). So it is where the flow's tube creases against the
-/// linear one: more of its edges have faces whose normals turn by over 90° than twice the linear
-/// tube's and than the linear tube's plus 4 (a fin folded out of the tube; docs/blend.md, "Creased
-/// tubes"). Where the linear tube crosses too, a tube from Hermite rings
+/// (fair.linear, with the reason in fair.note; fair.method stays flow and fair.flow holds only the
+/// flow's well_posedness, as for fair_region's floor). So it is where the flow ended steady but is
+/// no gain over that linear tube: it turns the normal across the loops (fair.continuity's
+/// max_normal_angle) by more than 1.05 times the linear tube's and by more than 5° (docs/blend.md,
+/// "A G2 tube that turns more than the linear one"), or it creases against it: more of its edges
+/// have faces whose normals turn by over 90° than twice the linear tube's and than the linear tube's
+/// plus 4 (a fin folded out of the tube; "Creased tubes"). A flow that did not settle (no descent
+/// fallback, or the descent at its step limit) is delivered as it stands. Where the linear tube
+/// crosses too, a tube from Hermite rings
 /// is built again with straight rings and faired the same way (straight_rings; the observer sees
 /// both fairings' steps), and where that one crosses as well, NumericalError names both first
 /// crossings (`mesh` then holds the straight tube).
