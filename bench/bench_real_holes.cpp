@@ -3,8 +3,8 @@
 // triangulate_refine_and_fair_hole and fair at fairing_continuity(2). The protocol and every column
 // are described in docs/fill.md, "Real holes benchmark".
 //
-// Usage: bench_real_holes [--section fill|fair|blend|all] [--mesh NAME] [--no-cgal] [--quick]
-//                         [--random N [--seed S]] [--all-slabs] [--csv FILE]
+// Usage: bench_real_holes [--section fill|fair|blend|all] [--mesh NAME | --mesh-file PATH...] [--no-cgal]
+//                         [--quick] [--random N [--seed S]] [--all-slabs] [--csv FILE]
 #include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/applications/fill.h>
@@ -42,6 +42,7 @@ constexpr double kNoise = 0.1;  // σ of the normal noise, in h
 
 struct Args {
   std::string section = "all", mesh, csv;
+  std::vector<std::string> mesh_files;  // closed meshes to cut instead of the bundled ones
   bool cgal = true, quick = false;
   bool all_slabs = false;  // blend: every_blend_slab instead of the fixed cases
   int random = 0;          // ball centres drawn at random instead of the fixed ones (0: fixed)
@@ -596,6 +597,7 @@ Args parse_args(int argc, char** argv) {
     };
     if (a == "--section") args.section = value();
     else if (a == "--mesh") args.mesh = value();
+    else if (a == "--mesh-file") args.mesh_files.push_back(value());
     else if (a == "--csv") args.csv = value();
     else if (a == "--random") args.random = std::stoi(value());
     else if (a == "--seed") args.seed = std::stoull(value());
@@ -603,10 +605,12 @@ Args parse_args(int argc, char** argv) {
     else if (a == "--quick") args.quick = true;
     else if (a == "--all-slabs") args.all_slabs = true;
     else throw InvalidArgument("bench_real_holes: unknown argument " + a +
-                               " (--section fill|fair|blend|all, --mesh NAME, --no-cgal, --quick, --random N, "
+                               " (--section fill|fair|blend|all, --mesh NAME, --mesh-file PATH, --no-cgal, --quick, --random N, "
                                "--seed S, --all-slabs, --csv FILE)");
   }
   if (args.random < 0) throw InvalidArgument("bench_real_holes: --random must be >= 0");
+  if (!args.mesh.empty() && !args.mesh_files.empty())
+    throw InvalidArgument("bench_real_holes: --mesh picks a bundled mesh, --mesh-file replaces them: give one");
   if (args.section != "fill" && args.section != "fair" && args.section != "blend" && args.section != "all")
     throw InvalidArgument("bench_real_holes: --section must be fill, fair, blend or all, got " + args.section);
   return args;
@@ -621,7 +625,9 @@ int main(int argc, char** argv) {
     if (args.cgal) std::printf("CGAL was not found at configure time: no CGAL columns\n");
     args.cgal = false;
 #endif
-    std::vector<Loaded> meshes = bench::load_meshes(args.mesh, args.quick);
+    std::vector<Loaded> meshes;
+    if (args.mesh_files.empty()) meshes = bench::load_meshes(args.mesh, args.quick);
+    for (const std::string& file : args.mesh_files) meshes.push_back(bench::load_mesh_file(file, args.quick));
     if (args.random > 0)
       for (Loaded& m : meshes) m.centres = random_centres(m.mesh, args.random, args.seed);
     for (const Loaded& m : meshes) {

@@ -1,6 +1,7 @@
 #include "real_holes_cases.h"
 
 #include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -60,6 +61,13 @@ std::vector<int> centre_vertices(const MeshCase& c, const Mesh& mesh, bool quick
   return centres;
 }
 
+Loaded loaded(const MeshCase& c, Mesh mesh, bool quick) {
+  const double h = mean_edge_length(mesh);
+  std::vector<int> centres = centre_vertices(c, mesh, quick);
+  GridSurfaceDistance smooth(butterfly_refined(mesh, kSmoothLevels), h / 2);
+  return {c.name, std::move(mesh), h, std::move(centres), std::move(smooth)};
+}
+
 }  // namespace
 
 std::vector<Loaded> load_meshes(const std::string& filter, bool quick) {
@@ -71,13 +79,20 @@ std::vector<Loaded> load_meshes(const std::string& filter, bool quick) {
       std::printf("%s: not found in %s, skipped\n", c.file.c_str(), FAIRSURF_DATA_DIR);
       continue;
     }
-    Mesh mesh = read_mesh(path);
-    const double h = mean_edge_length(mesh);
-    std::vector<int> centres = centre_vertices(c, mesh, quick);
-    GridSurfaceDistance smooth(butterfly_refined(mesh, kSmoothLevels), h / 2);
-    out.push_back({c.name, std::move(mesh), h, std::move(centres), std::move(smooth)});
+    out.push_back(loaded(c, read_mesh(path), quick));
   }
   return out;
+}
+
+Loaded load_mesh_file(const std::filesystem::path& path, bool quick) {
+  Mesh mesh = read_mesh(path);
+  if (mesh.num_faces() == 0) throw InvalidArgument(path.string() + ": no faces");
+  const std::size_t loops = loops_of(mesh).size();
+  if (loops > 0)
+    throw InvalidArgument(path.string() + ": has " + std::to_string(loops) + " boundary loop" +
+                          (loops > 1 ? "s" : "") + "; the protocol cuts holes out of a closed mesh (close it first, "
+                          "for example with fairsurf fill)");
+  return loaded({path.stem().string(), path.string(), {}}, std::move(mesh), quick);
 }
 
 DistanceStats measure(const Truth& truth, const Vertices& V, const std::vector<int>& rows, double h) {

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,10 @@ struct Loaded {
 /// `filter`, all if empty), with three ball centres each (--quick: one); a missing file is skipped
 /// with a printed note.
 std::vector<Loaded> load_meshes(const std::string& filter, bool quick);
+/// Any closed mesh file (bench_real_holes --mesh-file), named by its file's stem, with the ball
+/// centres of a mesh without given ones: the vertices farthest along three fixed skew directions.
+/// Throws InvalidArgument where the mesh has a boundary loop or no face.
+Loaded load_mesh_file(const std::filesystem::path& path, bool quick);
 
 // What a result is measured against: the uncut mesh, as the protocol says, and its butterfly
 // refinement, which passes through the same vertices but is not flat between them.
