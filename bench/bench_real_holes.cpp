@@ -316,8 +316,9 @@ void fair_baseline(const Mesh& mesh, const Topology& topo, const std::vector<int
   FairRegionOptions options = FairRegionOptions::harmonic_started();
   options.method = FairMethod::harmonic;
   try {
-    fair_region(faired, region, options);
+    const FairRegionReport report = fair_region(faired, region, options);
     row.has_baseline = true;
+    row.baseline_angle = report.continuity.max_normal_angle;
     row.baseline = measure(truth, faired.V, region, h);
     row.baseline_energy = bench::region_energy(faired.V, faired.F, topo, region);
   } catch (const std::exception& e) {

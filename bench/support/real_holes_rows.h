@@ -25,7 +25,7 @@ struct Row {
   bool has_baseline = false, has_cgal = false, cgal_ok = false, fold = false, cgal_fold = false;
   bool disks = true;  // fill: the cut removed disks only (a ball across a thin tube removes an annulus)
   double ratio = NAN, smooth_ratio = NAN, angle = NAN, uncut_angle = NAN, cgal_angle = NAN;
-  double baseline_angle = NAN;  // fill: the ∆³ fill's border angle, as `angle`
+  double baseline_angle = NAN;  // the ∆³ fill's or fairing's border angle, as `angle`
   // fair: region_energy of the uncut (clean) mesh, of fairsurf's result, the ∆³ baseline's and CGAL's,
   // and the sixth-order flow's steady state delivered whatever the held-out rings and fold check
   // say (flow: its distances; has_flow where it settled).
