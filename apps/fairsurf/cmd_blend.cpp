@@ -3,6 +3,7 @@
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -50,6 +51,20 @@ std::string border_text(const char* name, const BlendLoop& loop) {
   return text;
 }
 
+// A tube that turns the normal across a loop by more than a right angle, and by more than twice what
+// the same fits read on the untouched input there, folds back at that loop: a seam no fairing
+// leaves where the two loops face each other. It happens where they do not, as when a band is cut
+// off a thin flat part (spot's ear: 128° against 8.8°). The tube is written; the user is told.
+void warn_if_folded_back(const char* name, const BlendLoop& loop) {
+  constexpr double kDegrees = 180.0 / M_PI;
+  if (!(loop.border.max_normal_angle > std::max(M_PI / 2, 2 * loop.reference.max_normal_angle))) return;
+  std::fprintf(stderr,
+               "fairsurf: warning: the tube folds back at loop %s = %d: it turns the normal across the loop by "
+               "%.3g° where the untouched input reads %.3g°; the two loops may not face each other (choose "
+               "others with --loops; docs/blend.md)\n",
+               name, loop.index, loop.border.max_normal_angle * kDegrees, loop.reference.max_normal_angle * kDegrees);
+}
+
 nlohmann::json loop_json(const BlendLoop& loop) {
   return {{"index", loop.index},
           {"length", loop.length},
@@ -79,6 +94,8 @@ void run_blend(const BlendArgs& args) {
   const BlendReport report =
       run.run([&] { return blend_loops(mesh, options, run.observer()); }, mesh, args.output);
   if (report.fair.method == FairMethod::flow) warn_if_not_parabolic(report.fair.flow);
+  warn_if_folded_back("a", report.a);
+  warn_if_folded_back("b", report.b);
   note_vertex_data_dropped(had_vertex_data, mesh, input_name, "blend");
   note_new_faces(mesh, input_faces, input_name, "blend");
   write_mesh_output(args.output, mesh);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analytic_meshes.h"
+#include "hole_meshes.h"
 #include "scratch_dir.h"
 #include "test_support.h"
 
@@ -118,6 +119,27 @@ TEST_F(CliLabels, BlendSaysItDropsVertexProperties) {
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("so blend drops them all"), std::string::npos) << run.out;
   EXPECT_TRUE(read_mesh(file("b.ply")).vertex_scalars.empty());
+}
+
+// A band cut across spot's ear (bench_real_holes --all-slabs' spot 1477 y) leaves the ear's flat tip
+// as one loop: the tube folds back there, turning the normal by about 128° where the uncut ear
+// reads 9°. blend writes it and says so; a tube between loops that face each other (fig8's) does
+// not draw the warning.
+TEST_F(CliLabels, BlendWarnsWhereTheTubeFoldsBack) {
+  const Mesh spot = read_mesh(test::data_path("spot.obj"));
+  const double h = test::mean_edge_length(spot);
+  write_mesh(file("ear.obj"), test::cut_slab(spot, {0.224501, 0.676789, -0.452578}, Eigen::Vector3d::UnitY(), 2 * h));
+  const auto run = test::run_cli("blend " + path("ear.obj") + " -o " + path("b.obj") + " --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("fairsurf: warning: the tube folds back at loop b = 1: it turns the normal across the loop by "),
+            std::string::npos)
+      << run.out;
+  EXPECT_TRUE(fs::exists(file("b.obj")));
+
+  ASSERT_EQ(test::run_cli("scene fig8 -o " + path("fig8.ply")).exit_code, 0);
+  const auto facing = test::run_cli("blend " + path("fig8.ply") + " -o " + path("c.ply") + " --quiet");
+  ASSERT_EQ(facing.exit_code, 0) << facing.out;
+  EXPECT_EQ(facing.out.find("folds back"), std::string::npos) << facing.out;
 }
 
 // f = K is ill-posed where K <= 0 (method.md §4): blend says so as smooth does.
