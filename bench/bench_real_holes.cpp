@@ -606,8 +606,8 @@ Args parse_args(int argc, char** argv) {
     else if (a == "--quick") args.quick = true;
     else if (a == "--all-slabs") args.all_slabs = true;
     else throw InvalidArgument("bench_real_holes: unknown argument " + a +
-                               " (--section fill|fair|blend|all, --mesh NAME, --mesh-file PATH, --no-cgal, --quick, --random N, "
-                               "--seed S, --all-slabs, --csv FILE)");
+                               " (--section fill|fair|blend|all, --mesh NAME, --mesh-file PATH, --no-cgal, --quick, "
+                               "--random N, --seed S, --all-slabs, --csv FILE)");
   }
   if (args.random < 0) throw InvalidArgument("bench_real_holes: --random must be >= 0");
   if (!args.mesh.empty() && !args.mesh_files.empty())
