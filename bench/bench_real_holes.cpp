@@ -523,23 +523,25 @@ Row blend_case(const Loaded& m, const Slab& slab) {
 
 // The delivered tubes' mean distances over the linear ∆³ tubes' on the same slabs, by one measure.
 struct BaselineRatios {
-  bench::Comparison ratios;  // its ratio(): how many, below 1, geometric mean, worst
-  int same = 0, worse_by_a_tenth = 0;
+  // Its ratio(): how many, below 1, geometric mean, worst; its baseline(): how many the same (the
+  // linear tube delivered).
+  bench::Comparison ratios;
+  int worse_by_a_tenth = 0;
   void add(double ours, double baseline) {
     if (!(baseline > 0)) return;
     const double ratio = ours / baseline;
     const int compared = ratios.compared;
     ratios.ratio(ratio);
     if (ratios.compared == compared) return;  // NaN: ours was not measured
-    same += ratio == 1;  // the linear tube delivered
+    ratios.baseline(ours, baseline);
     worse_by_a_tenth += ratio > 1.1;
   }
   std::string text() const {
-    const int n = ratios.compared;
     char text[200];
     std::snprintf(text, sizeof text,
                   "below D3 on %d of %d (the same on %d), geo-mean ratio to D3 %.2f, above 1.1x D3 on %d, worst %.2fx",
-                  ratios.below, n, same, n > 0 ? std::exp(ratios.log_ratio / n) : NAN, worse_by_a_tenth, ratios.worst);
+                  ratios.below, ratios.compared, ratios.same_as_baseline, ratios.geo_mean(), worse_by_a_tenth,
+                  ratios.worst);
     return text;
   }
 };

@@ -17,6 +17,8 @@
 namespace fairsurf::cli {
 namespace {
 
+constexpr double kDegrees = 180.0 / M_PI;
+
 struct BlendArgs {
   std::vector<std::string> inputs;
   std::string output;
@@ -40,7 +42,6 @@ BlendOptions blend_options(const BlendArgs& args) {
 }
 
 std::string border_text(const char* name, const BlendLoop& loop) {
-  constexpr double kDegrees = 180.0 / M_PI;
   char text[300];
   std::snprintf(text, sizeof text,
                 "loop %s = %d (%d vertices): max normal angle %.3g°, max H jump %.3g "
@@ -56,7 +57,6 @@ std::string border_text(const char* name, const BlendLoop& loop) {
 // leaves where the two loops face each other. It happens where they do not, as when a band is cut
 // off a thin flat part (spot's ear: 128° against 8.8°). The tube is written; the user is told.
 void warn_if_folded_back(const char* name, const BlendLoop& loop) {
-  constexpr double kDegrees = 180.0 / M_PI;
   if (!(loop.border.max_normal_angle > std::max(M_PI / 2, 2 * loop.reference.max_normal_angle))) return;
   std::fprintf(stderr,
                "fairsurf: warning: the tube folds back at loop %s = %d: it turns the normal across the loop by "

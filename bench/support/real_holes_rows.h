@@ -51,12 +51,14 @@ struct Comparison {
     below_baseline += ours < baseline;
     same_as_baseline += ours == baseline;  // the linear solution delivered: the baseline's own fill
   }
+  /// Geometric mean of the ratios; NaN before the first.
+  double geo_mean() const { return compared > 0 ? std::exp(log_ratio / compared) : NAN; }
   std::string text() const {
     std::string t = "no CGAL comparison";
     if (compared > 0) {
       char text[160];
       std::snprintf(text, sizeof text, "mean distance below CGAL on %d of %d (%.0f%%), geo-mean ratio %.2f, worst %.2fx",
-                    below, compared, 100.0 * below / compared, std::exp(log_ratio / compared), worst);
+                    below, compared, 100.0 * below / compared, geo_mean(), worst);
       t = text;
     }
     return t + ", below D3 on " + std::to_string(below_baseline) + " of " + std::to_string(baseline_compared) +
