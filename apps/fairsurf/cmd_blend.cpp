@@ -131,7 +131,8 @@ void setup_blend(CLI::App& app) {
       "blend", "Join two boundary loops (of one mesh or of two meshes) by a fair G2 tube");
   cmd->footer("Where the G2 tube crosses the mesh, or settles but turns the normal across the loops more than the "
               "linear ∆³ tube or creases against it, the linear tube is written instead, labelled C2 (linear) with "
-              "the reason (docs/blend.md).");
+              "the reason. A tube that folds back at a loop (turns the normal there by more than 90° and by more "
+              "than twice the input's reading) is written with a warning (docs/blend.md).");
   cmd->add_option("inputs", args->inputs, "One mesh, or two meshes to join (the second is appended)")
       ->required()
       ->expected(1, 2);
