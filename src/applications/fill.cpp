@@ -287,18 +287,31 @@ void report_fairing(const FairRegionReport& fairing, bool flowed, HoleReport& r)
   if (fairing.method == FairMethod::flow) r.well_posedness = fairing.flow.well_posedness;
 }
 
+// Whether a rejected patch crosses the mesh, and if so whether a flow's result does.
+enum class PatchCrossing { none, flow, other };
+
+// What a group's fairing starts from: the membrane (PatchOptions::relax, the default); the refined
+// triangulation, where every fairing from the membrane failed (a membrane folded against the border
+// gives the cotangent weights that fold the fairing too); or that triangulation unfaired, the last
+// resort.
+enum class PatchStart { membrane, refined, unfaired };
+
 // Fills the holes `group` jointly on `mesh` (`topo`: its connectivity); on success replaces mesh,
 // moves the filled mesh's connectivity into `filled` (after the last use of `topo`, which may be
 // the old value) and fills the reports; on failure throws (mesh untouched) or returns the reason
 // the patch was rejected. `patch_loops` are the group's loops as they are triangulated (relinked at
-// pinches). `flow_crossed` says whether the rejected patch was a flow's result that crosses the mesh.
+// pinches). `crossed` says whether the rejected patch crosses the mesh, and whether it was a flow's.
+// `start`: where the fairing starts (PatchStart).
 std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                        const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
-                       const FillOptions& options, const FairRegionOptions& fairing_options,
+                       const FillOptions& options, const FairRegionOptions& fairing_options, PatchStart start,
                        const FillObserver& observer, std::vector<HoleReport>& reports,
-                       std::optional<Topology>& filled, bool& flow_crossed) {
-  flow_crossed = false;
-  InitialPatch patch = hole_patch(mesh, topo, patch_loops, options.patch);
+                       std::optional<Topology>& filled, PatchCrossing& crossed) {
+  crossed = PatchCrossing::none;
+  const bool unfaired = start == PatchStart::unfaired;
+  PatchOptions patch_options = options.patch;
+  if (start != PatchStart::membrane) patch_options.relax = false;
+  InitialPatch patch = hole_patch(mesh, topo, patch_loops, patch_options);
   const std::string non_manifold = detail::patch_non_manifold(patch.mesh.F, patch.topology, patch.first_patch_face);
   if (!non_manifold.empty()) return non_manifold;
 
@@ -308,8 +321,19 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
   const FlowObserver step_observer = [&](const StepRecord& r) {
     if (observer) observer(group, r);
   };
-  const FairRegionReport fairing = fair_patch(patch, options, fairing_options, step_observer, sub, local, whole);
-  if (!patch.free_vertices.empty()) {
+  FairRegionReport fairing;
+  if (unfaired && !patch.free_vertices.empty()) {
+    sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, patch.topology, patch.free_vertices,
+                                options.submesh_rings);
+    local = derive_topology(patch.topology, sub.mesh.F, sub.to_global);
+    fairing.requested = fairing_options.continuity;
+    fairing.supported = Continuity::G0;
+    fairing.method = FairMethod::harmonic;
+    fairing.linear = true;
+  } else if (!unfaired) {
+    fairing = fair_patch(patch, options, fairing_options, step_observer, sub, local, whole);
+  }
+  if (!patch.free_vertices.empty() && !unfaired) {
     const FlowReport& flow = fairing.flow;
     if (!fairing.linear && flow.stop_reason != FlowStopReason::steady)
       return std::string("the ") + to_string(fairing.flow_kind) + " flow " + unsettled_reason(flow);
@@ -322,7 +346,7 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
     const auto crossings =
         find_face_intersections(patch.mesh.V, patch.mesh.F, new_faces, detail::kCrossingsSought);
     if (!crossings.empty()) {
-      flow_crossed = !fairing.linear && !patch.free_vertices.empty();
+      crossed = !fairing.linear && !patch.free_vertices.empty() ? PatchCrossing::flow : PatchCrossing::other;
       return crossing_reason(crossings, mesh.num_faces(), patch.mesh.V, patch.mesh.F, patch.topology);
     }
   }
@@ -345,11 +369,13 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
                          ? fairing.continuity
                          : measure_continuity(sub.mesh.V, sub.mesh.F, local, hole_free);
     }
-    if (free.empty()) {  // nothing was faired: the patch is the triangulation of the loop
+    if (free.empty() || unfaired) {  // nothing was faired: the patch is the triangulation of the loop
       r.supported = Continuity::G0;
       r.linear = true;
       r.steps = 0;
-      r.note = "the patch has no interior vertex: the loop's triangulation alone, continuous in position only";
+      r.harmonic_solves = 0;
+      if (free.empty())
+        r.note = "the patch has no interior vertex: the loop's triangulation alone, continuous in position only";
     }
   }
   mesh.V = std::move(patch.mesh.V);
@@ -399,6 +425,74 @@ std::vector<int> fillable_holes(const Faces& F, const Topology& topo, const std:
       mark(reports, {h}, HoleStatus::failed, bad);
   }
   return fillable;
+}
+
+// The note of a hole filled after `first_failure`: what was delivered instead, and from where.
+std::string fallback_note(const FillOptions& options, const std::string& first_failure, PatchStart start,
+                          const FairRegionOptions& fairing, bool relaxed_retry,
+                          const std::string& previous_start_failure, const HoleReport& r) {
+  const std::string failed = "the " + std::string(to_string(options.continuity)) + " fill failed (" + first_failure + ")";
+  if (start == PatchStart::unfaired)
+    return failed + "; so did every fairing from the membrane and from the refined triangulation (the last: " +
+           previous_start_failure + "): the refined triangulation is delivered unfaired, continuous in position only";
+  const std::string from = start == PatchStart::refined
+                               ? "; every fairing from the membrane failed (the last: " + previous_start_failure +
+                                     "); faired from the refined triangulation instead"
+                               : "";
+  if (relaxed_retry && fairing.method == FairMethod::flow)
+    return failed + from + "; flowed again with its trial states relaxed tangentially" +
+           (r.note.empty() ? "" : ": " + r.note);
+  if (fairing.method == FairMethod::flow) return failed + from + (r.note.empty() ? "" : ": " + r.note);
+  return failed + from + "; filled with " + delivered_label(fairing.continuity, r.linear);
+}
+
+// Fills `group` (fill_group), and with FillOptions::fallback_on_failure tries on where it fails:
+// the flow again with its trials relaxed tangentially where its patch crossed the mesh
+// (crossing_retry_relaxation), then the linear ∆^k solutions from the requested continuity down
+// (never a flow the user did not ask for); all that again from the refined triangulation instead of
+// its membrane; last, that triangulation unfaired: where a loop bites deep into a thin part, every
+// fairing from the membrane may cross the mesh while the refined patch does not. Marks the reports.
+void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                             const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
+                             const FillOptions& options, const FillObserver& observer,
+                             std::vector<HoleReport>& reports, std::optional<Topology>& filled) {
+  FairRegionOptions fairing = options;  // the fairing part of the options (sliced on purpose)
+  PatchStart start = PatchStart::membrane;
+  std::string reason, first_failure, previous_start_failure;
+  bool relaxed_retry = false;
+  for (;;) {
+    PatchCrossing crossed = PatchCrossing::none;
+    try {
+      reason = fill_group(mesh, filled ? *filled : topo, loops, group, patch_loops, options, fairing, start, observer,
+                          reports, filled, crossed);
+    } catch (const Error& e) {
+      reason = e.what();
+    }
+    if (start == PatchStart::unfaired && !reason.empty())
+      reason = previous_start_failure + (crossed == PatchCrossing::none
+                                                ? "; the refined triangulation, unfaired, failed too: " + reason
+                                                : "; so does the refined triangulation, unfaired");
+    if (reason.empty() || !options.fallback_on_failure || start == PatchStart::unfaired) break;
+    if (first_failure.empty()) first_failure = reason;
+    if (crossed == PatchCrossing::flow && fairing.flow.tangential_relaxation < options.crossing_retry_relaxation) {
+      fairing.flow.tangential_relaxation = options.crossing_retry_relaxation;
+      relaxed_retry = true;
+    } else if (fairing.method == FairMethod::flow || fairing.continuity != Continuity::G0) {
+      if (fairing.method == FairMethod::harmonic)
+        fairing.continuity = static_cast<Continuity>(static_cast<int>(fairing.continuity) - 1);
+      fairing.method = FairMethod::harmonic;
+    } else {  // the C0 (linear) solution failed too: the next start
+      previous_start_failure = reason;
+      start = start == PatchStart::membrane && options.patch.relax ? PatchStart::refined : PatchStart::unfaired;
+      fairing = options;
+      relaxed_retry = false;
+    }
+  }
+  mark(reports, group, reason.empty() ? HoleStatus::filled : HoleStatus::failed, reason);
+  if (reason.empty() && !first_failure.empty())
+    for (int h : group)
+      reports[h].note =
+          fallback_note(options, first_failure, start, fairing, relaxed_retry, previous_start_failure, reports[h]);
 }
 
 }  // namespace
@@ -453,43 +547,7 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
       for (int other : group)
         if (other != h) report.holes[h].filled_with.push_back(other);
     const auto group_start = Clock::now();
-    // Try the requested fairing, then (with fallback_on_failure) the flow again with its trials
-    // relaxed tangentially where its patch crossed the mesh (crossing_retry_relaxation), then the
-    // linear ∆^k solutions from the requested continuity down: never a flow the user did not ask for.
-    FairRegionOptions fairing = options;  // the fairing part of the options (sliced on purpose)
-    std::string reason, first_failure;
-    bool relaxed_retry = false;
-    for (;;) {
-      bool flow_crossed = false;
-      try {
-        reason = fill_group(mesh, filled ? *filled : topo, loops, group, patch_loops, options, fairing, observer,
-                            report.holes, filled, flow_crossed);
-      } catch (const Error& e) {
-        reason = e.what();
-      }
-      if (reason.empty() || !options.fallback_on_failure) break;
-      if (fairing.method == FairMethod::harmonic && fairing.continuity == Continuity::G0) break;
-      if (first_failure.empty()) first_failure = reason;
-      if (flow_crossed && fairing.flow.tangential_relaxation < options.crossing_retry_relaxation) {
-        fairing.flow.tangential_relaxation = options.crossing_retry_relaxation;
-        relaxed_retry = true;
-        continue;
-      }
-      if (fairing.method == FairMethod::harmonic)
-        fairing.continuity = static_cast<Continuity>(static_cast<int>(fairing.continuity) - 1);
-      fairing.method = FairMethod::harmonic;
-    }
-    mark(report.holes, group, reason.empty() ? HoleStatus::filled : HoleStatus::failed, reason);
-    if (reason.empty() && !first_failure.empty())
-      for (int h : group) {
-        HoleReport& r = report.holes[h];
-        const std::string failed = "the " + std::string(to_string(options.continuity)) + " fill failed (" + first_failure + ")";
-        if (relaxed_retry && fairing.method == FairMethod::flow)
-          r.note = failed + "; flowed again with its trial states relaxed tangentially" +
-                   (r.note.empty() ? "" : ": " + r.note);
-        else
-          r.note = failed + "; filled with " + delivered_label(fairing.continuity, r.linear);
-      }
+    fill_group_falling_back(mesh, topo, loops, group, patch_loops, options, observer, report.holes, filled);
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
   }
   for (const auto& r : report.holes) {

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <cstdio>
 #include <string>
 
@@ -325,6 +326,66 @@ TEST(RealHoleFold, AFlowThatFoldsAgainstItsLinearStartIsNotDelivered) {
               hole.continuity.max_normal_angle * 180 / std::numbers::pi, r.distance,
               flowed.continuity.max_normal_angle * 180 / std::numbers::pi, flowed_distance);
   EXPECT_GT(flowed_distance, 2 * r.distance);
+}
+
+// Two balls of 16 h and 17 h cut off the end of the hammer's handle and bite into its side: a
+// 197-edge loop round a thin part. Its membrane folds against the border (177°), and every fairing
+// started there (the flow, then ∆³, ∆², ∆¹ re-evaluated from it) crosses the handle's far side. The
+// same fairings started from the refined triangulation, without its membrane, do not: the handle's
+// end is closed, G2, where the fill used to leave it open.
+TEST(RealHoleBite, WhereEveryFairingFromTheMembraneCrossesTheMeshTheRefinedTriangulationIsFaired) {
+  const Mesh truth = read_mesh(test::data_path("hammer_rawscan.obj"));
+  const double h = test::mean_edge_length(truth);
+  Mesh cut = test::cut_ball(truth, {-0.015947, 0.208411, 3.491899}, 16 * h);
+  cut = test::cut_ball(cut, {0.188546, -0.175465, 2.638325}, 17 * h);
+  const Topology topo = build_topology(cut.F, cut.num_vertices());
+  const auto loops = boundary_loops(cut.F, topo);
+  const auto bite = std::max_element(loops.begin(), loops.end(), [](const auto& a, const auto& b) {
+    return a.size() < b.size();
+  });
+  ASSERT_EQ(bite->size(), 197u);
+  FillOptions options;
+  options.holes = {static_cast<int>(bite - loops.begin())};
+
+  Mesh filled = cut;
+  const FillReport report = fill_holes(filled, options);
+  const HoleReport& hole = report.holes[options.holes.front()];
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
+  EXPECT_NE(hole.note.find("every fairing from the membrane failed"), std::string::npos) << hole.note;
+  EXPECT_NE(hole.note.find("faired from the refined triangulation instead"), std::string::npos) << hole.note;
+  std::vector<int> new_faces(filled.num_faces() - cut.num_faces());
+  std::iota(new_faces.begin(), new_faces.end(), cut.num_faces());
+  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+  const ValidationReport checked = validate(filled);
+  EXPECT_TRUE(checked.manifold());
+  EXPECT_EQ(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).size(), loops.size() - 1);
+  const double distance = mean_new_vertex_distance(filled, cut.num_vertices(), truth) / h;
+
+  // Started from the membrane alone, nothing is delivered: the hole stays open, the mesh as it was.
+  Mesh membrane_only = cut;
+  FillOptions from_membrane = options;
+  from_membrane.fallback_on_failure = false;
+  const FillReport refused = fill_holes(membrane_only, from_membrane);
+  EXPECT_EQ(refused.holes[options.holes.front()].status, HoleStatus::failed);
+  EXPECT_NE(refused.holes[options.holes.front()].reason.find("crosses"), std::string::npos);
+  EXPECT_EQ(membrane_only.num_faces(), cut.num_faces());
+
+  // The linear floor takes the same way, and the G2 fill lies as far from the scan as it (a tie
+  // within FillOptions::held_out_margin: the scan's end cap is gone, and neither predicts it).
+  Mesh floor = cut;
+  FillOptions linear = options;
+  linear.method = FairMethod::harmonic;
+  linear.held_out_rings = 0;
+  const FillReport floor_report = fill_holes(floor, linear);
+  const HoleReport& floor_hole = floor_report.holes[options.holes.front()];
+  ASSERT_EQ(floor_hole.status, HoleStatus::filled) << floor_hole.reason;
+  EXPECT_EQ(delivered_label(floor_hole.supported, floor_hole.linear), "C2 (linear)") << floor_hole.note;
+  const double floor_distance = mean_new_vertex_distance(floor, cut.num_vertices(), truth) / h;
+  std::printf("[bite] hammer handle, 197 edges: %s from the refined triangulation %.3f h from the uncut scan, "
+              "the ∆³ floor %.3f h\n",
+              delivered_label(hole.supported, hole.linear).c_str(), distance, floor_distance);
+  EXPECT_LE(distance, 1.05 * floor_distance);
 }
 
 // A scan's border is noisy: 0.1 h of normal noise on blub around an 8 h ball hole (bench_real_holes'

@@ -27,9 +27,10 @@
 // that the patches join the fans into one disk, and the result is manifold there.
 //
 // Failures are per hole and leave the mesh as it was before that hole: a pinch shared with a loop
-// that is not filled ("non-manifold border"), a triangulation, refinement or flow that throws, a
-// patch that would make an edge or vertex non-manifold, or a faired patch whose faces cross the
-// mesh (face_intersection.h). The other holes are still filled.
+// that is not filled ("non-manifold border"), a triangulation or refinement that throws, a patch
+// that would make an edge or vertex non-manifold, or a patch whose faces cross the mesh
+// (face_intersection.h) however it is faired, even not at all (FillOptions::fallback_on_failure).
+// The other holes are still filled.
 #pragma once
 
 #include <fairsurf/applications/fair_region.h>
@@ -73,7 +74,10 @@ struct FillOptions : FairRegionOptions {
   /// When the fill of a hole fails (the flow throws or reaches no steady state without a linear
   /// floor, or the patch crosses the mesh), retry with the linear ∆^k solution at the requested
   /// continuity, then at each lower one down to the membrane (C0); the report's `note` says so. A
-  /// lower continuity's flow runs only when asked for (`continuity`).
+  /// lower continuity's flow runs only when asked for (`continuity`). If all of them fail, the same
+  /// again with the fairings started from the refined triangulation instead of its membrane (a
+  /// membrane folded against the border hands its fold to every fairing started there), and last
+  /// that triangulation unfaired, C0 (linear) (docs/fill.md, "A loop that bites into a thin part").
   bool fallback_on_failure = true;
   /// With fallback_on_failure: where the flow's patch crosses the mesh, the flow is tried once more
   /// before the linear fallback, each of its trial states relaxed tangentially by this fraction
@@ -103,7 +107,8 @@ struct HoleReport {
   /// the re-evaluated solution from the membrane, except where the held-out rings prefer one solve
   /// from the patch before its membrane by more than twice (refined_start; no flow is then tried).
   /// delivered_label(supported, linear) names it ("G2", "C2 (linear)"). A patch without interior
-  /// vertex (a small loop's triangulation alone) is reported C0 (linear), with a note.
+  /// vertex (a small loop's triangulation alone) or committed unfaired (fallback_on_failure's last
+  /// resort) is reported C0 (linear), with a note.
   bool linear = false;
   /// FairRegionOptions::held_out_rings: mean normal distance of the held-out rings from the input after
   /// the flow and after the linear solution, in mean edge lengths (∞: that fairing failed; NaN: not
