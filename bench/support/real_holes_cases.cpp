@@ -70,21 +70,42 @@ Loaded loaded(const MeshCase& c, Mesh mesh, bool quick) {
 
 }  // namespace
 
-std::vector<Loaded> load_meshes(const std::string& filter, bool quick) {
-  std::vector<Loaded> out;
+namespace {
+
+// The bundled cases whose file name contains `filter` (all if empty) and whose file is present; a
+// missing one is skipped with a printed note.
+std::vector<std::pair<MeshCase, std::filesystem::path>> bundled_cases(const std::string& filter) {
+  std::vector<std::pair<MeshCase, std::filesystem::path>> out;
   for (const MeshCase& c : mesh_cases()) {
     if (!filter.empty() && c.file.find(filter) == std::string::npos) continue;
     const std::filesystem::path path = std::filesystem::path(FAIRSURF_DATA_DIR) / c.file;
-    if (!std::filesystem::exists(path)) {
+    if (std::filesystem::exists(path))
+      out.emplace_back(c, path);
+    else
       std::printf("%s: not found in %s, skipped\n", c.file.c_str(), FAIRSURF_DATA_DIR);
-      continue;
-    }
-    out.push_back(loaded(c, read_mesh(path), quick));
   }
   return out;
 }
 
-Loaded load_mesh_file(const std::filesystem::path& path, bool quick) {
+}  // namespace
+
+std::vector<Loaded> load_meshes(const std::string& filter, bool quick) {
+  std::vector<Loaded> out;
+  for (const auto& [c, path] : bundled_cases(filter)) out.push_back(loaded(c, read_mesh(path), quick));
+  return out;
+}
+
+std::vector<ClosedMesh> read_bundled_meshes(const std::string& filter) {
+  std::vector<ClosedMesh> out;
+  for (const auto& [c, path] : bundled_cases(filter)) {
+    Mesh mesh = read_mesh(path);
+    const double h = mean_edge_length(mesh);
+    out.push_back({c.name, std::move(mesh), h});
+  }
+  return out;
+}
+
+ClosedMesh read_closed_mesh(const std::filesystem::path& path) {
   Mesh mesh = read_mesh(path);
   if (mesh.num_faces() == 0) throw InvalidArgument(path.string() + ": no faces");
   const std::size_t loops = loops_of(mesh).size();
@@ -92,7 +113,13 @@ Loaded load_mesh_file(const std::filesystem::path& path, bool quick) {
     throw InvalidArgument(path.string() + ": has " + std::to_string(loops) + " boundary loop" +
                           (loops > 1 ? "s" : "") + "; the protocol cuts holes out of a closed mesh (close it first, "
                           "for example with fairsurf fill)");
-  return loaded({path.stem().string(), path.string(), {}}, std::move(mesh), quick);
+  const double h = mean_edge_length(mesh);
+  return {path.stem().string(), std::move(mesh), h};
+}
+
+Loaded load_mesh_file(const std::filesystem::path& path, bool quick) {
+  ClosedMesh closed = read_closed_mesh(path);
+  return loaded({closed.name, path.string(), {}}, std::move(closed.mesh), quick);
 }
 
 DistanceStats measure(const Truth& truth, const Vertices& V, const std::vector<int>& rows, double h) {

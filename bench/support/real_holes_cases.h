@@ -41,6 +41,17 @@ std::vector<Loaded> load_meshes(const std::string& filter, bool quick);
 /// Throws InvalidArgument where the mesh has a boundary loop or no face.
 Loaded load_mesh_file(const std::filesystem::path& path, bool quick);
 
+/// A closed mesh to cut, without ball centres or reference surface (bench_fill_stress).
+struct ClosedMesh {
+  std::string name;
+  Mesh mesh;
+  double h = 0;  ///< mean edge length
+};
+/// The meshes of load_meshes (the same filter and notes), read only.
+std::vector<ClosedMesh> read_bundled_meshes(const std::string& filter);
+/// A closed mesh file, named by its file's stem. Throws as load_mesh_file.
+ClosedMesh read_closed_mesh(const std::filesystem::path& path);
+
 // What a result is measured against: the uncut mesh, as the protocol says, and its butterfly
 // refinement, which passes through the same vertices but is not flat between them.
 struct Truth {
