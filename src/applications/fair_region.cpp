@@ -353,22 +353,48 @@ std::string crossing_text(const std::vector<FaceIntersection>& crossings) {
          detail::crossing_count(crossings);
 }
 
-// With the linear floor, a faired region that crosses the mesh where the given one did not is
-// replaced by the first linear solution from the given positions that does not cross, at the
-// continuity reached and then at each lower one (as fill's fallback: C2 → C1 → C0), reported linear
-// with the reason; otherwise NumericalError, with mesh.V at the crossing result.
+// The crossings of `faces` on (V, F) that the given region did not have: the faces that crossed in
+// the given mesh (`given_crossed`, as query or as the face crossed; empty: none did) take no part,
+// so a region that already crosses itself, as a noisy scan's may, is held to no more than that.
+// At most kCrossingsSought.
+std::vector<FaceIntersection> new_crossings(const Vertices& V, const Faces& F, const std::vector<int>& faces,
+                                            const std::vector<char>& given_crossed) {
+  if (given_crossed.empty()) return find_face_intersections(V, F, faces, detail::kCrossingsSought);
+  std::vector<int> checked;
+  for (int f : faces)
+    if (!given_crossed[f]) checked.push_back(f);
+  std::vector<FaceIntersection> found;
+  for (const FaceIntersection& c : find_face_intersections(V, F, checked, 0))
+    if (!given_crossed[c.other_face] && found.size() < static_cast<std::size_t>(detail::kCrossingsSought))
+      found.push_back(c);
+  return found;
+}
+
+// Per face of `mesh`, whether it crosses or is crossed by one of `faces`; empty where none does.
+std::vector<char> crossed_faces(const Mesh& mesh, const std::vector<int>& faces) {
+  const std::vector<FaceIntersection> crossings = find_face_intersections(mesh.V, mesh.F, faces, 0);
+  if (crossings.empty()) return {};
+  std::vector<char> crossed(mesh.num_faces(), 0);
+  for (const FaceIntersection& c : crossings) crossed[c.query_face] = crossed[c.other_face] = 1;
+  return crossed;
+}
+
+// With the linear floor, a faired region that crosses the mesh where the given one did not
+// (new_crossings) is replaced by the first linear solution from the given positions that does not,
+// at the continuity reached and then at each lower one (as fill's fallback: C2 → C1 → C0), reported
+// linear with the reason; otherwise NumericalError, with mesh.V at the crossing result.
 // `fair`: the fairing itself, on `mesh`.
 template <class Fair>
 FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                                 const FairRegionOptions& options, Fair&& fair) {
   const bool floor = options.linear_floor && options.harmonic_start_iterations > 0;
-  const std::vector<int> faces = floor ? region_faces(mesh, free_vertices) : std::vector<int>();
-  if (!floor || !find_face_intersections(mesh.V, mesh.F, faces, 1).empty()) return fair();
+  if (!floor) return fair();
+  const std::vector<int> faces = region_faces(mesh, free_vertices);
+  const std::vector<char> given_crossed = crossed_faces(mesh, faces);
   const auto start = detail::Clock::now();
   const Vertices given = mesh.V;
   FairRegionReport report = fair();
-  const std::vector<FaceIntersection> crossings =
-      find_face_intersections(mesh.V, mesh.F, faces, detail::kCrossingsSought);
+  const std::vector<FaceIntersection> crossings = new_crossings(mesh.V, mesh.F, faces, given_crossed);
   if (crossings.empty()) return report;
   const int order = static_cast<int>(report.supported) + 1;
   const std::string what = report.linear ? "the linear ∆" + std::to_string(order) + " solution"
@@ -382,7 +408,7 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
     harmonic.continuity = static_cast<Continuity>(c);
     try {
       FairRegionReport floor_report = fair_detail::fair_valid_mesh(linear, topo, free_vertices, harmonic, {});
-      if (!find_face_intersections(linear.V, linear.F, faces, 1).empty()) continue;
+      if (!new_crossings(linear.V, linear.F, faces, given_crossed).empty()) continue;
       floor_report.requested = report.requested;
       floor_report.crossing_fallback = true;
       floor_report.seconds = detail::seconds_since(start);  // the crossing fairing's too

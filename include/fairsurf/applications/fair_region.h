@@ -154,9 +154,10 @@ FlowKind flow_for(Continuity c);
 /// Throws InvalidArgument for an empty or out-of-range free set or a flow.kind that contradicts the
 /// continuity, NumericalError if the flow or the solve fails — with mesh.V at the last accepted state.
 /// With the linear floor (harmonic_started()), a result whose region crosses the mesh where the
-/// given region did not (find_face_intersections) is replaced by the first linear ∆^k solution
-/// from the given positions, k from the continuity reached down to 1, that does not (reported
-/// `linear`, the reason in `note`); NumericalError if every one crosses, with mesh.V at the result.
+/// given region did not (find_face_intersections; faces that crossed in the given mesh, as a noisy
+/// scan's may, take no part) is replaced by the first linear ∆^k solution from the given positions,
+/// k from the continuity reached down to 1, that does not (reported `linear`, the reason in
+/// `note`); NumericalError if every one crosses, with mesh.V at the result.
 FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
                              const FairRegionOptions& options = {},
                              const FlowObserver& observer = {});
