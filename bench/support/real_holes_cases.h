@@ -41,7 +41,7 @@ std::vector<Loaded> load_meshes(const std::string& filter, bool quick);
 /// Throws InvalidArgument where the mesh has a boundary loop or no face.
 Loaded load_mesh_file(const std::filesystem::path& path, bool quick);
 
-/// A closed mesh to cut, without ball centres or reference surface (bench_fill_stress).
+/// A closed mesh to cut, without ball centres or reference surface (bench_stress).
 struct ClosedMesh {
   std::string name;
   Mesh mesh;

@@ -66,6 +66,9 @@ py::dict to_dict(const FairRegionReport& r) {
     for (const auto item : to_dict(r.flow)) d[item.first] = item.second;
   } else {
     d["harmonic"] = py::dict("order"_a = r.harmonic.order, "backward_error"_a = r.harmonic.backward_error);
+    if (r.method == FairMethod::flow)  // of the flow that was weighed or tried, as the CLI's log
+      d["well_posedness"] = py::dict("vertices"_a = r.flow.well_posedness.vertices,
+                                     "violating_vertices"_a = r.flow.well_posedness.violating_vertices);
   }
   return d;
 }

@@ -214,6 +214,12 @@ struct TubeDescent {
   std::string start;  ///< where it started, for the note
 };
 
+// Whether an unsettled time-stepped flow is continued by the energy descent (descent_fallback).
+bool descended(const BlendOptions& options) {
+  return options.descent_fallback && options.method == FairMethod::flow &&
+         options.flow.step_kind == FlowStepKind::implicit_flow;
+}
+
 // The energy descent from the positions `start` of mesh's tube; nothing where it throws.
 std::optional<TubeDescent> descend_tube(const Mesh& mesh, const Topology& topo, const std::vector<int>& free,
                                         int first_tube_face, Vertices start, const FairRegionOptions& descent,
@@ -232,13 +238,14 @@ std::optional<TubeDescent> descend_tube(const Mesh& mesh, const Topology& topo, 
   return d;
 }
 
-// The descent kept: one whose tube does not cross the mesh, then one that does not fold against
-// the linear tube (whose largest border normal angle is `linear_angle`; fill's rule, border_fold.h),
-// then the one of lowest energy. Null where every descent threw.
+// The descent kept: one whose tube does not cross the mesh, then one that settled, then one that
+// does not fold against the linear tube (whose largest border normal angle is `linear_angle`;
+// fill's rule, border_fold.h), then the one of lowest energy. Null where every descent threw.
 const TubeDescent* kept_descent(const std::vector<std::optional<TubeDescent>>& descents, double linear_angle) {
   const double fold_ratio = FairRegionOptions::harmonic_started().max_border_angle_ratio;
   auto rank = [&](const TubeDescent& d) {
-    return std::tuple(d.crosses, detail::folds_against(d.report.continuity.max_normal_angle, linear_angle, fold_ratio),
+    return std::tuple(d.crosses, d.report.flow.stop_reason != FlowStopReason::steady,
+                      detail::folds_against(d.report.continuity.max_normal_angle, linear_angle, fold_ratio),
                       d.report.flow.final_energy);
   };
   const TubeDescent* best = nullptr;
@@ -261,8 +268,7 @@ const TubeDescent* kept_descent(const std::vector<std::optional<TubeDescent>>& d
 FairRegionReport flow_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
                            const Vertices& tube, LinearTubeOnce& linear, const BlendOptions& options,
                            const FlowObserver& observer) {
-  const bool may_descend = options.descent_fallback && options.method == FairMethod::flow &&
-                           options.flow.step_kind == FlowStepKind::implicit_flow;
+  const bool may_descend = descended(options);
   std::string failure;
   try {
     FairRegionReport report = fair_region(mesh, topo, free, options, observer);
@@ -379,10 +385,16 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
   FairRegionReport report = flow_tube(mesh, topo, free, first_tube_face, tube, linear_once, options, observer);
   const std::vector<FaceIntersection> crossings = tube_crossings(mesh, first_tube_face);
   if (crossings.empty()) {
-    // An unsettled flow is delivered as it stands, NOT steady (descent_fallback off, or the descent
-    // at its step limit): the user asked for that state.
-    if (options.method != FairMethod::flow || report.linear || report.flow.stop_reason != FlowStopReason::steady)
-      return report;
+    if (options.method != FairMethod::flow || report.linear) return report;
+    if (report.flow.stop_reason != FlowStopReason::steady) {
+      // The flow the user asked for is delivered as it stands, NOT steady (descent_fallback off, or
+      // the descent asked for as the step); where the descent fallback ran and no descent settled,
+      // the linear tube takes its place, as fill and fair_region keep their floor.
+      if (!descended(options)) return report;
+      std::optional<LinearTube>& linear = linear_once.get();
+      if (!linear || tube_crosses(linear->mesh, first_tube_face)) return report;
+      return keep_linear_tube(mesh, *linear, report, "did not settle");
+    }
     const int creases = tube_creases(mesh.V, mesh.F, topo, first_tube_face);
     // Neither rule of loses_to_linear can hold, whatever the linear tube: no solve.
     if (report.continuity.max_normal_angle <= detail::kSmallestFoldAngle && !creases_against(creases, 0))
@@ -427,6 +439,59 @@ void blend_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& loop_a
   report.b.border = measure_near_loop(mesh, tubed, loop_b, options.measure_rings, patch.free_vertices, loop_b);
 }
 
+// blend_tube from Hermite rings (patch.tube.hermite), and where that tube crosses the mesh again
+// from straight rings: Hermite rings between unlike loops, or loops a slab grazes, can pass through
+// each other before any fairing; straight rings between the same points do not twist. Throws
+// TubeCrossing naming both first crossings (`mesh` then holds the straight tube).
+void blend_tube_either_rings(Mesh& mesh, const Mesh& input, const Topology& topo, const std::vector<int>& loop_a,
+                             const std::vector<int>& loop_b, const BlendOptions& options,
+                             const FlowObserver& observer, BlendReport& report) {
+  try {
+    blend_tube(mesh, topo, loop_a, loop_b, options, observer, report);
+  } catch (const TubeCrossing& hermite) {
+    if (!options.patch.tube.hermite) throw;
+    mesh = input;
+    BlendOptions straight = options;
+    straight.patch.tube.hermite = false;
+    try {
+      blend_tube(mesh, topo, loop_a, loop_b, straight, observer, report);
+    } catch (const TubeCrossing& e) {
+      throw TubeCrossing(std::string(hermite.what()) + "; built again with straight rings: " + e.what());
+    }
+    report.straight_rings = true;
+    report.fair.note = std::string("the tube from Hermite rings crossed the mesh (") + hermite.what() +
+                       "); built again with straight rings" +
+                       (report.fair.note.empty() ? "" : "; " + report.fair.note);
+  }
+}
+
+// Where every tube at the requested continuity crosses the mesh (`why`): the linear tubes of the
+// lower ones (∆², then ∆), from either rings, the first that does not cross, as fill and
+// fair_region fall back (C2 → C1 → C0). Throws NumericalError where every one crosses (`mesh`
+// then holds the last).
+void blend_lower_linear_tube(Mesh& mesh, const Mesh& input, const Topology& topo, const std::vector<int>& loop_a,
+                             const std::vector<int>& loop_b, const BlendOptions& options,
+                             const FlowObserver& observer, BlendReport& report, const std::string& why) {
+  for (int c = static_cast<int>(options.continuity) - 1; c >= 0; --c) {
+    BlendOptions lower = options;
+    lower.method = FairMethod::harmonic;
+    lower.continuity = static_cast<Continuity>(c);
+    mesh = input;
+    report.straight_rings = false;
+    try {
+      blend_tube_either_rings(mesh, input, topo, loop_a, loop_b, lower, observer, report);
+    } catch (const TubeCrossing&) {
+      continue;
+    }
+    report.fair.requested = options.continuity;
+    report.fair.crossing_fallback = true;
+    report.fair.note = why + "; kept the linear ∆" + std::to_string(c + 1) + " tube, the first that does not cross" +
+                       (report.fair.note.empty() ? "" : " (" + report.fair.note + ")");
+    return;
+  }
+  throw NumericalError(why + "; and so does every linear tube down to ∆1");
+}
+
 }  // namespace
 
 ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
@@ -455,27 +520,11 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
     report.a.reference = reference_at_loop(mesh, topo, loop_a, options.reference_ring, options.measure_rings);
     report.b.reference = reference_at_loop(mesh, topo, loop_b, options.reference_ring, options.measure_rings);
   }
-  const bool may_straighten = options.patch.tube.hermite;
-  Mesh input;  // for a second tube
-  if (may_straighten) input = mesh;
+  const Mesh input = mesh;  // for another tube
   try {
-    blend_tube(mesh, topo, loop_a, loop_b, options, observer, report);
-  } catch (const TubeCrossing& hermite) {
-    if (!may_straighten) throw;
-    // Hermite rings between unlike loops, or loops a slab grazes, can pass through each other
-    // before any fairing; straight rings between the same points do not twist.
-    mesh = std::move(input);
-    BlendOptions straight = options;
-    straight.patch.tube.hermite = false;
-    try {
-      blend_tube(mesh, topo, loop_a, loop_b, straight, observer, report);
-    } catch (const TubeCrossing& e) {
-      throw NumericalError(std::string(hermite.what()) + "; built again with straight rings: " + e.what());
-    }
-    report.straight_rings = true;
-    report.fair.note = std::string("the tube from Hermite rings crossed the mesh (") + hermite.what() +
-                       "); built again with straight rings" +
-                       (report.fair.note.empty() ? "" : "; " + report.fair.note);
+    blend_tube_either_rings(mesh, input, topo, loop_a, loop_b, options, observer, report);
+  } catch (const TubeCrossing& crossing) {
+    blend_lower_linear_tube(mesh, input, topo, loop_a, loop_b, options, observer, report, crossing.what());
   }
   report.seconds = detail::seconds_since(start);
   return report;

@@ -487,6 +487,59 @@ TEST(BlendReal, AHermiteTubeThatCrossesTheMeshIsBuiltAgainWithStraightRings) {
   EXPECT_EQ(loop_count(m), 0);
 }
 
+// A slab 4 h wide across the hammer scan's handle, 15° off square: two facing loops, ragged as the
+// scan is. Every tube at G2 crosses the mesh near a notch of one loop, from Hermite rings and from
+// straight ones, flowed or linear (the Hermite tube's ∆³ crosses an input face, the straight
+// rings' their own tube); ∆² does too. The linear ∆ tube does not, and is delivered, "C0 (linear)", with
+// the reason. Before, the blend was an error.
+TEST(BlendReal, WhereEveryG2TubeCrossesTheFirstLowerLinearTubeThatDoesNotIsKept) {
+  const Mesh hammer = read_mesh(test::data_path("hammer_rawscan.obj"));
+  const double h = test::mean_edge_length(hammer);
+  const Mesh cut = test::cut_slab(hammer, {-0.469669, 0.083133, 0.071897},
+                                  Eigen::Vector3d(0.003, -0.256, 0.967).normalized(), 2 * h);
+  ASSERT_EQ(loop_count(cut), 2);
+  Mesh m = cut;
+  const BlendReport r = blend_loops(m, BlendOptions{});
+  print("hammer handle, oblique", r);
+  EXPECT_TRUE(r.fair.linear);
+  EXPECT_TRUE(r.fair.crossing_fallback);
+  EXPECT_EQ(r.fair.requested, Continuity::G2);
+  EXPECT_LT(r.fair.supported, Continuity::G2);
+  EXPECT_NE(r.fair.note.find("built again with straight rings"), std::string::npos) << r.fair.note;
+  EXPECT_NE(r.fair.note.find("tube, the first that does not cross"), std::string::npos) << r.fair.note;
+  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
+  expect_clean(m);
+  EXPECT_EQ(loop_count(m), 0);
+}
+
+// An oblique slab across the remeshed bunny (bench_stress's blend draws): the time-stepped flow
+// fails at its first step, and the energy descent from the tube and from the linear ∆³ tube both
+// end at their step limit without a steady state. The linear tube is delivered, steady, "C2
+// (linear)", with the reason; before, the unsettled descent was, labelled G2 and NOT steady.
+TEST(BlendReal, WhereNoDescentSettlesTheLinearTubeIsKept) {
+  const Mesh bunny = read_mesh(test::data_path("stanford_bunny_remesh_closed.obj"));
+  const double h = test::mean_edge_length(bunny);
+  const Mesh cut = test::cut_slab(
+      bunny, {-0.666721, 0.341074, 0.065914},
+      Eigen::Vector3d(0.71289063388071217, -0.32721991021677854, -0.62025323415753331).normalized(), 2 * h);
+  ASSERT_EQ(loop_count(cut), 2);
+  Mesh m = cut;
+  const BlendReport r = blend_loops(m, BlendOptions{});
+  print("bunny, oblique", r);
+  EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)") << r.fair.note;
+  EXPECT_NE(r.fair.note.find("did not settle"), std::string::npos) << r.fair.note;
+  EXPECT_NE(r.fair.note.find("kept the linear ∆3 tube"), std::string::npos) << r.fair.note;
+  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
+  expect_clean(m);
+  EXPECT_EQ(loop_count(m), 0);
+
+  // The time-stepped flow alone (no descent fallback) fails at its first step.
+  Mesh asked = cut;
+  BlendOptions no_descent;
+  no_descent.descent_fallback = false;
+  EXPECT_THROW(blend_loops(asked, no_descent), NumericalError);
+}
+
 // Two open cylinders end to end with a plate between their facing ends: every tube between those
 // ends passes through the plate, from Hermite rings or straight ones, flowed or linear. No tube is
 // delivered as a success: NumericalError names the first crossing of both tubes, and the mesh

@@ -261,6 +261,17 @@ std::vector<FaceIntersection> region_crossings(const Mesh& m, const std::vector<
   return find_face_intersections(m.V, m.F, faces, 1);
 }
 
+// bench_real_holes' fair region airplane 1206 8h: the vertices within 8 h of kFinRoot.
+const Eigen::RowVector3d kFinRoot(-7.10032, 0.122909, 3.11757);
+
+std::vector<int> fin_root_region(const Mesh& airplane) {
+  const double h = test::mean_edge_length(airplane);
+  std::vector<int> region;
+  for (int v = 0; v < airplane.num_vertices(); ++v)
+    if ((airplane.V.row(v) - kFinRoot).norm() <= 8 * h) region.push_back(v);
+  return region;
+}
+
 }  // namespace
 
 // bench_real_holes' fair region airplane 1206 8h: the ball's 268 vertices around a fin root. Its ∆³
@@ -269,11 +280,7 @@ std::vector<FaceIntersection> region_crossings(const Mesh& m, const std::vector<
 // at 0.33 h.
 TEST(FairRegionReal, AResultThatCrossesTheMeshGivesWayToALinearOneThatDoesNot) {
   const Mesh airplane = read_mesh(test::data_path("airplane.obj"));
-  const double h = test::mean_edge_length(airplane);
-  const Eigen::RowVector3d centre(-7.10032, 0.122909, 3.11757);
-  std::vector<int> region;
-  for (int v = 0; v < airplane.num_vertices(); ++v)
-    if ((airplane.V.row(v) - centre).norm() <= 8 * h) region.push_back(v);
+  const std::vector<int> region = fin_root_region(airplane);
   ASSERT_TRUE(region_crossings(airplane, region).empty());
 
   Mesh faired = airplane;
@@ -302,17 +309,14 @@ TEST(FairRegionReal, AResultThatCrossesTheMeshGivesWayToALinearOneThatDoesNot) {
 TEST(FairRegionReal, ARegionThatAlreadyCrossesIsHeldToTheCrossingsItHad) {
   const Mesh airplane = read_mesh(test::data_path("airplane.obj"));
   const double h = test::mean_edge_length(airplane);
-  const Eigen::RowVector3d centre(-7.10032, 0.122909, 3.11757);
-  std::vector<int> region;
-  for (int v = 0; v < airplane.num_vertices(); ++v)
-    if ((airplane.V.row(v) - centre).norm() <= 8 * h) region.push_back(v);
+  const std::vector<int> region = fin_root_region(airplane);
   // The region face nearest the centre, pierced through its centroid by a triangle of its own.
   int pierced = -1;
   double nearest = INFINITY;
   for (int f = 0; f < airplane.num_faces(); ++f) {
     const Eigen::RowVector3d c =
         (airplane.V.row(airplane.F(f, 0)) + airplane.V.row(airplane.F(f, 1)) + airplane.V.row(airplane.F(f, 2))) / 3;
-    if ((c - centre).norm() < nearest) nearest = (c - centre).norm(), pierced = f;
+    if ((c - kFinRoot).norm() < nearest) nearest = (c - kFinRoot).norm(), pierced = f;
   }
   const Eigen::RowVector3d a = airplane.V.row(airplane.F(pierced, 0)), b = airplane.V.row(airplane.F(pierced, 1)),
                            c = airplane.V.row(airplane.F(pierced, 2));

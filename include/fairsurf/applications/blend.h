@@ -45,7 +45,9 @@ struct BlendOptions : FairRegionOptions {
   /// from and from the linear ∆^k tube from that, keep the result whose tube does not cross the mesh,
   /// then one that does not fold against the linear tube (its border normal angle above 1.5 times
   /// the linear tube's and above 5°, fill's rule), then the one of lowest energy (the observer sees
-  /// that descent's steps only) and say so in the report's fair.note. On real meshes the
+  /// that descent's steps only) and say so in the report's fair.note; a descent that settles is
+  /// kept before one that does not, and where none settles the linear ∆^k tube is delivered if it
+  /// does not cross the mesh (blend_loops). On real meshes the
   /// time-stepped flow often does not settle (the fitted EL is not the gradient of the discrete
   /// energy on irregular rings); where it does, as on the analytic scenes, its result is kept
   /// unchanged.
@@ -102,12 +104,18 @@ struct BlendReport {
 /// max_normal_angle) by more than 1.05 times the linear tube's and by more than 5° (docs/blend.md,
 /// "A G2 tube that turns more than the linear one"), or it creases against it: more of its edges
 /// have faces whose normals turn by over 90° than twice the linear tube's and than the linear tube's
-/// plus 4 (a fin folded out of the tube; "Creased tubes"). A flow that did not settle (no descent
-/// fallback, or the descent at its step limit) is delivered as it stands. Where the linear tube
+/// plus 4 (a fin folded out of the tube; "Creased tubes"). So it is where the descent fallback ran
+/// and no descent settled (the linear tube, "did not settle"); a flow the user asked for that did
+/// not settle (descent_fallback off, or the descent as the step kind) is delivered as it stands,
+/// NOT steady. Where the linear tube
 /// crosses too, a tube from Hermite rings
 /// is built again with straight rings and faired the same way (straight_rings; the observer sees
-/// both fairings' steps), and where that one crosses as well, NumericalError names both first
-/// crossings (`mesh` then holds the straight tube).
+/// both fairings' steps). Where that one crosses as well, the linear tubes of the lower
+/// continuities (∆², then ∆), from Hermite rings and then straight ones, replace it: the first that
+/// does not cross is delivered (fair.linear and fair.crossing_fallback, fair.requested the
+/// continuity asked for, fair.supported the lower one, the crossings in fair.note), as fill and
+/// fair_region fall back. Where every one crosses, NumericalError names the first crossings
+/// (`mesh` then holds the last tube tried).
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options = {}, const FlowObserver& observer = {});
 
 /// Measures continuity at the vertices of `loop` only: on the faces within `rings` rings of it,

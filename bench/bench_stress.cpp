@@ -1,0 +1,316 @@
+// Fill, fair and blend under stress (issue #11, "patches that are always valid"): cases drawn at
+// random on closed meshes, none of them tidy, each run with the library's defaults and its output
+// checked. The protocol and figures are in docs/fill.md, "Stress benchmark".
+//
+// fill:  1–3 balls of 4–17 h cut out (they may overlap, sever a thin part or bite into its side).
+// fair:  the same balls' vertices freed on the uncut mesh, clean and with 0.1 h of normal noise.
+// blend: a slab 4 h wide at a random orientation through a random vertex, where it leaves exactly
+//        two loops of at most 200 edges.
+//
+// Usage: bench_stress [--section fill|fair|blend|all] [--mesh NAME | --mesh-file PATH...]
+//                     [--trials N] [--seed S]
+#include <fairsurf/applications/blend.h>
+#include <fairsurf/applications/fair_region.h>
+#include <fairsurf/applications/fill.h>
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/face_intersection.h>
+#include <fairsurf/mesh/region_selection.h>
+#include <fairsurf/mesh/topology.h>
+#include <fairsurf/mesh/validate.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <numbers>
+#include <numeric>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "real_holes.h"
+#include "real_holes_cases.h"
+
+namespace {
+
+using namespace fairsurf;
+using bench::ClosedMesh;
+
+constexpr double kNoise = 0.1;     // σ of the fair section's normal noise, in h
+constexpr int kMaxBlendLoop = 200;  // border edges, as bench_real_holes' slabs
+
+struct Args {
+  std::string section = "all";
+  std::string mesh;                     // bundled meshes whose name contains this
+  std::vector<std::string> mesh_files;  // closed meshes to use instead of the bundled ones
+  int trials = 40;                      // per mesh and section
+  std::uint64_t seed = 1;               // of the first trial; trial t draws from seed + t
+};
+
+Args parse_args(int argc, char** argv) {
+  Args args;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw InvalidArgument("bench_stress: " + a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--section") args.section = value();
+    else if (a == "--mesh") args.mesh = value();
+    else if (a == "--mesh-file") args.mesh_files.push_back(value());
+    else if (a == "--trials") args.trials = std::stoi(value());
+    else if (a == "--seed") args.seed = std::stoull(value());
+    else
+      throw InvalidArgument("bench_stress: unknown argument " + a +
+                            " (--section fill|fair|blend|all, --mesh NAME, --mesh-file PATH, --trials N, --seed S)");
+  }
+  if (args.trials < 1) throw InvalidArgument("bench_stress: --trials must be >= 1");
+  if (!args.mesh.empty() && !args.mesh_files.empty())
+    throw InvalidArgument("bench_stress: --mesh and --mesh-file exclude each other");
+  if (args.section != "fill" && args.section != "fair" && args.section != "blend" && args.section != "all")
+    throw InvalidArgument("bench_stress: --section must be fill, fair, blend or all, got " + args.section);
+  return args;
+}
+
+// 1–3 balls, each centred at a vertex of `mesh` as cut so far (`cut`: cut each ball out, else keep
+// the mesh whole), of radius 4–17 h, all drawn from std::mt19937_64(seed) (whose output the
+// standard fixes). Returns the mesh as cut and the vertices inside the balls (of the uncut mesh).
+struct Balls {
+  Mesh cut;
+  std::vector<int> inside;
+};
+
+Balls draw_balls(const ClosedMesh& m, std::uint64_t seed, bool cut) {
+  std::mt19937_64 draw(seed);
+  Balls b{m.mesh, {}};
+  std::set<int> inside;
+  const int balls = 1 + static_cast<int>(draw() % 3);
+  for (int k = 0; k < balls && b.cut.num_faces() > 0; ++k) {
+    const int centre = static_cast<int>(draw() % static_cast<std::uint64_t>(b.cut.num_vertices()));
+    const double radius = static_cast<double>(4 + draw() % 14) * m.h;
+    const Eigen::Vector3d c = b.cut.V.row(centre).transpose();
+    if (cut)
+      b.cut = bench::cut_ball(b.cut, c, radius).mesh;
+    else
+      for (int v : vertices_in_ball(b.cut.V, c, radius)) inside.insert(v);
+  }
+  b.inside.assign(inside.begin(), inside.end());
+  return b;
+}
+
+std::vector<int> range(int first, int end) {
+  std::vector<int> r(static_cast<std::size_t>(std::max(0, end - first)));
+  std::iota(r.begin(), r.end(), first);
+  return r;
+}
+
+bool crosses(const Mesh& mesh, const std::vector<int>& faces) {
+  return !find_face_intersections(mesh.V, mesh.F, faces, 1).empty();
+}
+
+bool noted(const std::string& note, const char* what) { return note.find(what) != std::string::npos; }
+
+// ---------------------------------------------------------------------------------------------
+// Fill: the balls cut out and filled
+
+struct FillTally {
+  int trials = 0, refused = 0, holes = 0, open = 0, refined = 0, unfaired = 0, crossing = 0, non_manifold = 0;
+  double slowest = 0;
+};
+
+void fill_trial(const ClosedMesh& m, std::uint64_t seed, FillTally& tally) {
+  const Mesh cut = draw_balls(m, seed, true).cut;
+  std::printf("fill  %-26s seed %3llu: loops %s", m.name.c_str(), static_cast<unsigned long long>(seed),
+              bench::border_sizes(cut).c_str());
+  ++tally.trials;
+  Mesh filled = cut;
+  FillReport report;
+  try {
+    report = fill_holes(filled, FillOptions{});
+  } catch (const Error& e) {
+    ++tally.refused;
+    std::printf(", refused: %s\n", e.what());
+    return;
+  }
+  const bool crossing = crosses(filled, range(cut.num_faces(), filled.num_faces()));
+  const bool manifold = validate(filled).manifold();
+  tally.holes += static_cast<int>(report.holes.size());
+  tally.open += report.failed;
+  tally.crossing += crossing;
+  tally.non_manifold += !manifold;
+  tally.slowest = std::max(tally.slowest, report.seconds);
+  std::printf(", %.2f s%s%s", report.seconds, crossing ? ", OUTPUT CROSSES" : "", manifold ? "" : ", NOT MANIFOLD");
+  for (const HoleReport& r : report.holes) {
+    const bool unfaired = noted(r.note, "delivered unfaired");
+    const bool refined = !unfaired && noted(r.note, "faired from the refined triangulation instead");
+    tally.unfaired += unfaired;
+    tally.refined += refined;
+    if (r.status == HoleStatus::failed)
+      std::printf("\n    hole %d (%d edges) left open: %s", r.index, r.border_edges, r.reason.c_str());
+    else if (unfaired || refined)
+      std::printf("\n    hole %d (%d edges): %s, %s", r.index, r.border_edges,
+                  delivered_label(r.supported, r.linear).c_str(),
+                  unfaired ? "the refined triangulation unfaired" : "faired from the refined triangulation");
+  }
+  std::printf("\n");
+}
+
+std::string fill_summary(const FillTally& t) {
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "fill: %d trials (%d refused), %d holes: %d left open, %d faired from the refined triangulation, %d "
+                "filled by it unfaired; outputs crossing the mesh %d, not manifold %d; slowest trial %.2f s",
+                t.trials, t.refused, t.holes, t.open, t.refined, t.unfaired, t.crossing, t.non_manifold, t.slowest);
+  return text;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fair: the balls' vertices freed, as `fairsurf fair` runs without options
+
+struct FairTally {
+  int regions = 0, errors = 0, not_steady = 0, g2 = 0, crossing = 0;
+};
+
+void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, FairTally& tally) {
+  Mesh mesh = m.mesh;
+  if (noisy) bench::add_normal_noise(mesh, kNoise * m.h, seed);
+  ClosedMesh drawn{m.name, mesh, m.h};
+  const std::vector<int> region = draw_balls(drawn, seed, false).inside;
+  std::printf("fair  %-26s seed %3llu%s: %zu free: ", m.name.c_str(), static_cast<unsigned long long>(seed),
+              noisy ? ", noise" : "", region.size());
+  ++tally.regions;
+  Mesh faired = mesh;
+  try {
+    const FairRegionReport r = fair_region(faired, region, FairRegionOptions::harmonic_started());
+    const bool steady = r.linear || r.flow.stop_reason == FlowStopReason::steady;
+    // More crossings than the given region had (a noisy scan's may cross already).
+    std::vector<char> free(mesh.num_vertices(), 0);
+    for (int v : region) free[v] = 1;
+    std::vector<int> faces;
+    for (int f = 0; f < mesh.num_faces(); ++f)
+      if (free[mesh.F(f, 0)] || free[mesh.F(f, 1)] || free[mesh.F(f, 2)]) faces.push_back(f);
+    const bool crossing = find_face_intersections(faired.V, faired.F, faces, 0).size() >
+                          find_face_intersections(mesh.V, mesh.F, faces, 0).size();
+    tally.not_steady += !steady;
+    tally.g2 += steady && !r.linear && r.supported == Continuity::G2;
+    tally.crossing += crossing;
+    std::printf("%s%s, %.2f s%s\n", delivered_label(r.supported, r.linear).c_str(), steady ? "" : ", NOT STEADY",
+                r.seconds, crossing ? ", OUTPUT CROSSES" : "");
+  } catch (const std::exception& e) {
+    ++tally.errors;
+    std::printf("error: %s\n", e.what());
+  }
+}
+
+std::string fair_summary(const FairTally& t) {
+  char text[300];
+  std::snprintf(text, sizeof text, "fair: %d regions, errors %d, not steady %d, steady G2 %d, crossing outputs %d",
+                t.regions, t.errors, t.not_steady, t.g2, t.crossing);
+  return text;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Blend: a slab at a random orientation
+
+struct BlendTally {
+  int blends = 0, errors = 0, not_steady = 0, g2 = 0, lower = 0, folds_back = 0, crossing = 0;
+};
+
+// The cut of slab `draw`'s next draws leave, if it has exactly two loops of at most kMaxBlendLoop
+// edges; an empty mesh otherwise.
+Mesh draw_slab(const ClosedMesh& m, std::mt19937_64& draw, int& vertex, Eigen::Vector3d& axis) {
+  vertex = static_cast<int>(draw() % static_cast<std::uint64_t>(m.mesh.num_vertices()));
+  std::normal_distribution<double> normal;
+  for (int k = 0; k < 3; ++k) axis(k) = normal(draw);
+  axis.normalize();
+  Mesh cut = bench::cut_slab(m.mesh, vertex, axis, 2 * m.h).mesh;
+  const auto loops = boundary_loops(cut.F, build_topology(cut.F, cut.num_vertices()));
+  if (loops.size() != 2 || std::max(loops[0].size(), loops[1].size()) > static_cast<std::size_t>(kMaxBlendLoop))
+    return {};
+  return cut;
+}
+
+void blend_trial(const ClosedMesh& m, const Mesh& cut, int vertex, const Eigen::Vector3d& axis, BlendTally& tally) {
+  std::printf("blend %-26s vertex %5d axis (%.3f, %.3f, %.3f), loops %s: ", m.name.c_str(), vertex, axis(0),
+              axis(1), axis(2), bench::border_sizes(cut).c_str());
+  ++tally.blends;
+  Mesh blended = cut;
+  try {
+    const BlendReport r = blend_loops(blended, BlendOptions{});
+    const bool steady = r.fair.linear || r.fair.flow.stop_reason == FlowStopReason::steady;
+    const bool crossing = crosses(blended, range(cut.num_faces(), blended.num_faces()));
+    // `fairsurf blend`'s warning: the tube turns the normal across a loop by more than 90° and by
+    // more than twice the untouched input's reading there.
+    const auto folds_back = [](const BlendLoop& loop) {
+      return loop.border.max_normal_angle > std::max(std::numbers::pi / 2, 2 * loop.reference.max_normal_angle);
+    };
+    const bool back = folds_back(r.a) || folds_back(r.b);
+    tally.not_steady += !steady;
+    tally.g2 += steady && !r.fair.linear && r.fair.supported == Continuity::G2;
+    tally.lower += r.fair.supported < r.fair.requested;
+    tally.folds_back += back;
+    tally.crossing += crossing;
+    std::printf("%s%s%s, %.2f s%s\n", delivered_label(r.fair.supported, r.fair.linear).c_str(),
+                steady ? "" : ", NOT STEADY", back ? ", folds back" : "", r.seconds, crossing ? ", OUTPUT CROSSES" : "");
+  } catch (const std::exception& e) {
+    ++tally.errors;
+    std::printf("error: %s\n", e.what());
+  }
+}
+
+std::string blend_summary(const BlendTally& t) {
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "blend: %d slabs, errors %d, not steady %d, steady G2 %d, below the continuity asked for %d, folding "
+                "back at a loop %d, crossing outputs %d",
+                t.blends, t.errors, t.not_steady, t.g2, t.lower, t.folds_back, t.crossing);
+  return text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const Args args = parse_args(argc, argv);
+    std::vector<ClosedMesh> meshes;
+    if (args.mesh_files.empty()) meshes = bench::read_bundled_meshes(args.mesh);
+    for (const std::string& file : args.mesh_files) meshes.push_back(bench::read_closed_mesh(file));
+    const auto wanted = [&](const char* section) { return args.section == section || args.section == "all"; };
+    std::vector<std::string> summaries;
+    if (wanted("fill")) {
+      FillTally tally;
+      for (const ClosedMesh& m : meshes)
+        for (int t = 0; t < args.trials; ++t) fill_trial(m, args.seed + static_cast<std::uint64_t>(t), tally);
+      summaries.push_back(fill_summary(tally));
+    }
+    if (wanted("fair")) {
+      FairTally tally;
+      for (const ClosedMesh& m : meshes)
+        for (bool noisy : {false, true})
+          for (int t = 0; t < args.trials; ++t) fair_trial(m, args.seed + static_cast<std::uint64_t>(t), noisy, tally);
+      summaries.push_back(fair_summary(tally));
+    }
+    if (wanted("blend")) {
+      BlendTally tally;
+      for (const ClosedMesh& m : meshes) {
+        // Slabs are drawn until `trials` of them leave two loops (at most 50 draws each).
+        std::mt19937_64 draw(args.seed);
+        for (int drawn = 0, found = 0; drawn < 50 * args.trials && found < args.trials; ++drawn) {
+          int vertex = 0;
+          Eigen::Vector3d axis;
+          const Mesh cut = draw_slab(m, draw, vertex, axis);
+          if (cut.num_faces() == 0) continue;
+          ++found;
+          blend_trial(m, cut, vertex, axis, tally);
+        }
+      }
+      summaries.push_back(blend_summary(tally));
+    }
+    for (const std::string& s : summaries) std::printf("summary: %s\n", s.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
