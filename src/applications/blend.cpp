@@ -400,9 +400,28 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
     if (report.continuity.max_normal_angle <= detail::kSmallestFoldAngle && !creases_against(creases, 0))
       return report;
     std::optional<LinearTube>& linear = linear_once.get();
-    if (!linear || tube_crosses(linear->mesh, first_tube_face)) return report;
-    const std::string reason = loses_to_linear(mesh, report, creases, *linear, topo, first_tube_face);
-    return reason.empty() ? report : keep_linear_tube(mesh, *linear, report, reason);
+    if (!linear) return report;
+    if (!tube_crosses(linear->mesh, first_tube_face)) {
+      const std::string reason = loses_to_linear(mesh, report, creases, *linear, topo, first_tube_face);
+      return reason.empty() ? report : keep_linear_tube(mesh, *linear, report, reason);
+    }
+    // The linear tube crosses the mesh: the flow's is weighed against the first lower one that does
+    // not, the floor blend_lower_linear_tube would deliver.
+    for (int c = static_cast<int>(linear->report.supported) - 1; c >= 0; --c) {
+      BlendOptions lower_options = options;
+      lower_options.continuity = static_cast<Continuity>(c);
+      std::optional<LinearTube> lower = linear_tube(mesh, topo, free, tube, lower_options);
+      if (!lower || tube_crosses(lower->mesh, first_tube_face)) continue;
+      const std::string reason = loses_to_linear(mesh, report, creases, *lower, topo, first_tube_face);
+      if (reason.empty()) return report;
+      FairRegionReport kept = keep_linear_tube(mesh, *lower, report, reason + " (the linear ∆" +
+                                                                        std::to_string(linear->order()) +
+                                                                        " tube crosses the mesh)");
+      kept.requested = options.continuity;
+      kept.crossing_fallback = true;
+      return kept;
+    }
+    return report;
   }
   if (options.method != FairMethod::flow) throw TubeCrossing(crossing_message(crossings, first_tube_face, ""));
   std::optional<LinearTube>& linear = linear_once.get();

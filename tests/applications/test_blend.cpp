@@ -540,6 +540,32 @@ TEST(BlendReal, WhereNoDescentSettlesTheLinearTubeIsKept) {
   EXPECT_THROW(blend_loops(asked, no_descent), NumericalError);
 }
 
+// bench_real_holes' blub 954 z (--all-slabs): the G2 tube settles clear of the mesh but turns the
+// normal across a loop by 38° where the input reads 13°, and its linear ∆³ tube crosses the mesh,
+// so there was no linear tube to weigh it against and it was delivered, 0.19 h from the uncut mesh.
+// It is weighed against the first lower linear tube that does not cross (the floor a crossing ∆³
+// gives way to): that one turns less, and is delivered, 0.08 h from the uncut mesh.
+TEST(BlendReal, AG2TubeIsWeighedAgainstALowerLinearTubeWhereTheLinearOneCrosses) {
+  const Mesh blub = read_mesh(test::data_path("blub.obj"));
+  const double h = test::mean_edge_length(blub);
+  const Mesh cut = test::cut_slab(blub, {0.0599292, -0.275701, -1.33125}, Eigen::Vector3d::UnitZ(), 2 * h);
+  ASSERT_EQ(loop_count(cut), 2);
+  Mesh m = cut;
+  const BlendReport r = blend_loops(m, BlendOptions{});
+  print("blub 954 z", r);
+  EXPECT_TRUE(r.fair.linear);
+  EXPECT_TRUE(r.fair.crossing_fallback);
+  EXPECT_LT(r.fair.supported, Continuity::G2);
+  EXPECT_NE(r.fair.note.find("turns the normal across the loops"), std::string::npos) << r.fair.note;
+  EXPECT_NE(r.fair.note.find("tube crosses the mesh)"), std::string::npos) << r.fair.note;
+  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
+  expect_clean(m);
+  const double uncut = tube_distance(m, cut.num_vertices(), blub, h);
+  std::printf("[blend] blub 954 z: %s, %.3f h from the uncut mesh\n",
+              delivered_label(r.fair.supported, r.fair.linear).c_str(), uncut);
+  EXPECT_LT(uncut, 0.12);
+}
+
 // Two open cylinders end to end with a plate between their facing ends: every tube between those
 // ends passes through the plate, from Hermite rings or straight ones, flowed or linear. No tube is
 // delivered as a success: NumericalError names the first crossing of both tubes, and the mesh

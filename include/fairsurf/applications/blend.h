@@ -104,7 +104,9 @@ struct BlendReport {
 /// max_normal_angle) by more than 1.05 times the linear tube's and by more than 5° (docs/blend.md,
 /// "A G2 tube that turns more than the linear one"), or it creases against it: more of its edges
 /// have faces whose normals turn by over 90° than twice the linear tube's and than the linear tube's
-/// plus 4 (a fin folded out of the tube; "Creased tubes"). So it is where the descent fallback ran
+/// plus 4 (a fin folded out of the tube; "Creased tubes"); where that linear tube crosses the mesh,
+/// the first lower linear tube (∆², then ∆) that does not is the one weighed and delivered
+/// (fair.crossing_fallback). So it is where the descent fallback ran
 /// and no descent settled (the linear tube, "did not settle"); a flow the user asked for that did
 /// not settle (descent_fallback off, or the descent as the step kind) is delivered as it stands,
 /// NOT steady. Where the linear tube
