@@ -238,22 +238,25 @@ std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int 
   return reason;
 }
 
-// Fairs the patch's free vertices on their neighbourhood only (fair_region would cut out the same
-// rings): the cost of checking the mesh stays in proportion to the hole, and a defect far away (a
-// pinched border elsewhere) does not concern this hole. `whole`: fair_valid_mesh's, on `sub`;
-// `local`: the connectivity of sub.mesh.
-FairRegionReport fair_patch(InitialPatch& patch, const FillOptions& options, const FairRegionOptions& fairing_options,
-                            const FlowObserver& step_observer, Submesh& sub, Topology& local, bool& whole) {
+// The patch's free vertices and `rings` rings around them, cut out of the patched mesh (fair_region
+// would cut out the same rings): the cost of checking the mesh stays in proportion to the hole, and
+// a defect far away (a pinched border elsewhere) does not concern this hole. `local`: the
+// connectivity of sub.mesh, derived from the patched mesh's once: validation, fairing, its held-out
+// trials and the continuity measures read it.
+void cut_out_neighbourhood(const InitialPatch& patch, int rings, Submesh& sub, Topology& local) {
+  sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, patch.topology, patch.free_vertices, rings);
+  local = derive_topology(patch.topology, sub.mesh.F, sub.to_global);
+}
+
+// Fairs the patch's free vertices on their neighbourhood `sub` (cut_out_neighbourhood; `local`
+// its connectivity). `whole`: fair_valid_mesh's, on `sub`.
+FairRegionReport fair_patch(const InitialPatch& patch, const FairRegionOptions& fairing_options,
+                            const FlowObserver& step_observer, Submesh& sub, const Topology& local, bool& whole) {
   FairRegionReport fairing;
   fairing.requested = fairing.supported = fairing_options.continuity;
   fairing.method = fairing_options.method;
   whole = false;
   if (patch.free_vertices.empty()) return fairing;
-  sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, patch.topology, patch.free_vertices,
-                              options.submesh_rings);
-  // Derived from the patched mesh's, once: validation, fairing, its held-out trials and the
-  // continuity measures read it.
-  local = derive_topology(patch.topology, sub.mesh.F, sub.to_global);
   // One ∆^k solve from the patch as refinement left it is weighed beside the membrane's starts:
   // where the membrane creases the patch against the border, that is the closer one.
   Vertices refined;
@@ -265,6 +268,15 @@ FairRegionReport fair_patch(InitialPatch& patch, const FillOptions& options, con
   }
   return fair_detail::fair_checked_mesh(sub.mesh, local, sub.free_local, fairing_options, step_observer, true,
                                        &whole, refined.rows() > 0 ? &refined : nullptr);
+}
+
+// The report of a patch committed unfaired (PatchStart::unfaired): C0, linear, nothing run.
+FairRegionReport unfaired_report() {
+  FairRegionReport r;
+  r.requested = r.supported = Continuity::G0;
+  r.method = FairMethod::harmonic;
+  r.linear = true;
+  return r;
 }
 
 // What the group's fairing did, in the report of one of its holes (`flowed`: the flow's result).
@@ -321,18 +333,9 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
   const FlowObserver step_observer = [&](const StepRecord& r) {
     if (observer) observer(group, r);
   };
-  FairRegionReport fairing;
-  if (unfaired && !patch.free_vertices.empty()) {
-    sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, patch.topology, patch.free_vertices,
-                                options.submesh_rings);
-    local = derive_topology(patch.topology, sub.mesh.F, sub.to_global);
-    fairing.requested = fairing_options.continuity;
-    fairing.supported = Continuity::G0;
-    fairing.method = FairMethod::harmonic;
-    fairing.linear = true;
-  } else if (!unfaired) {
-    fairing = fair_patch(patch, options, fairing_options, step_observer, sub, local, whole);
-  }
+  if (!patch.free_vertices.empty()) cut_out_neighbourhood(patch, options.submesh_rings, sub, local);
+  const FairRegionReport fairing = unfaired ? unfaired_report()
+                                            : fair_patch(patch, fairing_options, step_observer, sub, local, whole);
   if (!patch.free_vertices.empty() && !unfaired) {
     const FlowReport& flow = fairing.flow;
     if (!fairing.linear && flow.stop_reason != FlowStopReason::steady)
@@ -369,13 +372,11 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
                          ? fairing.continuity
                          : measure_continuity(sub.mesh.V, sub.mesh.F, local, hole_free);
     }
-    if (free.empty() || unfaired) {  // nothing was faired: the patch is the triangulation of the loop
+    if (free.empty()) {  // nothing was faired: the patch is the triangulation of the loop
       r.supported = Continuity::G0;
       r.linear = true;
       r.steps = 0;
-      r.harmonic_solves = 0;
-      if (free.empty())
-        r.note = "the patch has no interior vertex: the loop's triangulation alone, continuous in position only";
+      r.note = "the patch has no interior vertex: the loop's triangulation alone, continuous in position only";
     }
   }
   mesh.V = std::move(patch.mesh.V);
