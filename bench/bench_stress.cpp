@@ -22,8 +22,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
-#include <numbers>
-#include <numeric>
 #include <random>
 #include <set>
 #include <string>
@@ -99,12 +97,6 @@ Balls draw_balls(const ClosedMesh& m, std::uint64_t seed, bool cut) {
   return b;
 }
 
-std::vector<int> range(int first, int end) {
-  std::vector<int> r(static_cast<std::size_t>(std::max(0, end - first)));
-  std::iota(r.begin(), r.end(), first);
-  return r;
-}
-
 bool crosses(const Mesh& mesh, const std::vector<int>& faces) {
   return !find_face_intersections(mesh.V, mesh.F, faces, 1).empty();
 }
@@ -133,7 +125,7 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, FillTally& tally) {
     std::printf(", refused: %s\n", e.what());
     return;
   }
-  const bool crossing = crosses(filled, range(cut.num_faces(), filled.num_faces()));
+  const bool crossing = crosses(filled, bench::rows_from(cut.num_faces(), filled.num_faces()));
   const bool manifold = validate(filled).manifold();
   tally.holes += static_cast<int>(report.holes.size());
   tally.open += report.failed;
@@ -239,13 +231,8 @@ void blend_trial(const ClosedMesh& m, const Mesh& cut, int vertex, const Eigen::
   try {
     const BlendReport r = blend_loops(blended, BlendOptions{});
     const bool steady = r.fair.linear || r.fair.flow.stop_reason == FlowStopReason::steady;
-    const bool crossing = crosses(blended, range(cut.num_faces(), blended.num_faces()));
-    // `fairsurf blend`'s warning: the tube turns the normal across a loop by more than 90° and by
-    // more than twice the untouched input's reading there.
-    const auto folds_back = [](const BlendLoop& loop) {
-      return loop.border.max_normal_angle > std::max(std::numbers::pi / 2, 2 * loop.reference.max_normal_angle);
-    };
-    const bool back = folds_back(r.a) || folds_back(r.b);
+    const bool crossing = crosses(blended, bench::rows_from(cut.num_faces(), blended.num_faces()));
+    const bool back = folds_back(r.a) || folds_back(r.b);  // `fairsurf blend` warns there
     tally.not_steady += !steady;
     tally.g2 += steady && !r.fair.linear && r.fair.supported == Continuity::G2;
     tally.lower += r.fair.supported < r.fair.requested;

@@ -3,7 +3,6 @@
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -52,12 +51,10 @@ std::string border_text(const char* name, const BlendLoop& loop) {
   return text;
 }
 
-// A tube that turns the normal across a loop by more than a right angle, and by more than twice what
-// the same fits read on the untouched input there, folds back at that loop: a seam no fairing
-// leaves where the two loops face each other. It happens where they do not, as when a band is cut
-// off a thin flat part (spot's ear: 128° against 8.8°). The tube is written; the user is told.
+// A tube that folds back at a loop (blend.h's folds_back; spot's ear: 128° against 8.8°) is
+// written; the user is told.
 void warn_if_folded_back(const char* name, const BlendLoop& loop) {
-  if (!(loop.border.max_normal_angle > std::max(M_PI / 2, 2 * loop.reference.max_normal_angle))) return;
+  if (!folds_back(loop)) return;
   std::fprintf(stderr,
                "fairsurf: warning: the tube folds back at loop %s = %d: it turns the normal across the loop by "
                "%.3g° where the untouched input reads %.3g°; the two loops may not face each other (choose "

@@ -513,6 +513,10 @@ void blend_lower_linear_tube(Mesh& mesh, const Mesh& input, const Topology& topo
 
 }  // namespace
 
+bool folds_back(const BlendLoop& loop) {
+  return loop.border.max_normal_angle > std::max(std::numbers::pi / 2, 2 * loop.reference.max_normal_angle);
+}
+
 ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
                                              const std::vector<int>& free_vertices, int rings) {
   return measure_near_loop(mesh, build_topology(mesh.F, mesh.num_vertices()), loop, rings, free_vertices, loop);

@@ -71,6 +71,12 @@ struct BlendLoop {
   ContinuityMeasure reference;
 };
 
+/// The tube folds back at `loop`: it turns the normal across the loop (border.max_normal_angle) by
+/// more than a right angle and by more than twice the untouched input's reading there
+/// (reference.max_normal_angle), a seam no fairing leaves where the two loops face each other. It
+/// happens where they do not, as when a band is cut off a thin flat part (docs/blend.md).
+bool folds_back(const BlendLoop& loop);
+
 struct BlendReport {
   int loops_found = 0;        ///< boundary loops of the input
   bool automatic = false;     ///< the pair was chosen by closest_loop_pair
@@ -94,30 +100,32 @@ struct BlendReport {
 /// Joins two boundary loops of `mesh` and fairs the tube. On return `mesh` holds the input's
 /// vertices and faces first (unchanged), then the tube's (per-vertex attributes are dropped, as in
 /// patch.h). Throws InvalidMeshError for fewer than two loops; InvalidArgument for an index out of
-/// range (the message lists every loop with its length), equal indices or only one index given; what tube_patch and
-/// fair_region throw otherwise (NumericalError with `mesh` at the last accepted state of the flow).
-/// The faired tube is checked against the mesh (find_face_intersections): where the flow's tube
-/// crosses it, the linear ∆^k tube from the same start is delivered instead if it does not
-/// (fair.linear, with the reason in fair.note; fair.method stays flow and fair.flow holds only the
-/// flow's well_posedness, as for fair_region's floor). So it is where the flow ended steady but is
-/// no gain over that linear tube: it turns the normal across the loops (fair.continuity's
-/// max_normal_angle) by more than 1.05 times the linear tube's and by more than 5° (docs/blend.md,
-/// "A G2 tube that turns more than the linear one"), or it creases against it: more of its edges
-/// have faces whose normals turn by over 90° than twice the linear tube's and than the linear tube's
-/// plus 4 (a fin folded out of the tube; "Creased tubes"); where that linear tube crosses the mesh,
-/// the first lower linear tube (∆², then ∆) that does not is the one weighed and delivered
-/// (fair.crossing_fallback). So it is where the descent fallback ran
-/// and no descent settled (the linear tube, "did not settle"); a flow the user asked for that did
-/// not settle (descent_fallback off, or the descent as the step kind) is delivered as it stands,
-/// NOT steady. Where the linear tube
-/// crosses too, a tube from Hermite rings
-/// is built again with straight rings and faired the same way (straight_rings; the observer sees
-/// both fairings' steps). Where that one crosses as well, the linear tubes of the lower
-/// continuities (∆², then ∆), from Hermite rings and then straight ones, replace it: the first that
-/// does not cross is delivered (fair.linear and fair.crossing_fallback, fair.requested the
-/// continuity asked for, fair.supported the lower one, the crossings in fair.note), as fill and
-/// fair_region fall back. Where every one crosses, NumericalError names the first crossings
-/// (`mesh` then holds the last tube tried).
+/// range (the message lists every loop with its length), equal indices or only one index given;
+/// what tube_patch and fair_region throw otherwise (NumericalError with `mesh` at the last accepted
+/// state of the flow).
+///
+/// The linear ∆^k tube from the same start replaces the flow's tube (fair.linear, with the reason
+/// in fair.note; fair.method stays flow and fair.flow holds only the flow's well_posedness, as for
+/// fair_region's floor) where it does not cross the mesh (find_face_intersections) and
+/// - the flow's tube crosses it;
+/// - the descent fallback ran and no descent settled ("did not settle"); a flow the user asked for
+///   that did not settle (descent_fallback off, or the descent as the step kind) is delivered as it
+///   stands, NOT steady;
+/// - or the flow settled but is no gain over the linear tube: it turns the normal across the loops
+///   (fair.continuity's max_normal_angle) by more than 1.05 times the linear tube's and by more
+///   than 5° (docs/blend.md, "A G2 tube that turns more than the linear one"), or it creases
+///   against it: more of its edges have faces whose normals turn by over 90° than twice the linear
+///   tube's and than the linear tube's plus 4 (a fin folded out of the tube; "Creased tubes").
+///   Where the ∆^k tube crosses the mesh, the first lower linear tube (∆^(k−1), ..., ∆) that does
+///   not is the one weighed and delivered (fair.crossing_fallback).
+/// Where the flow's tube and the linear one both cross, a tube from Hermite rings is built again
+/// with straight rings and faired the same way (straight_rings; the observer sees both fairings'
+/// steps). Where that one crosses as well, the linear tubes of the lower continuities (∆², then ∆),
+/// from Hermite rings and then straight ones, replace it: the first that does not cross is
+/// delivered (fair.linear and fair.crossing_fallback, fair.requested the continuity asked for,
+/// fair.supported the lower one, the crossings in fair.note), as fill and fair_region fall back.
+/// Where every one crosses, NumericalError names the first crossings (`mesh` then holds the last
+/// tube tried).
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options = {}, const FlowObserver& observer = {});
 
 /// Measures continuity at the vertices of `loop` only: on the faces within `rings` rings of it,
