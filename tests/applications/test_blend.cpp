@@ -341,6 +341,21 @@ double tube_distance(const Mesh& m, int first_tube_vertex, const Mesh& uncut, do
   return sum / (m.num_vertices() - first_tube_vertex) / h;
 }
 
+// data/`file` and that mesh with a band 4 h wide cut across it (h: its mean edge length), centred on
+// the plane through `point` normal to `axis` (test::cut_slab), as bench_real_holes' slabs.
+struct Band {
+  Mesh uncut;
+  double h = 0;
+  Mesh cut;
+};
+
+Band band_across(const char* file, const Eigen::Vector3d& point, const Eigen::Vector3d& axis) {
+  Band b{read_mesh(test::data_path(file)), 0, {}};
+  b.h = test::mean_edge_length(b.uncut);
+  b.cut = test::cut_slab(b.uncut, point, axis, 2 * b.h);
+  return b;
+}
+
 // A band of width 4h cut across blub (bench_real_holes' blub 517 y): the time-stepped flow diverges,
 // and the energy descent from its last state settles into a tube that passes through itself (49
 // crossings); from the linear ∆³ tube, with the trials that would cross rejected, it settles at a
@@ -349,11 +364,9 @@ double tube_distance(const Mesh& m, int first_tube_vertex, const Mesh& uncut, do
 // lies a little farther from blub's surface (0.0388 h against 0.0378 h), so the linear tube is
 // delivered, with both reasons in the note.
 TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
-  const Mesh blub = read_mesh(test::data_path("blub.obj"));
-  const double h = test::mean_edge_length(blub);
-  const Mesh cut = test::cut_slab(blub, {0.280928, -0.0196544, 0.897816}, Eigen::Vector3d::UnitY(), 2 * h);
-  ASSERT_EQ(loop_count(cut), 2);
-  Mesh m = cut;
+  const Band b = band_across("blub.obj", {0.280928, -0.0196544, 0.897816}, Eigen::Vector3d::UnitY());
+  ASSERT_EQ(loop_count(b.cut), 2);
+  Mesh m = b.cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
   print("blub band", r);
   EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)");
@@ -362,13 +375,13 @@ TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
   EXPECT_NE(r.fair.note.find("the sixth-order flow's tube turns the normal across the loops by "), std::string::npos)
       << r.fair.note;
   EXPECT_NE(r.fair.note.find("kept the linear ∆3 tube"), std::string::npos) << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
+  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
   expect_clean(m);
   EXPECT_EQ(loop_count(m), 0);
 
   BlendOptions linear_options;
   linear_options.method = FairMethod::harmonic;
-  Mesh linear = cut;
+  Mesh linear = b.cut;
   const BlendReport l = blend_loops(linear, linear_options);
   EXPECT_EQ(m.V, linear.V);  // the linear tube itself
   EXPECT_EQ(r.fair.continuity.max_normal_angle, l.fair.continuity.max_normal_angle);
@@ -381,11 +394,9 @@ TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
 // turns the normal more than the linear tube, and lies farther from spot (0.046 h against 0.032 h):
 // the linear tube is delivered.
 TEST(BlendReal, ADescentThatFoldsAgainstTheLinearTubeIsNotKept) {
-  const Mesh spot = read_mesh(test::data_path("spot.obj"));
-  const double h = test::mean_edge_length(spot);
-  const Mesh cut = test::cut_slab(spot, {-0.293232, 0.0711038, 0.460405}, Eigen::Vector3d::UnitY(), 2 * h);
-  ASSERT_EQ(loop_count(cut), 2);
-  Mesh m = cut;
+  const Band b = band_across("spot.obj", {-0.293232, 0.0711038, 0.460405}, Eigen::Vector3d::UnitY());
+  ASSERT_EQ(loop_count(b.cut), 2);
+  Mesh m = b.cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
   std::printf("[blend] spot band: %s\n", r.fair.note.c_str());
   EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)");
@@ -395,8 +406,8 @@ TEST(BlendReal, ADescentThatFoldsAgainstTheLinearTubeIsNotKept) {
                              "linear tube (8.84°)"),
             std::string::npos)
       << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
-  const double delivered = tube_distance(m, cut.num_vertices(), spot, h);
+  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
+  const double delivered = tube_distance(m, b.cut.num_vertices(), b.uncut, b.h);
   std::printf("[blend] spot band: tube %.4f h from the uncut mesh\n", delivered);
   EXPECT_LT(delivered, 0.04);
 }
@@ -405,10 +416,8 @@ TEST(BlendReal, ADescentThatFoldsAgainstTheLinearTubeIsNotKept) {
 // and the linear ∆³ tube from the same start, which does not, is delivered, labelled linear, with
 // the reason.
 TEST(BlendReal, AG2TubeThatCrossesTheMeshGivesWayToTheLinearTube) {
-  const Mesh blub = read_mesh(test::data_path("blub.obj"));
-  const double h = test::mean_edge_length(blub);
-  const Mesh cut = test::cut_slab(blub, {0.280928, -0.0196544, 0.897816}, Eigen::Vector3d::UnitY(), 2 * h);
-  Mesh m = cut;
+  const Band b = band_across("blub.obj", {0.280928, -0.0196544, 0.897816}, Eigen::Vector3d::UnitY());
+  Mesh m = b.cut;
   BlendOptions o;
   o.descent_fallback = false;
   const BlendReport r = blend_loops(m, o);
@@ -417,7 +426,7 @@ TEST(BlendReal, AG2TubeThatCrossesTheMeshGivesWayToTheLinearTube) {
   EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)");
   EXPECT_NE(r.fair.note.find("the sixth-order flow's tube crosses the mesh"), std::string::npos) << r.fair.note;
   EXPECT_NE(r.fair.note.find("kept the linear ∆3 tube"), std::string::npos) << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
+  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
   expect_clean(m);
 }
 
@@ -443,22 +452,20 @@ int creased_edges(const Mesh& m, int first_new_face) {
 // average against the linear tube's 0.25 h. Its border angles do not show it (135°, the linear
 // tube's 147°). The linear tube is delivered, labelled linear, with the reason.
 TEST(BlendReal, AG2TubeThatCreasesGivesWayToTheLinearTube) {
-  const Mesh spot = read_mesh(test::data_path("spot.obj"));
-  const double h = test::mean_edge_length(spot);
-  const Mesh cut = test::cut_slab(spot, {0.135327, 0.828572, -0.217894}, Eigen::Vector3d::UnitZ(), 2 * h);
-  ASSERT_EQ(loop_count(cut), 2);
-  Mesh m = cut;
+  const Band b = band_across("spot.obj", {0.135327, 0.828572, -0.217894}, Eigen::Vector3d::UnitZ());
+  ASSERT_EQ(loop_count(b.cut), 2);
+  Mesh m = b.cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
   print("spot neck band", r);
   EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)");
   EXPECT_NE(r.fair.note.find("the sixth-order flow's tube creases ("), std::string::npos) << r.fair.note;
   EXPECT_NE(r.fair.note.find("kept the linear ∆3 tube"), std::string::npos) << r.fair.note;
-  const int creases = creased_edges(m, cut.num_faces());
-  const double distance = tube_distance(m, cut.num_vertices(), spot, h);
+  const int creases = creased_edges(m, b.cut.num_faces());
+  const double distance = tube_distance(m, b.cut.num_vertices(), b.uncut, b.h);
   std::printf("[blend] spot neck band: %d creased edges, tube %.3f h from the uncut mesh\n", creases, distance);
   EXPECT_LE(creases, 20);
   EXPECT_LT(distance, 0.3);
-  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
+  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
   expect_clean(m);
 }
 
@@ -467,11 +474,9 @@ TEST(BlendReal, AG2TubeThatCreasesGivesWayToTheLinearTube) {
 // under the flow and under the linear ∆³ solve. The tube is built again with straight rings, which
 // do not twist, and that one settles into a G2 tube clear of the mesh.
 TEST(BlendReal, AHermiteTubeThatCrossesTheMeshIsBuiltAgainWithStraightRings) {
-  const Mesh airplane = read_mesh(test::data_path("airplane.obj"));
-  const double h = test::mean_edge_length(airplane);
-  const Mesh cut = test::cut_slab(airplane, {-0.658108, -0.895837, 1.04441}, Eigen::Vector3d::UnitY(), 2 * h);
-  ASSERT_EQ(loop_count(cut), 2);
-  Mesh m = cut;
+  const Band b = band_across("airplane.obj", {-0.658108, -0.895837, 1.04441}, Eigen::Vector3d::UnitY());
+  ASSERT_EQ(loop_count(b.cut), 2);
+  Mesh m = b.cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
   print("airplane band", r);
   EXPECT_TRUE(r.straight_rings);
@@ -482,7 +487,7 @@ TEST(BlendReal, AHermiteTubeThatCrossesTheMeshIsBuiltAgainWithStraightRings) {
             std::string::npos)
       << r.fair.note;
   EXPECT_NE(r.fair.note.find("); built again with straight rings"), std::string::npos) << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
+  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
   expect_clean(m);
   EXPECT_EQ(loop_count(m), 0);
 }
@@ -493,12 +498,10 @@ TEST(BlendReal, AHermiteTubeThatCrossesTheMeshIsBuiltAgainWithStraightRings) {
 // rings' their own tube); ∆² does too. The linear ∆ tube does not, and is delivered, "C0 (linear)", with
 // the reason. Before, the blend was an error.
 TEST(BlendReal, WhereEveryG2TubeCrossesTheFirstLowerLinearTubeThatDoesNotIsKept) {
-  const Mesh hammer = read_mesh(test::data_path("hammer_rawscan.obj"));
-  const double h = test::mean_edge_length(hammer);
-  const Mesh cut = test::cut_slab(hammer, {-0.469669, 0.083133, 0.071897},
-                                  Eigen::Vector3d(0.003, -0.256, 0.967).normalized(), 2 * h);
-  ASSERT_EQ(loop_count(cut), 2);
-  Mesh m = cut;
+  const Band b = band_across("hammer_rawscan.obj", {-0.469669, 0.083133, 0.071897},
+                             Eigen::Vector3d(0.003, -0.256, 0.967).normalized());
+  ASSERT_EQ(loop_count(b.cut), 2);
+  Mesh m = b.cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
   print("hammer handle, oblique", r);
   EXPECT_TRUE(r.fair.linear);
@@ -507,7 +510,7 @@ TEST(BlendReal, WhereEveryG2TubeCrossesTheFirstLowerLinearTubeThatDoesNotIsKept)
   EXPECT_LT(r.fair.supported, Continuity::G2);
   EXPECT_NE(r.fair.note.find("built again with straight rings"), std::string::npos) << r.fair.note;
   EXPECT_NE(r.fair.note.find("tube, the first that does not cross"), std::string::npos) << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
+  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
   expect_clean(m);
   EXPECT_EQ(loop_count(m), 0);
 }
@@ -517,24 +520,22 @@ TEST(BlendReal, WhereEveryG2TubeCrossesTheFirstLowerLinearTubeThatDoesNotIsKept)
 // end at their step limit without a steady state. The linear tube is delivered, steady, "C2
 // (linear)", with the reason; before, the unsettled descent was, labelled G2 and NOT steady.
 TEST(BlendReal, WhereNoDescentSettlesTheLinearTubeIsKept) {
-  const Mesh bunny = read_mesh(test::data_path("stanford_bunny_remesh_closed.obj"));
-  const double h = test::mean_edge_length(bunny);
-  const Mesh cut = test::cut_slab(
-      bunny, {-0.666721, 0.341074, 0.065914},
-      Eigen::Vector3d(0.71289063388071217, -0.32721991021677854, -0.62025323415753331).normalized(), 2 * h);
-  ASSERT_EQ(loop_count(cut), 2);
-  Mesh m = cut;
+  const Band b = band_across(
+      "stanford_bunny_remesh_closed.obj", {-0.666721, 0.341074, 0.065914},
+      Eigen::Vector3d(0.71289063388071217, -0.32721991021677854, -0.62025323415753331).normalized());
+  ASSERT_EQ(loop_count(b.cut), 2);
+  Mesh m = b.cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
   print("bunny, oblique", r);
   EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)") << r.fair.note;
   EXPECT_NE(r.fair.note.find("did not settle"), std::string::npos) << r.fair.note;
   EXPECT_NE(r.fair.note.find("kept the linear ∆3 tube"), std::string::npos) << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
+  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
   expect_clean(m);
   EXPECT_EQ(loop_count(m), 0);
 
   // The time-stepped flow alone (no descent fallback) fails at its first step.
-  Mesh asked = cut;
+  Mesh asked = b.cut;
   BlendOptions no_descent;
   no_descent.descent_fallback = false;
   EXPECT_THROW(blend_loops(asked, no_descent), NumericalError);
@@ -546,11 +547,9 @@ TEST(BlendReal, WhereNoDescentSettlesTheLinearTubeIsKept) {
 // It is weighed against the first lower linear tube that does not cross (the floor a crossing ∆³
 // gives way to): that one turns less, and is delivered, 0.08 h from the uncut mesh.
 TEST(BlendReal, AG2TubeIsWeighedAgainstALowerLinearTubeWhereTheLinearOneCrosses) {
-  const Mesh blub = read_mesh(test::data_path("blub.obj"));
-  const double h = test::mean_edge_length(blub);
-  const Mesh cut = test::cut_slab(blub, {0.0599292, -0.275701, -1.33125}, Eigen::Vector3d::UnitZ(), 2 * h);
-  ASSERT_EQ(loop_count(cut), 2);
-  Mesh m = cut;
+  const Band b = band_across("blub.obj", {0.0599292, -0.275701, -1.33125}, Eigen::Vector3d::UnitZ());
+  ASSERT_EQ(loop_count(b.cut), 2);
+  Mesh m = b.cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
   print("blub 954 z", r);
   EXPECT_TRUE(r.fair.linear);
@@ -558,12 +557,12 @@ TEST(BlendReal, AG2TubeIsWeighedAgainstALowerLinearTubeWhereTheLinearOneCrosses)
   EXPECT_LT(r.fair.supported, Continuity::G2);
   EXPECT_NE(r.fair.note.find("turns the normal across the loops"), std::string::npos) << r.fair.note;
   EXPECT_NE(r.fair.note.find("tube crosses the mesh)"), std::string::npos) << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, cut.num_faces()).empty());
+  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
   expect_clean(m);
-  const double uncut = tube_distance(m, cut.num_vertices(), blub, h);
+  const double distance = tube_distance(m, b.cut.num_vertices(), b.uncut, b.h);
   std::printf("[blend] blub 954 z: %s, %.3f h from the uncut mesh\n",
-              delivered_label(r.fair.supported, r.fair.linear).c_str(), uncut);
-  EXPECT_LT(uncut, 0.12);
+              delivered_label(r.fair.supported, r.fair.linear).c_str(), distance);
+  EXPECT_LT(distance, 0.12);
 }
 
 // Two open cylinders end to end with a plate between their facing ends: every tube between those
