@@ -126,10 +126,11 @@ void setup_blend(CLI::App& app) {
   auto args = std::make_shared<BlendArgs>();
   CLI::App* cmd = app.add_subcommand(
       "blend", "Join two boundary loops (of one mesh or of two meshes) by a fair G2 tube");
-  cmd->footer("Where the G2 tube crosses the mesh, or settles but turns the normal across the loops more than the "
-              "linear ∆³ tube or creases against it, the linear tube is written instead, labelled C2 (linear) with "
-              "the reason. A tube that folds back at a loop (turns the normal there by more than 90° and by more "
-              "than twice the input's reading) is written with a warning (docs/blend.md).");
+  cmd->footer("Where the G2 tube crosses the mesh, does not settle, or settles but turns the normal across the loops "
+              "more than the linear ∆³ tube or creases against it, the linear tube is written instead, labelled C2 "
+              "(linear) with the reason; where that crosses too, the first lower linear tube (C1, C0) that does not. "
+              "A tube that folds back at a loop (turns the normal there by more than 90° and by more than twice the "
+              "input's reading) is written with a warning (docs/blend.md).");
   cmd->add_option("inputs", args->inputs, "One mesh, or two meshes to join (the second is appended)")
       ->required()
       ->expected(1, 2);

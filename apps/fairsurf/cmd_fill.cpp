@@ -197,6 +197,11 @@ void run_fill(const FillArgs& args) {
 void setup_fill(CLI::App& app) {
   auto args = std::make_shared<FillArgs>();
   CLI::App* cmd = app.add_subcommand("fill", "Fill the holes of a mesh with G2 (or G1, G0) boundary data");
+  cmd->footer("Where a hole's fill fails (its patch crosses the mesh or its fairing throws), the flow is tried once "
+              "more with its trial states relaxed tangentially where it crossed, then the linear ∆³, ∆², ∆ "
+              "solutions, then all that again from the refined triangulation instead of its membrane, then that "
+              "triangulation unfaired, C0 (linear); each hole's line says which and why. A hole is left open only "
+              "where even that crosses the mesh (docs/fill.md).");
   cmd->add_option("input", args->input, "Input mesh (.obj, .off, .ply, .stl)")->required();
   cmd->add_option("-o,--output", args->output, "Output mesh")->required();
   cmd->add_option("--continuity", args->continuity,
