@@ -356,6 +356,14 @@ Band band_across(const char* file, const Eigen::Vector3d& point, const Eigen::Ve
   return b;
 }
 
+// A G2 blend delivered as a linear tube of a lower continuity, for a crossing (crossing_fallback).
+void expect_lower_linear_tube(const BlendReport& r) {
+  EXPECT_TRUE(r.fair.linear);
+  EXPECT_TRUE(r.fair.crossing_fallback);
+  EXPECT_EQ(r.fair.requested, Continuity::G2);
+  EXPECT_LT(r.fair.supported, Continuity::G2);
+}
+
 // A band of width 4h cut across blub (bench_real_holes' blub 517 y): the time-stepped flow diverges,
 // and the energy descent from its last state settles into a tube that passes through itself (49
 // crossings); from the linear ∆³ tube, with the trials that would cross rejected, it settles at a
@@ -504,10 +512,7 @@ TEST(BlendReal, WhereEveryG2TubeCrossesTheFirstLowerLinearTubeThatDoesNotIsKept)
   Mesh m = b.cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
   print("hammer handle, oblique", r);
-  EXPECT_TRUE(r.fair.linear);
-  EXPECT_TRUE(r.fair.crossing_fallback);
-  EXPECT_EQ(r.fair.requested, Continuity::G2);
-  EXPECT_LT(r.fair.supported, Continuity::G2);
+  expect_lower_linear_tube(r);
   EXPECT_NE(r.fair.note.find("built again with straight rings"), std::string::npos) << r.fair.note;
   EXPECT_NE(r.fair.note.find("tube, the first that does not cross"), std::string::npos) << r.fair.note;
   EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
@@ -552,9 +557,7 @@ TEST(BlendReal, AG2TubeIsWeighedAgainstALowerLinearTubeWhereTheLinearOneCrosses)
   Mesh m = b.cut;
   const BlendReport r = blend_loops(m, BlendOptions{});
   print("blub 954 z", r);
-  EXPECT_TRUE(r.fair.linear);
-  EXPECT_TRUE(r.fair.crossing_fallback);
-  EXPECT_LT(r.fair.supported, Continuity::G2);
+  expect_lower_linear_tube(r);
   EXPECT_NE(r.fair.note.find("turns the normal across the loops"), std::string::npos) << r.fair.note;
   EXPECT_NE(r.fair.note.find("tube crosses the mesh)"), std::string::npos) << r.fair.note;
   EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
