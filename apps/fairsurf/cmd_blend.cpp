@@ -128,7 +128,8 @@ void setup_blend(CLI::App& app) {
       "blend", "Join two boundary loops (of one mesh or of two meshes) by a fair G2 tube");
   cmd->footer("Where the G2 tube crosses the mesh, does not settle, or settles but turns the normal across the loops "
               "more than the linear ∆³ tube or creases against it, the linear tube is written instead, labelled C2 "
-              "(linear) with the reason; where that crosses too, the first lower linear tube (C1, C0) that does not. "
+              "(linear) with the reason; where that crosses too, the first lower linear tube (C1, C0) that does not; "
+              "where every one crosses and the G0 membrane was dropped as pinched, all of this again from it. "
               "A tube that folds back at a loop (turns the normal there by more than 90° and by more than twice the "
               "input's reading) is written with a warning (docs/blend.md).");
   cmd->add_option("inputs", args->inputs, "One mesh, or two meshes to join (the second is appended)")
@@ -142,7 +143,8 @@ void setup_blend(CLI::App& app) {
       ->delimiter(',');
   cmd->add_flag("--no-relax", args->no_relax,
                 "Start the flow from the Hermite tube, without the G0 membrane (the membrane is dropped "
-                "by itself when it pinches off: no minimal surface spans loops far apart for their size)");
+                "by itself when it pinches off: no minimal surface spans loops far apart for their size; "
+                "it is then still the last start, where every tube without it crosses the mesh)");
   cmd->add_flag("--no-descent-fallback", args->no_descent_fallback,
                 "Keep the time-stepped flow's last state when it does not settle, instead of continuing "
                 "with the energy descent (BlendOptions::descent_fallback; docs/blend.md)");

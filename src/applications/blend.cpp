@@ -511,6 +511,54 @@ void blend_lower_linear_tube(Mesh& mesh, const Mesh& input, const Topology& topo
   throw NumericalError(why + "; and so does every linear tube down to ∆1");
 }
 
+// blend_tube_either_rings, and where that tube crosses the mesh, blend_lower_linear_tube.
+void blend_any_tube(Mesh& mesh, const Mesh& input, const Topology& topo, const std::vector<int>& loop_a,
+                    const std::vector<int>& loop_b, const BlendOptions& options, const FlowObserver& observer,
+                    BlendReport& report) {
+  try {
+    blend_tube_either_rings(mesh, input, topo, loop_a, loop_b, options, observer, report);
+  } catch (const TubeCrossing& crossing) {
+    blend_lower_linear_tube(mesh, input, topo, loop_a, loop_b, options, observer, report, crossing.what());
+  }
+}
+
+// Whether the G0 membrane of the tube, from Hermite rings or from straight ones, is dropped as
+// pinched (initial_tube, BlendOptions::pinch_quality_ratio).
+bool membrane_pinches(const Mesh& mesh, const Topology& topo, const std::vector<int>& loop_a,
+                      const std::vector<int>& loop_b, const BlendOptions& options) {
+  if (!options.patch.relax || options.pinch_quality_ratio <= 0) return false;
+  for (bool hermite : {true, false}) {
+    BlendOptions rings = options;
+    rings.patch.tube.hermite = hermite;
+    BlendReport tube;
+    initial_tube(mesh, topo, loop_a, loop_b, rings, tube);
+    if (tube.membrane_quality > 0 && !tube.relaxed) return true;
+  }
+  return false;
+}
+
+// Every tube, at the requested continuity and at the lower ones, crosses the mesh (`why`) and the
+// membrane was dropped as pinched: the whole of blend_tube_either_rings and blend_lower_linear_tube
+// again from the membrane. Its slivers are a poor start, but between loops a slab cut across a
+// curved part the Hermite and straight rings run through the mesh where the membrane, which
+// spans the loops by the shortest way, does not (docs/blend.md, "A pinched membrane as the last
+// start"). Throws NumericalError naming both failures.
+void blend_from_pinched_membrane(Mesh& mesh, const Mesh& input, const Topology& topo, const std::vector<int>& loop_a,
+                                 const std::vector<int>& loop_b, const BlendOptions& options,
+                                 const FlowObserver& observer, BlendReport& report, const std::string& why) {
+  BlendOptions pinched = options;
+  pinched.pinch_quality_ratio = 0;
+  mesh = input;
+  report.straight_rings = false;
+  try {
+    blend_any_tube(mesh, input, topo, loop_a, loop_b, pinched, observer, report);
+  } catch (const NumericalError& e) {
+    throw NumericalError(why + "; started from the pinched G0 membrane: " + e.what());
+  }
+  report.fair.note = "every tube without the G0 membrane, which pinches off, crosses the mesh (" + why +
+                     "); started from the membrane" + (report.fair.note.empty() ? "" : "; " + report.fair.note);
+}
+
 }  // namespace
 
 bool folds_back(const BlendLoop& loop) {
@@ -545,9 +593,10 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
   }
   const Mesh input = mesh;  // for another tube
   try {
-    blend_tube_either_rings(mesh, input, topo, loop_a, loop_b, options, observer, report);
-  } catch (const TubeCrossing& crossing) {
-    blend_lower_linear_tube(mesh, input, topo, loop_a, loop_b, options, observer, report, crossing.what());
+    blend_any_tube(mesh, input, topo, loop_a, loop_b, options, observer, report);
+  } catch (const NumericalError& e) {
+    if (!membrane_pinches(input, topo, loop_a, loop_b, options)) throw;
+    blend_from_pinched_membrane(mesh, input, topo, loop_a, loop_b, options, observer, report, e.what());
   }
   report.seconds = detail::seconds_since(start);
   return report;

@@ -36,7 +36,8 @@ struct BlendOptions : FairRegionOptions {
   /// The membrane is discarded, and the flow starts from the Hermite tube, when the membrane's
   /// worst triangle quality falls below this fraction of the Hermite tube's: no minimal surface
   /// spans loops far apart for their size (two ends of a cross), and the membrane collapses onto a
-  /// sheet of slivers (quality 1e-9) that no flow can start from.
+  /// sheet of slivers (quality 1e-9) that no flow can start from. It is still the last start where
+  /// every tube without it crosses the mesh (blend_loops).
   double pinch_quality_ratio = 0.25;
   /// When the sixth-order flow steps in time (flow.step_kind = FlowStepKind::implicit_flow) and ends
   /// without a steady state or throws, continue with the energy descent (FlowStepKind::energy_descent,
@@ -124,8 +125,10 @@ struct BlendReport {
 /// from Hermite rings and then straight ones, replace it: the first that does not cross is
 /// delivered (fair.linear and fair.crossing_fallback, fair.requested the continuity asked for,
 /// fair.supported the lower one, the crossings in fair.note), as fill and fair_region fall back.
-/// Where every one crosses, NumericalError names the first crossings (`mesh` then holds the last
-/// tube tried).
+/// Where every one crosses and a G0 membrane was dropped as pinched (pinch_quality_ratio), all of
+/// this runs once more from the membrane (relaxed; fair.note begins "every tube without the G0
+/// membrane, which pinches off, crosses the mesh"). Where every one crosses still, NumericalError
+/// names the first crossings (`mesh` then holds the last tube tried).
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options = {}, const FlowObserver& observer = {});
 
 /// Measures continuity at the vertices of `loop` only: on the faces within `rings` rings of it,
