@@ -486,8 +486,8 @@ void blend_tube_either_rings(Mesh& mesh, const Mesh& input, const Topology& topo
 
 // Where every tube at the requested continuity crosses the mesh (`why`): the linear tubes of the
 // lower ones (∆², then ∆), from either rings, the first that does not cross, as fill and
-// fair_region fall back (C2 → C1 → C0). Throws NumericalError where every one crosses (`mesh`
-// then holds the last).
+// fair_region fall back (C2 → C1 → C0). Throws TubeCrossing where every one crosses (`mesh` then
+// holds the last).
 void blend_lower_linear_tube(Mesh& mesh, const Mesh& input, const Topology& topo, const std::vector<int>& loop_a,
                              const std::vector<int>& loop_b, const BlendOptions& options,
                              const FlowObserver& observer, BlendReport& report, const std::string& why) {
@@ -508,7 +508,7 @@ void blend_lower_linear_tube(Mesh& mesh, const Mesh& input, const Topology& topo
                        (report.fair.note.empty() ? "" : " (" + report.fair.note + ")");
     return;
   }
-  throw NumericalError(why + "; and so does every linear tube down to ∆1");
+  throw TubeCrossing(why + "; and so does every linear tube down to ∆1");
 }
 
 // blend_tube_either_rings, and where that tube crosses the mesh, blend_lower_linear_tube.
@@ -594,7 +594,7 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
   const Mesh input = mesh;  // for another tube
   try {
     blend_any_tube(mesh, input, topo, loop_a, loop_b, options, observer, report);
-  } catch (const NumericalError& e) {
+  } catch (const TubeCrossing& e) {
     if (!membrane_pinches(input, topo, loop_a, loop_b, options)) throw;
     blend_from_pinched_membrane(mesh, input, topo, loop_a, loop_b, options, observer, report, e.what());
   }
