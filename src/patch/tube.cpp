@@ -91,15 +91,22 @@ double alignment_cost(const ParametrizedLoop& a, const ParametrizedLoop& b, int 
 }
 
 // Triangles joining ring p to ring q (both listed from their starts in the same direction), p
-// being on the side of loop A: each step adds the triangle with the shorter new diagonal.
+// being on the side of loop A: each step adds the triangle with the shorter new diagonal, unless
+// that diagonal was drawn before. The diagonal (i, j) is (i mod #p, j mod #q), so it repeats when
+// one ring wraps round to its start at a point the other ring had reached while the first stood at
+// its start: then two strips of the annulus meet at that edge (a ring twisted against the other, as
+// between 3-vertex loops, 4 faces at one edge). The other ring advances instead.
 void zip(const std::vector<int>& p, const std::vector<int>& q, const Vertices& V,
          std::vector<Eigen::Vector3i>& out) {
   const int np = static_cast<int>(p.size()), nq = static_cast<int>(q.size());
   int i = 0, j = 0;
+  int i_while_j_at_start = 0, j_while_i_at_start = 0;
   while (i < np || j < nq) {
     const int pi = p[i % np], pn = p[(i + 1) % np], qj = q[j % nq], qn = q[(j + 1) % nq];
-    const bool advance_p =
+    bool advance_p =
         j == nq || (i < np && (V.row(pn) - V.row(qj)).squaredNorm() <= (V.row(pi) - V.row(qn)).squaredNorm());
+    if (advance_p && i + 1 == np && j < nq && j <= j_while_i_at_start) advance_p = false;
+    else if (!advance_p && j + 1 == nq && i < np && i <= i_while_j_at_start) advance_p = true;
     if (advance_p) {
       out.emplace_back(pn, pi, qj);  // contains pn→pi: reversed against loop A's edge pi→pn
       ++i;
@@ -107,6 +114,8 @@ void zip(const std::vector<int>& p, const std::vector<int>& q, const Vertices& V
       out.emplace_back(qj, qn, pi);
       ++j;
     }
+    if (j == 0) i_while_j_at_start = i;
+    if (i == 0) j_while_i_at_start = j;
   }
 }
 

@@ -1,4 +1,5 @@
 // Tests of the patch stage: Liepa hole triangulation, refinement, membrane relaxation, tubes.
+#include <fairsurf/applications/repair.h>
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/face_intersection.h>
@@ -662,6 +663,30 @@ TEST(Tube, HermiteRingsLeaveTheSurfacesTangentially) {
   EXPECT_EQ(tube.ring_vertices.size(), 5u * 24u);
   EXPECT_NEAR(tube.mean_squared_distance, 4.0, 1e-12);  // aligned: matched points 2 apart
   for (int v : tube.ring_vertices) EXPECT_NEAR(std::hypot(tube.V(v, 0), tube.V(v, 1)), 1.0, 1e-12);
+}
+
+// data/lagrange_prout.obj, repaired: a flat sheet whose closest loops are two 3-vertex holes. The
+// Hermite rings between them lie in the sheet, turned against the loops, and the shortest-diagonal
+// zipper wrapped the loop fully round while the first ring stood still, drawing one diagonal twice
+// (4 faces at an edge: refine_patch refused the tube, "patch edge ... is used twice in the same
+// direction"). The tube is now one manifold.
+TEST(Tube, ThreeVertexLoopsJoinIntoOneManifold) {
+  Mesh mesh = read_mesh(test::data_path("lagrange_prout.obj"));
+  repair(mesh);
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  const auto loops = boundary_loops(mesh.F, topo);
+  const LoopPair pair = closest_loop_pair(mesh.V, loops);
+  ASSERT_EQ(loops[pair.first].size(), 3u);
+  ASSERT_EQ(loops[pair.second].size(), 3u);
+  const Tube tube = build_tube(mesh.V, mesh.F, topo, loops[pair.first], loops[pair.second]);
+  Mesh joined;
+  joined.V = tube.V;
+  joined.F.resize(mesh.num_faces() + tube.faces.rows(), 3);
+  joined.F << mesh.F, tube.faces;
+  const SurfaceCheck c = check_surface(joined);
+  EXPECT_EQ(c.non_manifold_edges, 0);
+  EXPECT_EQ(c.repeated_directed, 0);
+  EXPECT_NO_THROW(tube_patch(mesh, loops[pair.first], loops[pair.second]));
 }
 
 TEST(Tube, RejectsLoopsThatShareVertices) {
