@@ -75,6 +75,61 @@ class FaceGrid {
   std::vector<std::vector<int>> cells_;
 };
 
+// Coplanar triangles: on the plane's two dominant axes, whether their interiors share an area.
+// They do where an edge of one properly crosses an edge of the other, or a corner or the centroid of
+// one lies strictly inside the other (one inside the other, or two copies of one triangle).
+using Vec2 = Eigen::Vector2d;
+
+double orientation(const Vec2& p, const Vec2& q, const Vec2& r) {
+  return (q.x() - p.x()) * (r.y() - p.y()) - (q.y() - p.y()) * (r.x() - p.x());
+}
+
+bool strictly_inside(const Vec2& x, const std::array<Vec2, 3>& t, double tolerance) {
+  const double sign = orientation(t[0], t[1], t[2]) > 0 ? 1.0 : -1.0;
+  for (int k = 0; k < 3; ++k)
+    if (sign * orientation(t[k], t[(k + 1) % 3], x) <= tolerance) return false;
+  return true;
+}
+
+bool opposite_sides(double a, double b, double tolerance) {
+  return (a > tolerance && b < -tolerance) || (a < -tolerance && b > tolerance);
+}
+
+bool coplanar_triangles_overlap(const std::array<Vec2, 3>& a, const std::array<Vec2, 3>& b, double tolerance) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const Vec2 &p = a[i], &q = a[(i + 1) % 3], &r = b[j], &s = b[(j + 1) % 3];
+      if (opposite_sides(orientation(p, q, r), orientation(p, q, s), tolerance) &&
+          opposite_sides(orientation(r, s, p), orientation(r, s, q), tolerance))
+        return true;
+    }
+  const Vec2 centroid_a = (a[0] + a[1] + a[2]) / 3, centroid_b = (b[0] + b[1] + b[2]) / 3;
+  if (strictly_inside(centroid_a, b, tolerance) || strictly_inside(centroid_b, a, tolerance)) return true;
+  for (int k = 0; k < 3; ++k)
+    if (strictly_inside(a[k], b, tolerance) || strictly_inside(b[k], a, tolerance)) return true;
+  return false;
+}
+
+// Whether (b0, b1, b2) lies in the plane of (a0, a1, a2), within the tolerance of
+// segment_crosses_triangle, and overlaps it there.
+bool coplanar_overlap(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3& b0, const Vec3& b1,
+                      const Vec3& b2) {
+  const Vec3 n = (a1 - a0).cross(a2 - a0);
+  const double length = n.norm();
+  if (!(length > 0)) return false;
+  const double scale = std::max({(a1 - a0).norm(), (a2 - a0).norm(), (a2 - a1).norm(), (b1 - b0).norm(),
+                                 (b2 - b0).norm(), (b2 - b1).norm()});
+  const double off_plane = kRelativeTolerance * scale * length;
+  for (const Vec3* p : {&b0, &b1, &b2})
+    if (std::abs(n.dot(*p - a0)) > off_plane) return false;
+  int drop = 0;
+  n.cwiseAbs().maxCoeff(&drop);
+  const int u = (drop + 1) % 3, v = (drop + 2) % 3;
+  const auto flat = [u, v](const Vec3& p) { return Vec2(p[u], p[v]); };
+  return coplanar_triangles_overlap({flat(a0), flat(a1), flat(a2)}, {flat(b0), flat(b1), flat(b2)},
+                                    kRelativeTolerance * scale * scale);
+}
+
 }  // namespace
 
 bool segment_crosses_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -97,7 +152,8 @@ bool triangles_cross(const Vec3& a0, const Vec3& a1, const Vec3& a2, const Vec3&
                      const Vec3& b2) {
   return segment_crosses_triangle(a0, a1, b0, b1, b2) || segment_crosses_triangle(a1, a2, b0, b1, b2) ||
          segment_crosses_triangle(a2, a0, b0, b1, b2) || segment_crosses_triangle(b0, b1, a0, a1, a2) ||
-         segment_crosses_triangle(b1, b2, a0, a1, a2) || segment_crosses_triangle(b2, b0, a0, a1, a2);
+         segment_crosses_triangle(b1, b2, a0, a1, a2) || segment_crosses_triangle(b2, b0, a0, a1, a2) ||
+         coplanar_overlap(a0, a1, a2, b0, b1, b2);
 }
 
 std::vector<FaceIntersection> find_face_intersections(const Vertices& V, const Faces& F,

@@ -690,6 +690,23 @@ TEST(FaceIntersection, CrossingTouchingAndDisjointTriangles) {
   EXPECT_FALSE(triangles_cross(a0, a1, a2, Vec3(0, 0, 1e-3), Vec3(1, 0, 1e-3), Vec3(0, 1, 1e-3)));
 }
 
+TEST(FaceIntersection, CoplanarTrianglesCrossWhereTheirInteriorsOverlap) {
+  const Vec3 a0(0, 0, 0), a1(1, 0, 0), a2(0, 1, 0);
+  // In a's plane, edges crossing a's edges.
+  EXPECT_TRUE(triangles_cross(a0, a1, a2, Vec3(0.2, -0.5, 0), Vec3(0.4, 0.5, 0), Vec3(-0.5, 0.2, 0)));
+  // Inside a, no edge crossing: a corner inside.
+  EXPECT_TRUE(triangles_cross(a0, a1, a2, Vec3(0.1, 0.1, 0), Vec3(0.3, 0.1, 0), Vec3(0.1, 0.3, 0)));
+  // A copy of a (other vertices, same positions) and a turned over in the same place.
+  EXPECT_TRUE(triangles_cross(a0, a1, a2, a0, a1, a2));
+  EXPECT_TRUE(triangles_cross(a0, a1, a2, a0, a2, a1));
+  // Beside a along its long edge, and touching it only at a corner or along an edge: no overlap.
+  EXPECT_FALSE(triangles_cross(a0, a1, a2, Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(1, 0, 0)));
+  EXPECT_FALSE(triangles_cross(a0, a1, a2, Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(1, 1, 0)));
+  EXPECT_FALSE(triangles_cross(a0, a1, a2, Vec3(2, 2, 0), Vec3(3, 2, 0), Vec3(2, 3, 0)));
+  // Parallel planes 1e-9 apart, well above the tolerance: neither crossing nor coplanar.
+  EXPECT_FALSE(triangles_cross(a0, a1, a2, Vec3(0.1, 0.1, 1e-9), Vec3(0.3, 0.1, 1e-9), Vec3(0.1, 0.3, 1e-9)));
+}
+
 TEST(FaceIntersection, FindsExactlyTheCrossingPairsOfTwoSheets) {
   // Two 4x4 grids crossing at right angles: the query faces of one meet the other along a line.
   const Mesh a = test::regular_grid(4, 4, 0.25);

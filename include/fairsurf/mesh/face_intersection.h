@@ -6,10 +6,13 @@
 // face is tested against the faces sharing a cell with it.
 //
 // The pair test: two triangles that share no vertex cross when an edge of one passes strictly
-// through the interior of the other (each segment–triangle test is done both ways). Touching
-// contacts (within a relative 1e-12 of the edge lengths), coplanar overlaps and pairs that share a
-// vertex are not reported: hole patches meet their surroundings exactly at shared vertices, and a
-// fold between faces that share a vertex shows up as an inverted face elsewhere (flow.h).
+// through the interior of the other (each segment–triangle test is done both ways), or when they
+// lie in one plane (within a relative 1e-12) and their interiors overlap there: an edge of one
+// properly crosses an edge of the other, or a corner or the centroid of one lies strictly inside
+// the other (a tube laid flat over the sheet it joins, a copy of a face). Touching contacts
+// (within a relative 1e-12 of the edge lengths) and pairs that share a vertex are not reported:
+// hole patches meet their surroundings exactly at shared vertices, and a fold between faces that
+// share a vertex shows up as an inverted face elsewhere (flow.h).
 #pragma once
 
 #include <fairsurf/mesh/mesh.h>
@@ -36,7 +39,8 @@ std::vector<FaceIntersection> find_face_intersections(const Vertices& V, const F
 bool segment_crosses_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& a,
                               const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
-/// Whether triangles (a0, a1, a2) and (b0, b1, b2), which share no vertex, cross (see the header).
+/// Whether triangles (a0, a1, a2) and (b0, b1, b2), which share no vertex, cross or overlap in one
+/// plane (see the header).
 bool triangles_cross(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& a2,
                      const Eigen::Vector3d& b0, const Eigen::Vector3d& b1, const Eigen::Vector3d& b2);
 
