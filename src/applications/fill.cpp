@@ -13,12 +13,15 @@
 #include "patch/border_pinches.h"
 #include "stopwatch.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <set>
 #include <unordered_map>
 
 namespace fairsurf {
@@ -93,9 +96,43 @@ bool around_a_face(const Faces& F, const Topology& topo, const std::vector<int>&
   return false;
 }
 
+// Whether `loop` is the whole border of a flat piece: a part of the mesh, connected through its
+// vertices, all of whose vertices lie on the loop and all of whose faces lie in one plane (the two
+// triangles of a face of an unwelded soup, a flat polygon on its own). Such a piece has no vertex
+// inside, and its fill could only lay the piece again, reversed, on top of itself.
+bool borders_a_flat_piece(const Vertices& V, const Faces& F, const Topology& topo, const std::vector<int>& loop) {
+  const std::set<int> on_loop(loop.begin(), loop.end());
+  const std::size_t most_faces = loop.size() - 2;  // a triangulated polygon without inner vertices
+  std::set<int> piece;
+  std::vector<int> queue(topo.vertex_faces.row(loop.front()).begin(), topo.vertex_faces.row(loop.front()).end());
+  while (!queue.empty()) {
+    const int f = queue.back();
+    queue.pop_back();
+    if (!piece.insert(f).second) continue;
+    if (piece.size() > most_faces) return false;
+    for (int k = 0; k < 3; ++k) {
+      if (!on_loop.contains(F(f, k))) return false;
+      for (int g : topo.vertex_faces.row(F(f, k)))
+        if (!piece.contains(g)) queue.push_back(g);
+    }
+  }
+  // All the piece's vertices are the loop's: the piece is flat where they lie in one face's plane.
+  const int f = *piece.begin();
+  const Eigen::Vector3d origin = V.row(F(f, 0)).transpose();
+  const Eigen::Vector3d n = (V.row(F(f, 1)).transpose() - origin).cross(V.row(F(f, 2)).transpose() - origin);
+  double scale = 0;
+  for (int v : loop) scale = std::max(scale, (V.row(v).transpose() - origin).norm());
+  constexpr double kFlat = 1e-9;  // relative: a plane up to round-off
+  if (!(n.norm() > 0)) return false;
+  for (int v : loop)
+    if (std::abs(n.dot(V.row(v).transpose() - origin)) > kFlat * scale * n.norm()) return false;
+  return true;
+}
+
 // Marks the loops that are not to be filled as skipped, with the reason; returns the others.
-std::vector<int> select_holes(const Faces& F, const Topology& topo, const std::vector<std::vector<int>>& loops,
-                              const FillOptions& options, std::vector<HoleReport>& reports) {
+std::vector<int> select_holes(const Vertices& V, const Faces& F, const Topology& topo,
+                              const std::vector<std::vector<int>>& loops, const FillOptions& options,
+                              std::vector<HoleReport>& reports) {
   const int n = static_cast<int>(loops.size());
   std::vector<char> selected(n, options.holes.empty() ? 1 : 0);
   for (int i : options.holes) {
@@ -123,6 +160,12 @@ std::vector<int> select_holes(const Faces& F, const Topology& topo, const std::v
     }
     if (around_a_face(F, topo, loops[i])) {
       reports[i].reason = "the loop runs around a lone triangle: filling it would add that face again, reversed";
+      continue;
+    }
+    if (borders_a_flat_piece(V, F, topo, loops[i])) {
+      reports[i].reason =
+          "the loop is the whole border of a flat piece with no vertex inside (a face of an unwelded triangle soup?): "
+          "filling it would lay the piece again, reversed, on top of itself; repair welds a soup";
       continue;
     }
     chosen.push_back(i);
@@ -410,10 +453,11 @@ std::vector<HoleReport> hole_reports(const std::vector<std::vector<int>>& loops,
 }
 
 // The selected holes (select_holes) that can be filled; the others are marked failed, with the reason.
-std::vector<int> fillable_holes(const Faces& F, const Topology& topo, const std::vector<std::vector<int>>& loops,
-                                const FillOptions& options, std::vector<HoleReport>& reports) {
+std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topology& topo,
+                                const std::vector<std::vector<int>>& loops, const FillOptions& options,
+                                std::vector<HoleReport>& reports) {
   const std::vector<int> border_edges = border_edge_counts(topo);
-  const std::vector<int> chosen = select_holes(F, topo, loops, options, reports);
+  const std::vector<int> chosen = select_holes(V, F, topo, loops, options, reports);
   std::vector<char> is_chosen(loops.size(), 0);
   for (int h : chosen) is_chosen[h] = 1;
   const auto pinches = holes_at_pinches(loops, border_edges);
@@ -472,7 +516,7 @@ void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector
     if (start == PatchStart::unfaired && !reason.empty())
       reason = previous_start_failure + (crossed == PatchCrossing::none
                                                 ? "; the refined triangulation, unfaired, failed too: " + reason
-                                                : "; so does the refined triangulation, unfaired");
+                                                : "; the refined triangulation, unfaired, crosses the mesh");
     if (reason.empty() || !options.fallback_on_failure || start == PatchStart::unfaired) break;
     if (first_failure.empty()) first_failure = reason;
     if (crossed == PatchCrossing::flow && fairing.flow.tangential_relaxation < options.crossing_retry_relaxation) {
@@ -533,7 +577,7 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
   const auto loops = boundary_loops(mesh.F, topo);
   report.holes = hole_reports(loops, options);
 
-  const std::vector<int> fillable = fillable_holes(mesh.F, topo, loops, options, report.holes);
+  const std::vector<int> fillable = fillable_holes(mesh.V, mesh.F, topo, loops, options, report.holes);
   const int rings = rings_needed(options.continuity);
   for (const auto& group : overlapping_groups(topo, loops, fillable, rings)) {
     std::vector<std::vector<int>> patch_loops;

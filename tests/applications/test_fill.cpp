@@ -265,6 +265,37 @@ TEST(FillLoneTriangle, ALoopAroundAFaceIsSkippedNotFilledWithTheFaceReversed) {
   EXPECT_EQ(m.V, input.V);
 }
 
+// data/cube_soup.obj: a cube's 12 triangles, unwelded, so each square face is a piece of its own
+// whose border is a loop of 4 edges and which has no vertex inside. A fill could only lay each
+// square again, reversed, on itself (before, all 6 were "filled" so, C0 (linear)): the loops are
+// skipped with the reason, and the mesh is left as it was. The same two triangles folded along
+// their diagonal are no flat piece: the loop is filled, closing them into a tetrahedron.
+TEST(FillLoneTriangle, TheBorderOfAFlatPieceIsSkippedNotFilledWithThePieceReversed) {
+  Mesh soup = read_mesh(test::data_path("cube_soup.obj"));
+  const Mesh input = soup;
+  const FillReport r = fill_holes(soup);
+  ASSERT_EQ(r.holes.size(), 6u);
+  for (const HoleReport& h : r.holes) {
+    EXPECT_EQ(h.status, HoleStatus::skipped);
+    EXPECT_EQ(h.reason.rfind("the loop is the whole border of a flat piece with no vertex inside", 0), 0u) << h.reason;
+  }
+  EXPECT_EQ(r.filled, 0);
+  EXPECT_EQ(soup.F, input.F);
+  EXPECT_EQ(soup.V, input.V);
+
+  Mesh folded;
+  folded.V.resize(4, 3);
+  folded.V << 0, 0, 0, 1, 0, 0, 1, 1, 0.5, 0, 1, 0;
+  folded.F.resize(2, 3);
+  folded.F << 0, 1, 2, 0, 2, 3;
+  FillOptions o;
+  o.method = FairMethod::harmonic;
+  const FillReport t = fill_holes(folded, o);
+  ASSERT_EQ(t.holes.size(), 1u);
+  EXPECT_EQ(t.holes[0].status, HoleStatus::filled) << t.holes[0].reason;
+  EXPECT_EQ(folded.num_faces(), 4);
+}
+
 // The shark's hole 3 runs round a corner of the part. Its lightest triangulation crossed the
 // corner's fan, and both the G2 and the C2 fairing of it crossed the mesh, so the hole fell to C1;
 // the triangulation now avoids the crossing and the hole gets at least the C2 floor.

@@ -65,7 +65,8 @@ struct FillOptions : FairRegionOptions {
 
   // Which boundary loops are filled. A loop left out is reported as skipped with the reason. A
   // 3-edge loop around a face of the mesh (a lone triangle) is always skipped: its only fill is
-  // that face again, reversed.
+  // that face again, reversed. So is a loop that is the whole border of a flat piece with no
+  // vertex inside (a face of an unwelded triangle soup): its fill would be the piece reversed.
   std::vector<int> holes;   ///< loop indices (boundary_loops order); empty: every loop
   int max_hole_edges = 0;   ///< loops with more border edges are skipped; 0: no limit
   bool skip_largest = false;  ///< leave the longest loop (an open surface's outer border) open
