@@ -48,6 +48,15 @@ LoopPair chosen_pair(const Vertices& V, const std::vector<std::vector<int>>& loo
   return {o.loop_a, o.loop_b, 0.0};
 }
 
+// Two loops through one vertex touch there: a non-manifold vertex, which repair splits in two.
+void require_apart(const std::vector<int>& loop_a, const std::vector<int>& loop_b, const LoopPair& pair) {
+  for (int v : loop_a)
+    if (std::find(loop_b.begin(), loop_b.end(), v) != loop_b.end())
+      throw RepairableMeshError("blend_loops: loops " + std::to_string(pair.first) + " and " +
+                                std::to_string(pair.second) + " share vertex " + std::to_string(v) +
+                                ", a non-manifold vertex where the two borders touch; no tube starts from both");
+}
+
 // Worst 4√3·area / Σ edge² over faces [first_face, #F) of (V, F).
 double worst_quality(const Vertices& V, const Faces& F, int first_face) {
   double worst = 1.0;
@@ -582,6 +591,7 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
   report.loop_distance = pair.distance;
   const std::vector<int>& loop_a = loops[pair.first];
   const std::vector<int>& loop_b = loops[pair.second];
+  require_apart(loop_a, loop_b, pair);
   report.a.index = pair.first;
   report.a.length = static_cast<int>(loop_a.size());
   report.b.index = pair.second;

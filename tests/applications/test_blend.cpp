@@ -332,6 +332,17 @@ TEST(Blend, ClearErrors) {
   }
   o.loop_b = 0;
   EXPECT_THROW(blend_loops(fig4, o), InvalidArgument);
+
+  // data/lagrange_prout.obj's closest loops pass through one vertex: a non-manifold vertex, which
+  // repair splits (before, build_tube's InvalidArgument, exit 1 in the CLI, with no hint).
+  Mesh touching = read_mesh(test::data_path("lagrange_prout.obj"));
+  try {
+    blend_loops(touching);
+    FAIL();
+  } catch (const RepairableMeshError& e) {
+    EXPECT_STREQ(e.what(), "blend_loops: loops 5 and 12 share vertex 883, a non-manifold vertex where the two "
+                           "borders touch; no tube starts from both");
+  }
 }
 
 // Mean distance of the tube's vertices (from `first_tube_vertex` on) to the uncut mesh, in h.

@@ -102,7 +102,8 @@ struct BlendReport {
 /// vertices and faces first (unchanged), then the tube's (per-vertex attributes are dropped, as in
 /// patch.h). Throws InvalidMeshError for fewer than two loops; InvalidArgument for an index out of
 /// range (the message lists every loop with its length), equal indices or only one index given;
-/// what tube_patch and fair_region throw otherwise (NumericalError with `mesh` at the last accepted
+/// RepairableMeshError for two loops that share a vertex (a non-manifold vertex: repair.h splits
+/// it); what tube_patch and fair_region throw otherwise (NumericalError with `mesh` at the last accepted
 /// state of the flow).
 ///
 /// The linear ∆^k tube from the same start replaces the flow's tube (fair.linear, with the reason
