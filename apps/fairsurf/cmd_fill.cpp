@@ -135,6 +135,16 @@ std::string open_surface_hint(const FillReport& report, const FillArgs& args) {
   return "; the largest loop looks like the outer border of an open surface: use --skip-largest";
 }
 
+// A patch that folds back at its hole's border (fill.h's folds_back) is written; the user is told.
+void warn_if_folded_back(const HoleReport& hole) {
+  if (!folds_back(hole)) return;
+  std::fprintf(stderr,
+               "fairsurf: warning: hole %d's patch folds back: it turns the normal across the hole's border by "
+               "%.3g°, more than a right angle; the loop may not be a hole (the edge of a fin) or the hole may cut "
+               "across a thin part (docs/fill.md)\n",
+               hole.index, hole.continuity.max_normal_angle * 180 / std::numbers::pi);
+}
+
 void run_fill(const FillArgs& args) {
   check_outputs("fill", {{"-o", args.output, OutputKind::mesh}, {"--log", args.log, OutputKind::json}},
                 {args.input}, args.force);
@@ -178,6 +188,7 @@ void run_fill(const FillArgs& args) {
   }
 
   for (const auto& r : report.holes) warn_if_not_parabolic(r.well_posedness, "hole " + std::to_string(r.index) + ": ");
+  for (const auto& r : report.holes) warn_if_folded_back(r);
   if (!args.quiet)
     for (const auto& r : report.holes) std::printf("%s\n", hole_line(r).c_str());
   const int selected = report.filled + report.failed;

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <set>
@@ -558,6 +559,10 @@ FillOptions::FillOptions() : FairRegionOptions(harmonic_started()) {
   // Within 5% the held-out rings cannot tell a hole's flow and linear fill apart (docs/fill.md,
   // "Ties go to the flow"): such a tie goes to the G2 that was asked for.
   held_out_margin = 1.05;
+}
+
+bool folds_back(const HoleReport& hole) {
+  return hole.status == HoleStatus::filled && hole.continuity.max_normal_angle > std::numbers::pi / 2;
 }
 
 FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver& observer) {

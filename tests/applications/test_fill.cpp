@@ -296,6 +296,18 @@ TEST(FillLoneTriangle, TheBorderOfAFlatPieceIsSkippedNotFilledWithThePieceRevers
   EXPECT_EQ(folded.num_faces(), 4);
 }
 
+TEST(FillFolds, APatchFoldsBackBeyondARightAngleAcrossItsBorder) {
+  HoleReport h;
+  h.status = HoleStatus::filled;
+  h.continuity.max_normal_angle = 100 * std::numbers::pi / 180;
+  EXPECT_TRUE(folds_back(h));
+  h.continuity.max_normal_angle = 80 * std::numbers::pi / 180;
+  EXPECT_FALSE(folds_back(h));
+  h.continuity.max_normal_angle = 100 * std::numbers::pi / 180;
+  h.status = HoleStatus::failed;  // a failed hole has no patch
+  EXPECT_FALSE(folds_back(h));
+}
+
 // The shark's hole 3 runs round a corner of the part. Its lightest triangulation crossed the
 // corner's fan, and both the G2 and the C2 fairing of it crossed the mesh, so the hole fell to C1;
 // the triangulation now avoids the crossing and the hole gets at least the C2 floor.

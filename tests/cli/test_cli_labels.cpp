@@ -142,6 +142,23 @@ TEST_F(CliLabels, BlendWarnsWhereTheTubeFoldsBack) {
   EXPECT_EQ(facing.out.find("folds back"), std::string::npos) << facing.out;
 }
 
+// data/triple_vierbein.obj, repaired: its loops are the edges of fins, not holes, and the two that
+// are filled fold back (179° and 153° across their borders): fill warns, and still writes them.
+// blub's one hole (12° there) gets no warning.
+TEST_F(CliLabels, FillWarnsWhereAPatchFoldsBack) {
+  const auto run = test::run_cli("fill " + test::data_path("triple_vierbein.obj") + " --repair -o " + path("t.obj") +
+                                 " --quiet");
+  EXPECT_NE(run.out.find("fairsurf: warning: hole 0's patch folds back: it turns the normal across the hole's border "
+                         "by 179°"),
+            std::string::npos)
+      << run.out;
+  EXPECT_TRUE(fs::exists(file("t.obj")));
+
+  const auto blub = test::run_cli("fill " + test::data_path("blub_open.obj") + " -o " + path("b.obj") + " --quiet");
+  ASSERT_EQ(blub.exit_code, 0) << blub.out;
+  EXPECT_EQ(blub.out.find("folds back"), std::string::npos) << blub.out;
+}
+
 // f = K is ill-posed where K <= 0 (method.md §4): blend says so as smooth does.
 TEST_F(CliLabels, BlendWarnsWhenFIsNotParabolic) {
   ASSERT_EQ(test::run_cli("scene fig3 -o " + path("fig3.ply") + " --edge-length 0.3").exit_code, 0);

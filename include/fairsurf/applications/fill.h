@@ -151,6 +151,12 @@ struct FillReport {
   double seconds = 0;  ///< wall time of the whole call
 };
 
+/// The filled hole's patch folds back against the surface: it turns the normal across the hole's
+/// border (continuity.max_normal_angle) by more than a right angle. No fill of a hole in a smooth
+/// surface does (the uncut meshes of bench_real_holes read at most 29° across the same borders):
+/// the loop is not a hole (the edge of a fin), or the hole cuts across a thin part (docs/fill.md).
+bool folds_back(const HoleReport& hole);
+
 /// Called after every trial flow step with the holes being faired together (ascending indices).
 using FillObserver = std::function<void(std::span<const int> holes, const StepRecord& record)>;
 
