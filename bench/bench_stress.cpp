@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <numbers>
 #include <random>
 #include <set>
 #include <string>
@@ -108,6 +109,7 @@ bool noted(const std::string& note, const char* what) { return note.find(what) !
 
 struct FillTally {
   int trials = 0, refused = 0, holes = 0, open = 0, refined = 0, unfaired = 0, crossing = 0, non_manifold = 0;
+  int folded = 0;  ///< filled holes whose patch folds back (fill.h's folds_back)
   double slowest = 0;
 };
 
@@ -138,6 +140,10 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, FillTally& tally) {
     const bool refined = !unfaired && noted(r.note, "faired from the refined triangulation instead");
     tally.unfaired += unfaired;
     tally.refined += refined;
+    tally.folded += folds_back(r);
+    if (folds_back(r))
+      std::printf("\n    hole %d (%d edges): %s, folds back (%.0f° across its border)", r.index, r.border_edges,
+                  delivered_label(r.supported, r.linear).c_str(), r.continuity.max_normal_angle * 180 / std::numbers::pi);
     if (r.status == HoleStatus::failed)
       std::printf("\n    hole %d (%d edges) left open: %s", r.index, r.border_edges, r.reason.c_str());
     else if (unfaired || refined)
@@ -149,11 +155,13 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, FillTally& tally) {
 }
 
 std::string fill_summary(const FillTally& t) {
-  char text[400];
+  char text[480];
   std::snprintf(text, sizeof text,
                 "fill: %d trials (%d refused), %d holes: %d left open, %d faired from the refined triangulation, %d "
-                "filled by it unfaired; outputs crossing the mesh %d, not manifold %d; slowest trial %.2f s",
-                t.trials, t.refused, t.holes, t.open, t.refined, t.unfaired, t.crossing, t.non_manifold, t.slowest);
+                "filled by it unfaired, %d folding back; outputs crossing the mesh %d, not manifold %d; slowest trial "
+                "%.2f s",
+                t.trials, t.refused, t.holes, t.open, t.refined, t.unfaired, t.folded, t.crossing, t.non_manifold,
+                t.slowest);
   return text;
 }
 
