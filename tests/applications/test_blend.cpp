@@ -367,6 +367,14 @@ Band band_across(const char* file, const Eigen::Vector3d& point, const Eigen::Ve
   return b;
 }
 
+// The blend `m` of band `b` closes the cut: its tube crosses nothing, the mesh is clean (expect_clean)
+// and no loop is left.
+void expect_band_closed(const Mesh& m, const Band& b) {
+  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
+  expect_clean(m);
+  EXPECT_EQ(loop_count(m), 0);
+}
+
 // A G2 blend delivered as a linear tube of a lower continuity, for a crossing (crossing_fallback).
 void expect_lower_linear_tube(const BlendReport& r) {
   EXPECT_TRUE(r.fair.linear);
@@ -394,9 +402,7 @@ TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
   EXPECT_NE(r.fair.note.find("the sixth-order flow's tube turns the normal across the loops by "), std::string::npos)
       << r.fair.note;
   EXPECT_NE(r.fair.note.find("kept the linear ∆3 tube"), std::string::npos) << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
-  expect_clean(m);
-  EXPECT_EQ(loop_count(m), 0);
+  expect_band_closed(m, b);
 
   BlendOptions linear_options;
   linear_options.method = FairMethod::harmonic;
@@ -506,9 +512,7 @@ TEST(BlendReal, AHermiteTubeThatCrossesTheMeshIsBuiltAgainWithStraightRings) {
             std::string::npos)
       << r.fair.note;
   EXPECT_NE(r.fair.note.find("); built again with straight rings"), std::string::npos) << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
-  expect_clean(m);
-  EXPECT_EQ(loop_count(m), 0);
+  expect_band_closed(m, b);
 }
 
 // A slab 4 h wide across the hammer scan's handle, 15° off square: two facing loops, ragged as the
@@ -526,9 +530,7 @@ TEST(BlendReal, WhereEveryG2TubeCrossesTheFirstLowerLinearTubeThatDoesNotIsKept)
   expect_lower_linear_tube(r);
   EXPECT_NE(r.fair.note.find("built again with straight rings"), std::string::npos) << r.fair.note;
   EXPECT_NE(r.fair.note.find("tube, the first that does not cross"), std::string::npos) << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
-  expect_clean(m);
-  EXPECT_EQ(loop_count(m), 0);
+  expect_band_closed(m, b);
 }
 
 // An oblique slab across the remeshed bunny (bench_stress's blend draws): the time-stepped flow
@@ -546,9 +548,7 @@ TEST(BlendReal, WhereNoDescentSettlesTheLinearTubeIsKept) {
   EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)") << r.fair.note;
   EXPECT_NE(r.fair.note.find("did not settle"), std::string::npos) << r.fair.note;
   EXPECT_NE(r.fair.note.find("kept the linear ∆3 tube"), std::string::npos) << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
-  expect_clean(m);
-  EXPECT_EQ(loop_count(m), 0);
+  expect_band_closed(m, b);
 
   // The time-stepped flow alone (no descent fallback) fails at its first step.
   Mesh asked = b.cut;
@@ -597,9 +597,7 @@ TEST(BlendReal, WhereEveryTubeCrossesTheMeshThePinchedMembraneIsTheLastStart) {
   EXPECT_LT(r.membrane_quality, BlendOptions{}.pinch_quality_ratio * r.hermite_quality);
   EXPECT_NE(r.fair.note.find("which pinches off, crosses the mesh"), std::string::npos) << r.fair.note;
   EXPECT_NE(r.fair.note.find("); started from the membrane"), std::string::npos) << r.fair.note;
-  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
-  expect_clean(m);
-  EXPECT_EQ(loop_count(m), 0);
+  expect_band_closed(m, b);
   const double distance = tube_distance(m, b.cut.num_vertices(), b.uncut, b.h);
   std::printf("[blend] spot head, oblique: %s, %.3f h from the uncut mesh\n",
               delivered_label(r.fair.supported, r.fair.linear).c_str(), distance);
