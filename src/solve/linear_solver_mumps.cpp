@@ -1,5 +1,6 @@
-// fairsurf — the MUMPS back ends: MUMPS LU with automatic ordering, on this process alone (mumps) or
-// with the factors spread over MPI ranks that follow this one's calls (mumps-mpi, MumpsTeam).
+// fairsurf — the MUMPS back ends: MUMPS LU with a deterministic ordering (PORD or QAMD), on this
+// process alone (mumps) or with the factors spread over MPI ranks that follow this one's calls
+// (mumps-mpi, MumpsTeam).
 //
 // MUMPS takes the matrix as 1-based coordinates (irn, jcn, a), centralized on this process (the
 // host). The row-major CSR order of the stored matrix is a valid coordinate order, so the index
@@ -52,6 +53,7 @@ class MumpsSolver final : public LinearSolver {
     id.nnz = static_cast<MUMPS_INT8>(rows_.size());
     id.irn = rows_.data();
     id.jcn = cols_.data();
+    instance_->choose_ordering(id.n);
     run(1, "analyze");
     set_ordering(ordering_name(instance_->infog(7)));
   }

@@ -20,7 +20,7 @@ std::string describe_error(int code) {
 MumpsSettings mumps_settings(const LinearSolverOptions& options, int communicator) {
   return {.communicator = communicator,
           .sym = options.symmetric ? 2 : 0,  // general symmetric (LDLᵀ with pivoting), or unsymmetric
-          .ordering = options.ordering == FillOrdering::minimum_degree ? 6 : 7,  // QAMD, or MUMPS chooses
+          .ordering = options.ordering == FillOrdering::minimum_degree ? 6 : kNestedDissection,
           .name = to_string(options.kind),
           .controls = options.mumps_controls};
 }
@@ -41,7 +41,8 @@ std::string ordering_name(int code) {
   }
 }
 
-MumpsInstance::MumpsInstance(const MumpsSettings& settings) : name_(settings.name) {
+MumpsInstance::MumpsInstance(const MumpsSettings& settings)
+    : name_(settings.name), ordering_(settings.ordering), ordering_given_(settings.controls.contains(7)) {
   id_.par = 1;
   id_.sym = settings.sym;
   id_.comm_fortran = settings.communicator;
@@ -62,6 +63,12 @@ MumpsInstance::MumpsInstance(const MumpsSettings& settings) : name_(settings.nam
 }
 
 MumpsInstance::~MumpsInstance() { call(-2); }
+
+void MumpsInstance::choose_ordering(int unknowns) {
+  if (ordering_given_) return;
+  const bool pord = ordering_ == kNestedDissection && unknowns > kLargestMinimumDegreeSystem;
+  icntl(7) = pord ? 4 : ordering_;
+}
 
 int MumpsInstance::call(int job) {
   id_.job = job;

@@ -15,8 +15,8 @@
 // 1e-16. Both figures are reported.
 //
 // Back ends (docs/solvers.md has the measured comparison):
-//   mumps    sequential MUMPS LU (LDLᵀ with options.symmetric), automatic ordering (ICNTL(7) = 7)
-//            or QAMD (options.ordering). The default and the fastest.
+//   mumps    sequential MUMPS LU (LDLᵀ with options.symmetric), nested dissection (PORD on large
+//            systems) or QAMD (options.ordering). The default and the fastest.
 //   mumps-mpi the same MUMPS factorization with its factors distributed over the MPI ranks of a
 //            distributed::Session (distributed.h); rank 0 calls the solver, the others serve it.
 //            Only in builds with FAIRSURF_MPI (make_linear_solver throws InvalidArgument otherwise).
@@ -52,16 +52,21 @@ enum class ResidualMeasure {
 
 /// The fill-reducing ordering of the direct back ends' analysis (GMRES ignores it).
 enum class FillOrdering {
-  automatic,  ///< MUMPS chooses (ICNTL(7) = 7: nested dissection on large systems); UMFPACK: METIS
+  /// MUMPS: PORD (ICNTL(7) = 4) above 5000 unknowns, MUMPS's own minimum degree choice (AMF or
+  /// QAMD) up to that; UMFPACK: METIS. Not MUMPS's own choice above 5000 (SCOTCH in Debian's build),
+  /// which orders the same matrix differently in every run, so that outputs differed in round-off
+  /// from run to run. PORD is deterministic and as fast on the step matrix (docs/solvers.md,
+  /// "Orderings").
+  nested_dissection,
   /// Approximate minimum degree (MUMPS QAMD, UMFPACK AMD). On a hole patch's systems (∆³ or the
   /// step matrix) its analysis is far cheaper than nested dissection's and the factorization no
-  /// slower (docs/fill.md, benchmark); on very large systems prefer automatic.
+  /// slower (docs/fill.md, benchmark); on very large systems prefer nested_dissection.
   minimum_degree,
 };
 
 struct LinearSolverOptions {
   LinearSolverKind kind = LinearSolverKind::mumps;
-  FillOrdering ordering = FillOrdering::automatic;
+  FillOrdering ordering = FillOrdering::nested_dissection;
   /// A is symmetric (to round-off): MUMPS then factors LDLᵀ from its lower triangle, about half
   /// the work of LU; residuals and refinement still use the whole A. UMFPACK and GMRES ignore it.
   bool symmetric = false;
