@@ -12,6 +12,7 @@
 #include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/applications/fill.h>
+#include <fairsurf/geometry/continuity_measure.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/face_intersection.h>
 #include <fairsurf/mesh/region_selection.h>
@@ -74,28 +75,49 @@ Args parse_args(int argc, char** argv) {
 
 // 1–3 balls, each centred at a vertex of `mesh` as cut so far (`cut`: cut each ball out, else keep
 // the mesh whole), of radius 4–17 h, all drawn from std::mt19937_64(seed) (whose output the
-// standard fixes). Returns the mesh as cut and the vertices inside the balls (of the uncut mesh).
+// standard fixes). Returns the mesh as cut with each of its vertices' index in the uncut mesh, and
+// the vertices inside the balls (of the uncut mesh) or, when cut, those the cut dropped.
 struct Balls {
   Mesh cut;
+  std::vector<int> kept;  ///< cut: for each vertex of `cut`, its index in the uncut mesh
   std::vector<int> inside;
 };
 
 Balls draw_balls(const ClosedMesh& m, std::uint64_t seed, bool cut) {
   std::mt19937_64 draw(seed);
-  Balls b{m.mesh, {}};
+  Balls b{m.mesh, bench::rows_from(0, m.mesh.num_vertices()), {}};
   std::set<int> inside;
   const int balls = 1 + static_cast<int>(draw() % 3);
   for (int k = 0; k < balls && b.cut.num_faces() > 0; ++k) {
     const int centre = static_cast<int>(draw() % static_cast<std::uint64_t>(b.cut.num_vertices()));
     const double radius = static_cast<double>(4 + draw() % 14) * m.h;
     const Eigen::Vector3d c = b.cut.V.row(centre).transpose();
-    if (cut)
-      b.cut = bench::cut_ball(b.cut, c, radius).mesh;
-    else
+    if (cut) {
+      bench::CutMesh next = bench::cut_ball(b.cut, c, radius);
+      for (int& v : next.kept) v = b.kept[v];
+      b.cut = std::move(next.mesh);
+      b.kept = std::move(next.kept);
+    } else {
       for (int v : vertices_in_ball(b.cut.V, c, radius)) inside.insert(v);
+    }
+  }
+  if (cut) {
+    std::vector<char> kept(m.mesh.num_vertices(), 0);
+    for (int v : b.kept) kept[v] = 1;
+    for (int v = 0; v < m.mesh.num_vertices(); ++v)
+      if (!kept[v]) inside.insert(v);
   }
   b.inside.assign(inside.begin(), inside.end());
   return b;
+}
+
+// The uncut surface's own reading across the border of hole `loop` of the cut mesh: the largest
+// angle between the one-sided normals at its vertices, the dropped vertices as the free side
+// (bench_real_holes' `uncut` column), in degrees.
+double uncut_angle(const ClosedMesh& m, const Balls& balls, const std::vector<int>& loop) {
+  std::vector<int> at;
+  for (int v : loop) at.push_back(balls.kept[v]);
+  return measure_continuity(m.mesh.V, m.mesh.F, balls.inside, at).max_normal_angle * 180 / std::numbers::pi;
 }
 
 bool crosses(const Mesh& mesh, const std::vector<int>& faces) {
@@ -110,11 +132,17 @@ bool noted(const std::string& note, const char* what) { return note.find(what) !
 struct FillTally {
   int trials = 0, refused = 0, holes = 0, open = 0, refined = 0, unfaired = 0, crossing = 0, non_manifold = 0;
   int folded = 0;  ///< filled holes whose patch folds back (fill.h's folds_back)
+  /// Of those, the ones in a cut that removed disks only (bench::removed_disks: each loop bounds a
+  /// disk of the uncut surface, which a fill should follow) across whose border the uncut surface
+  /// turns the normal by less than a right angle: folds the cut does not explain. A cap on a
+  /// severed tube turns by a right angle whatever the tube does, so other cuts are not counted.
+  int folded_against_uncut = 0;
   double slowest = 0;
 };
 
 void fill_trial(const ClosedMesh& m, std::uint64_t seed, FillTally& tally) {
-  const Mesh cut = draw_balls(m, seed, true).cut;
+  const Balls balls = draw_balls(m, seed, true);
+  const Mesh& cut = balls.cut;
   std::printf("fill  %-26s seed %3llu: loops %s", m.name.c_str(), static_cast<unsigned long long>(seed),
               bench::border_sizes(cut).c_str());
   ++tally.trials;
@@ -135,15 +163,21 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, FillTally& tally) {
   tally.non_manifold += !manifold;
   tally.slowest = std::max(tally.slowest, report.seconds);
   std::printf(", %.2f s%s%s", report.seconds, crossing ? ", OUTPUT CROSSES" : "", manifold ? "" : ", NOT MANIFOLD");
+  const std::vector<std::vector<int>> loops = bench::loops_of(cut);
+  const bool disks = bench::removed_disks(m.mesh, cut);
   for (const HoleReport& r : report.holes) {
     const bool unfaired = noted(r.note, "delivered unfaired");
     const bool refined = !unfaired && noted(r.note, "faired from the refined triangulation instead");
     tally.unfaired += unfaired;
     tally.refined += refined;
-    tally.folded += folds_back(r);
-    if (folds_back(r))
-      std::printf("\n    hole %d (%d edges): %s, folds back (%.0f° across its border)", r.index, r.border_edges,
-                  delivered_label(r.supported, r.linear).c_str(), r.continuity.max_normal_angle * 180 / std::numbers::pi);
+    if (folds_back(r)) {
+      const double uncut = uncut_angle(m, balls, loops[static_cast<std::size_t>(r.index)]);
+      ++tally.folded;
+      tally.folded_against_uncut += disks && uncut < 90;
+      std::printf("\n    hole %d (%d edges): %s, folds back (%.0f° across its border; the uncut surface %.0f°%s)",
+                  r.index, r.border_edges, delivered_label(r.supported, r.linear).c_str(),
+                  r.continuity.max_normal_angle * 180 / std::numbers::pi, uncut, disks ? "" : ", not disk holes");
+    }
     if (r.status == HoleStatus::failed)
       std::printf("\n    hole %d (%d edges) left open: %s", r.index, r.border_edges, r.reason.c_str());
     else if (unfaired || refined)
@@ -158,10 +192,11 @@ std::string fill_summary(const FillTally& t) {
   char text[480];
   std::snprintf(text, sizeof text,
                 "fill: %d trials (%d refused), %d holes: %d left open, %d faired from the refined triangulation, %d "
-                "filled by it unfaired, %d folding back; outputs crossing the mesh %d, not manifold %d; slowest trial "
-                "%.2f s",
-                t.trials, t.refused, t.holes, t.open, t.refined, t.unfaired, t.folded, t.crossing, t.non_manifold,
-                t.slowest);
+                "filled by it unfaired, %d folding back (%d in disk holes where the uncut surface turns less than a right "
+                "angle); "
+                "outputs crossing the mesh %d, not manifold %d; slowest trial %.2f s",
+                t.trials, t.refused, t.holes, t.open, t.refined, t.unfaired, t.folded, t.folded_against_uncut,
+                t.crossing, t.non_manifold, t.slowest);
   return text;
 }
 
