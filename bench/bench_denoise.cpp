@@ -6,8 +6,9 @@
 // within 3 rings of the same vertex: smoothing keeps the connectivity and moves a vertex by less
 // than an edge or two), beside the noisy copy's.
 //
-// Usage: bench_denoise [--mesh NAME] [--sigma S (0.2)] [--time-scale S (1)]
-//   --time-scale 97.41 (π⁴) runs the sixth-order flow to the earlier default time (2h̄)⁶.
+// Usage: bench_denoise [--mesh NAME] [--sigma S (0.2)] [--time-scale S (1)] [--tau-max F]
+//   --time-scale 97.41 (π⁴) runs the sixth-order flow to the earlier default time (2h̄)⁶;
+//   --tau-max F bounds the step τ by F times the end time (the CLI's bound: FlowOptions::tau_max).
 #include <fairsurf/applications/smooth.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/topology.h>
@@ -30,6 +31,7 @@ struct Args {
   std::string mesh;
   double sigma = 0.2;
   double time_scale = 1.0;
+  double tau_max_fraction = 0;  ///< > 0: the largest step, as a fraction of the end time
 };
 
 Args parse_args(int argc, char** argv) {
@@ -41,7 +43,10 @@ Args parse_args(int argc, char** argv) {
     if (a == "--mesh") args.mesh = value;
     else if (a == "--sigma") args.sigma = std::stod(value);
     else if (a == "--time-scale") args.time_scale = std::stod(value);
-    else throw InvalidArgument("bench_denoise: unknown argument " + a + " (--mesh NAME, --sigma S, --time-scale S)");
+    else if (a == "--tau-max") args.tau_max_fraction = std::stod(value);
+    else
+      throw InvalidArgument("bench_denoise: unknown argument " + a +
+                            " (--mesh NAME, --sigma S, --time-scale S, --tau-max F)");
   }
   if (!(args.sigma > 0) || !(args.time_scale > 0))
     throw InvalidArgument("bench_denoise: --sigma and --time-scale must be positive");
@@ -107,6 +112,10 @@ void run_mesh(const bench::ClosedMesh& m, const Args& args) {
     Mesh smoothed = noisy;
     SmoothOptions options = scan_smoothing_options(smoothed, kind);
     set_smoothing_end(options, {.time = options.flow.end_time * args.time_scale});
+    if (args.tau_max_fraction > 0) {
+      options.flow.tau_max = args.tau_max_fraction * options.flow.end_time;
+      options.flow.tau = std::min(options.flow.tau, options.flow.tau_max);
+    }
     try {
       const FlowReport report = smooth(smoothed, options);
       const Distances d = distances(m.mesh, nearby, smoothed.V, m.h);
