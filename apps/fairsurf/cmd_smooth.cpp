@@ -109,8 +109,8 @@ void setup_smooth(CLI::App& app) {
   auto* steps = cmd->add_option("--steps", args->steps, "Run this many accepted steps (>= 1)")
                     ->check(whole_number_at_least(1));
   auto* time = cmd->add_option("--time", args->time,
-                               "Run to this time > 0, unit-diagonal units (default: (2h)^order, h the "
-                               "mean edge length)")
+                               "Run to this time > 0, unit-diagonal units (default: (2h)^order / pi^(order-2), h "
+                               "the mean edge length: every flow damps a feature 4h wide alike)")
                    ->check(positive_number());
   auto* steady = cmd->add_flag("--steady", args->steady, "Run to a steady state: max|V| under the tolerance or, for the sixth-order flow, until the energy descent stops lowering E (docs/flow.md)");
   steps->excludes(time)->excludes(steady);
