@@ -19,6 +19,7 @@ nlohmann::json to_json(const StepRecord& r) {
                    {"predicted_decrease", r.predicted_decrease},
                    {"max_displacement", r.max_displacement},
                    {"held_back_vertices", r.held_back_vertices},
+                   {"clipped_vertices", r.clipped_vertices},
                    {"max_velocity", r.max_velocity},
                    {"accepted", r.accepted},
                    {"solver_iterations", r.solver_iterations},

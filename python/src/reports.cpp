@@ -17,7 +17,8 @@ py::dict to_dict(const StepRecord& r) {
              "predicted_decrease"_a = std::isnan(r.predicted_decrease) ? py::object(py::none())
                                                                        : py::object(py::float_(r.predicted_decrease)),
              "max_displacement"_a = r.max_displacement,
-             "held_back_vertices"_a = r.held_back_vertices, "max_velocity"_a = r.max_velocity,
+             "held_back_vertices"_a = r.held_back_vertices, "clipped_vertices"_a = r.clipped_vertices,
+             "max_velocity"_a = r.max_velocity,
              "accepted"_a = r.accepted, "solver_iterations"_a = r.solver_iterations,
              "backward_error"_a = r.backward_error,
              "seconds"_a = py::dict("fit"_a = r.fit_seconds, "assembly"_a = r.assembly_seconds,

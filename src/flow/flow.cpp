@@ -94,7 +94,7 @@ class FlowRun {
   bool solve_step(double tau, StepRecord& record, Eigen::VectorXd& d);
   void form_matrix(double tau);
   bool descending() const { return descends(options_); }
-  void limit_displacement(Eigen::VectorXd& d) const;
+  int limit_displacement(Eigen::VectorXd& d) const;
   bool displacement_ok(const Eigen::VectorXd& d, StepRecord& record) const;
   bool faces_ok(StepRecord& record);
   bool crossings_ok(StepRecord& record);
@@ -293,13 +293,17 @@ void FlowRun::form_matrix(double tau) {
     flow_detail::form_step_matrix(jacobian_, damping_, tau, step_matrix_);
 }
 
-// Per-vertex trust region: |d_i| ≤ max_displacement_ratio · (mean edge length at i).
-void FlowRun::limit_displacement(Eigen::VectorXd& d) const {
+// Per-vertex trust region: |d_i| ≤ max_displacement_ratio · (mean edge length at i). Returns the
+// number of vertices clipped.
+int FlowRun::limit_displacement(Eigen::VectorXd& d) const {
   const double ratio = options_.max_displacement_ratio;
+  int clipped = 0;
   for (int k = 0; k < region_.num_free(); ++k) {
     const double cap = ratio * edge_length_[region_.free_vertices[k]];
+    clipped += std::abs(d[k]) > cap;
     d[k] = std::clamp(d[k], -cap, cap);
   }
+  return clipped;
 }
 
 bool FlowRun::displacement_ok(const Eigen::VectorXd& d, StepRecord& record) const {
@@ -358,7 +362,7 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
   const bool control = options_.step_control;
   Eigen::VectorXd d;
   if (!solve_step(tau, record, d)) return false;
-  if (control && options_.limit_displacement) limit_displacement(d);
+  if (control && options_.limit_displacement) record.clipped_vertices = limit_displacement(d);
   if (control && !descending() && !displacement_ok(d, record)) return false;
   X_trial_ = X_;
   for (int k = 0; k < region_.num_free(); ++k) {

@@ -155,6 +155,7 @@ TEST_F(CliSmooth, DenoisesASphereAndLogsEverySteps) {
   ASSERT_GT(j["steps"].size(), 0u);
   EXPECT_LT(j["final_energy"].get<double>(), j["initial_energy"].get<double>());
   EXPECT_TRUE(j["steps"][0].contains("seconds"));
+  EXPECT_TRUE(j["steps"][0].contains("clipped_vertices"));
 }
 
 // τ = 1e-3 is far above the default time (~5e-11 here): were the default time applied, the first

@@ -209,6 +209,10 @@ struct StepRecord {
   /// Free vertices held back because a face of theirs would have turned over
   /// (FlowOptions::hold_back_turned_faces).
   int held_back_vertices = 0;
+  /// Free vertices whose step was clipped to the per-vertex trust region
+  /// (FlowOptions::limit_displacement): where the solved step asked for more than
+  /// max_displacement_ratio of the local edge length.
+  int clipped_vertices = 0;
   bool accepted = false;
   StepRejection rejection = StepRejection::none;
   std::string detail;           ///< what was rejected, e.g. "|d| 0.031 > 0.25 · 0.1 at vertex 17"
