@@ -1,6 +1,6 @@
 // `fairsurf smooth` on the real raw scans of data/ (hammer_rawscan.obj: 30k vertices, closed;
 // demosthenes_scan_lowres.obj: 8.4k vertices, open base) with the options the CLI uses, to its
-// default time (2h̄)⁶. Prints, per scan: wall time, accepted/rejected steps, the time reached against
+// default time (2h̄)⁶/π⁴. Prints, per scan: wall time, accepted/rejected steps, the time reached against
 // the default time, the faces inverted against the input, the noise index before and after, the
 // energy before and after. Arguments: the scans to run (paths; default both), optionally --relax W
 // to override the tangential relaxation weight (0 turns it off, for comparisons) and --out PATH to

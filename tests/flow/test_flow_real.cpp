@@ -1,7 +1,7 @@
 // Smoothing the real raw scans of data/ whole with the options `fairsurf smooth` uses (smooth.h
-// scan_smoothing_options), to the default time (2h̄)⁶: demosthenes_scan_lowres.obj (8.4k vertices,
-// open base; about 2 s, run twice) and hammer_rawscan.obj (30k vertices, edge-length CV 0.48,
-// needle triangles down to 0.24°, noise one edge length high; about 13 s on a quiet machine).
+// scan_smoothing_options), to the default time (2h̄)⁶/π⁴: demosthenes_scan_lowres.obj (8.4k
+// vertices, open base; about 1 s, run twice) and hammer_rawscan.obj (30k vertices, edge-length CV
+// 0.48, needle triangles down to 0.24°, noise one edge length high; about 3 s on a quiet machine).
 // Issue #4: no NaN, no face inverted against the input, the noise index at least halved and the
 // energy dropping; issue #11: the same output run after run.
 #include <fairsurf/applications/smooth.h>
