@@ -53,11 +53,10 @@ Args parse_args(int argc, char** argv) {
   return args;
 }
 
-// For each vertex, the clean faces within 3 rings of it (the search set of `distances`).
+// For each vertex, the clean faces within 3 rings of it (the search set of `distances`). The rings
+// are gathered here with one marker array for all vertices: topology.h's k_ring allocates and scans
+// #V per call.
 std::vector<std::vector<int>> nearby_faces(const Mesh& clean, const Topology& topo) {
-  std::vector<std::vector<int>> faces_at(clean.num_vertices());
-  for (int f = 0; f < clean.num_faces(); ++f)
-    for (int k = 0; k < 3; ++k) faces_at[clean.F(f, k)].push_back(f);
   std::vector<std::vector<int>> nearby(clean.num_vertices());
   std::vector<int> mark(clean.num_vertices(), -1);
   for (int v = 0; v < clean.num_vertices(); ++v) {
@@ -73,7 +72,10 @@ std::vector<std::vector<int>> nearby_faces(const Mesh& clean, const Topology& to
           }
       begin = end;
     }
-    for (int u : ring) nearby[v].insert(nearby[v].end(), faces_at[u].begin(), faces_at[u].end());
+    for (int u : ring) {
+      const auto faces = topo.vertex_faces.row(u);
+      nearby[v].insert(nearby[v].end(), faces.begin(), faces.end());
+    }
     std::sort(nearby[v].begin(), nearby[v].end());
     nearby[v].erase(std::unique(nearby[v].begin(), nearby[v].end()), nearby[v].end());
   }

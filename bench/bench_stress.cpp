@@ -94,18 +94,13 @@ Balls draw_balls(const ClosedMesh& m, std::uint64_t seed, bool cut) {
     const Eigen::Vector3d c = b.cut.V.row(centre).transpose();
     if (cut) {
       bench::CutMesh next = bench::cut_ball(b.cut, c, radius);
+      for (int v : next.dropped) inside.insert(b.kept[v]);
       for (int& v : next.kept) v = b.kept[v];
       b.cut = std::move(next.mesh);
       b.kept = std::move(next.kept);
     } else {
       for (int v : vertices_in_ball(b.cut.V, c, radius)) inside.insert(v);
     }
-  }
-  if (cut) {
-    std::vector<char> kept(m.mesh.num_vertices(), 0);
-    for (int v : b.kept) kept[v] = 1;
-    for (int v = 0; v < m.mesh.num_vertices(); ++v)
-      if (!kept[v]) inside.insert(v);
   }
   b.inside.assign(inside.begin(), inside.end());
   return b;
@@ -193,8 +188,7 @@ std::string fill_summary(const FillTally& t) {
   std::snprintf(text, sizeof text,
                 "fill: %d trials (%d refused), %d holes: %d left open, %d faired from the refined triangulation, %d "
                 "filled by it unfaired, %d folding back (%d in disk holes where the uncut surface turns less than a right "
-                "angle); "
-                "outputs crossing the mesh %d, not manifold %d; slowest trial %.2f s",
+                "angle); outputs crossing the mesh %d, not manifold %d; slowest trial %.2f s",
                 t.trials, t.refused, t.holes, t.open, t.refined, t.unfaired, t.folded, t.folded_against_uncut,
                 t.crossing, t.non_manifold, t.slowest);
   return text;
