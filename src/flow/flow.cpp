@@ -176,6 +176,7 @@ void FlowRun::initialize() {
     problem_.scale.curvature =
         options_.curvature_scale > 0 ? options_.curvature_scale : curvature_scale(geo.H, geo.K);
     problem_.scale.relative_epsilon = options_.relative_epsilon;
+    problem_.curvature_resolution = options_.curvature_resolution;
     report_.well_posedness = check_well_posedness(problem_.functions, geo.H, geo.K, problem_.scale);
   }
   report_.curvature_scale = problem_.scale.curvature;

@@ -17,6 +17,7 @@ void check_options(const FlowOptions& o) {
   else if (!(o.steady_tolerance >= 0)) problem = "steady_tolerance must be non-negative";
   else if (!(o.steady_relative_tolerance >= 0)) problem = "steady_relative_tolerance must be non-negative";
   else if (!(o.relative_epsilon >= 0)) problem = "relative_epsilon must be non-negative";
+  else if (!(o.curvature_resolution > 0)) problem = "curvature_resolution must be positive";
   else if (!(o.curvature_scale >= 0)) problem = "curvature_scale must be non-negative";
   else if (!(o.runaway_energy_factor > 1)) problem = "runaway_energy_factor must exceed 1";
   else if (!(o.tangential_relaxation >= 0 && o.tangential_relaxation <= 1))

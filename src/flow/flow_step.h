@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct FlowProblem {
   FlowKind kind = FlowKind::sixth_order;
   EnergyFunctions functions;  ///< sixth order only
   EnergyScale scale;          ///< ε of the functions, fixed at the start
+  double curvature_resolution = std::numeric_limits<double>::infinity();  ///< FlowOptions::curvature_resolution
   const Region* region = nullptr;
   /// #V: 1 where the watched energy is summed (free vertices and their three fixed rings), else 0.
   Eigen::VectorXd energy_weight;

@@ -14,6 +14,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <cstdio>
 #include <numeric>
 #include <string>
@@ -247,6 +249,40 @@ TEST(FlowDenoising, Torus) {
   EXPECT_LT(std::abs(volume_change), 0.01);
 }
 
+// A single vertex drawn 0.6 of its edge length out of a smooth torus (a 3σ draw of the noise
+// bench_denoise adds): there the radius of curvature is below an edge, and EL's lower-order term
+// c ∆f, anti-diffusive, outweighs the leading one at the mesh's own scale. One step of a quarter of
+// the default smoothing time (smooth.h, (2h̄)⁶/π⁴) pulls the spike back with the limiter
+// (FlowOptions::curvature_resolution) and pushes it further out without it (docs/flow.md,
+// "Unresolved curvature").
+TEST(FlowUnresolvedCurvature, ASingleVertexSpikeIsPulledBackNotPushedOut) {
+  const double R = 1.0, r = 0.4;
+  const Mesh torus = test::torus_grid(48, 16, R, r).mesh;
+  const int spike = 0;  // (u, v) = (0, 0): on the outer equator, normal +x
+  const Topology topo = build_topology(torus.F, torus.num_vertices());
+  const double h = mean_edge_length(torus.V, topo);
+  const double diagonal = (torus.V.colwise().maxCoeff() - torus.V.colwise().minCoeff()).norm();
+  const double default_time = std::pow(2 * h / diagonal, 6) / std::pow(std::numbers::pi, 4);
+  const auto offset_after_one_step = [&](double resolution) {
+    Vertices V = torus.V;
+    V(spike, 0) += 0.6 * h;
+    FlowOptions o = options_for(FlowKind::sixth_order);
+    o.curvature_resolution = resolution;
+    o.tau = o.tau_max = default_time / 4;
+    o.max_steps = 1;
+    o.limit_displacement = true;  // a step beyond a quarter edge is clipped, not rejected
+    const FlowReport report = run_flow(V, torus.F, o);
+    EXPECT_EQ(report.accepted_steps, 1);
+    return test::torus_distances(V, R, r)[spike] / h;
+  };
+  const double limited = offset_after_one_step(FlowOptions{}.curvature_resolution);
+  const double unlimited = offset_after_one_step(std::numeric_limits<double>::infinity());
+  std::printf("[spike] torus 48x16, a vertex 0.6 h out: after one step %.3f h (limited), %.3f h (unlimited)\n",
+              limited, unlimited);
+  EXPECT_LT(limited, 0.45);
+  EXPECT_GT(unlimited, 0.6);
+}
+
 // A flow forced to fail must throw NumericalError naming the step and leave V at the last accepted
 // state; the observer sees V after every acceptance, so it can keep that state.
 TEST(FlowFailure, DivergingFlowKeepsLastAcceptedState) {
@@ -348,6 +384,14 @@ TEST(FlowOptionsTest, InvalidOptionsAreRejected) {
     FAIL() << "no exception";
   } catch (const InvalidArgument& e) {
     EXPECT_STREQ(e.what(), "run_flow: tau must be positive");
+  }
+  o = FlowOptions{};
+  o.curvature_resolution = 0;  // ∞ turns the limiter off; 0 would drop the term everywhere
+  try {
+    run_flow(V, m.F, o);
+    FAIL() << "no exception";
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "run_flow: curvature_resolution must be positive");
   }
   EXPECT_EQ(parse_flow_kind("surface_diffusion"), FlowKind::surface_diffusion);
   for (FlowKind k : {FlowKind::sixth_order, FlowKind::willmore, FlowKind::surface_diffusion,

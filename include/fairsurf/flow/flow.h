@@ -3,7 +3,9 @@
 //
 // Every flow moves the free vertices along their fitted normals n (operators.h; outward on a closed
 // counter-clockwise mesh, H = −1/R on a sphere) with a normal velocity V:
-//   sixth_order        V = −EL = −Σ_l EL_l   (energy.h; descends E — the paper prints the ascent +EL)
+//   sixth_order        V = −EL = −Σ_l EL_l   (energy.h; descends E — the paper prints the ascent +EL),
+//                      with part of its term c ∆f limited where the mesh does not resolve the
+//                      curvature (FlowOptions::curvature_resolution)
 //   mean_curvature     V = 2H                (a sphere shrinks)
 //   surface_diffusion  V = −∆H
 //   willmore           V = −(∆H + 2H(H² − K)) (descends ∫ H² dA; a cylinder inflates)
@@ -105,6 +107,16 @@ struct FlowOptions {
   std::vector<std::string> functions{"H"};
   /// Regularization ε = relative_epsilon · κ of singular functions (energy_function.h).
   double relative_epsilon = 1e-3;
+  /// Sixth order, energies of H alone (every f_l with f_K = 0: H, H², absHpH:p): EL's lower-order
+  /// factor c = 2(2H² − K) f_H (energy.h) is scaled by min(1, curvature_resolution / (A_i κ_i²)) in
+  /// the velocity and the Jacobian, κ_i² = 2H_i² − K_i and A_i the vertex area. Where the radius of
+  /// curvature falls below about an edge (A κ² above this), the term −c ∆f is anti-diffusive at the
+  /// mesh's own scale: a single vertex 0.6 edges out of a surface is pushed further out, a quarter
+  /// edge a step, where the flow without it pulls it back (docs/flow.md, "Unresolved curvature").
+  /// Where the curvature is resolved the flow is unchanged, so the limiter vanishes as the mesh is
+  /// refined. The energy E and the descent's gradient do not use it, nor do energies with a K part
+  /// (limited, f = K diverged on a raw scan). Must be positive; ∞ turns the limiter off.
+  double curvature_resolution = 0.5;
   /// κ in the flow's units; 0: curvature_scale() of the input (after normalization), kept fixed
   /// for the whole flow so that energies of different steps are comparable.
   double curvature_scale = 0;
