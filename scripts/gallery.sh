@@ -157,7 +157,7 @@ fi
 end_commands
 if [ "${#scan_runs[@]}" -gt 0 ]; then
   render_row "$images/fig2_scan.png" "$range" "real scan: sixth-order flow with several f, mean curvature flow" input "${scan_runs[@]}"
-  note "Every run relaxes the vertices tangentially and holds back those whose faces would turn over, so no face ends inverted against the scan (the needle triangles near the eye and the ear used to leave spikes). See docs/flow.md, 'Real scans: what fairsurf smooth does'."
+  note "Every run relaxes the vertices tangentially and holds back those whose faces would turn over, so no face ends inverted against the scan (the needle triangles near the eye and the ear used to leave spikes). See docs/flow.md, 'Real scans: what fairsurf smooth does'. The sixth-order runs of f = H and absHpH:0.5 also limit EL's lower-order term where the scan does not resolve the curvature, which used to crumple the ear and raise bumps on the brow (docs/flow.md, 'Unresolved curvature'); f = H + K has a K part and flows unlimited."
   table "$work/input.obj" input "${scan_runs[@]}"
 fi
 
