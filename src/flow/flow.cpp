@@ -155,6 +155,7 @@ void FlowRun::initialize() {
   report_.length_scale = norm_.scale;
 
   problem_.kind = options_.kind_to_run();
+  problem_.curvature_resolution = options_.curvature_resolution;
   problem_.region = &region_;
   problem_.energy_weight.resize(n);
   for (int v = 0; v < n; ++v) problem_.energy_weight[v] = region_.ring[v] >= 0 ? 1.0 : 0.0;
@@ -176,7 +177,6 @@ void FlowRun::initialize() {
     problem_.scale.curvature =
         options_.curvature_scale > 0 ? options_.curvature_scale : curvature_scale(geo.H, geo.K);
     problem_.scale.relative_epsilon = options_.relative_epsilon;
-    problem_.curvature_resolution = options_.curvature_resolution;
     report_.well_posedness = check_well_posedness(problem_.functions, geo.H, geo.K, problem_.scale);
   }
   report_.curvature_scale = problem_.scale.curvature;

@@ -127,21 +127,26 @@ void add_product(const Region& region, const SparseRowMatrix& L, const double* r
   }
 }
 
+// The weight of a lower-order curvature term at vertex i: min(1, resolution / (A κ²)), κ² = 2H² − K,
+// A the vertex area. Below 1 only where the radius of curvature is below about an edge: there a
+// term of H and K alone outweighs the leading one at the mesh's own scale and grows single-vertex
+// spikes (FlowOptions::curvature_resolution).
+double resolved_weight(const SurfaceGeometry& geo, Eigen::Index i, double resolution) {
+  const double unresolved = geo.area[i] * (2 * geo.H[i] * geo.H[i] - geo.K[i]);
+  return unresolved > resolution ? resolution / unresolved : 1.0;
+}
+
 // The part of EL's factor c (euler_lagrange_factor) of `values` that the flow drops at vertex i
-// where the mesh does not resolve the curvature and the energy is a function of H alone there (every
-// term's f_K is 0): of c = 2(2H² − K) f_H, the fraction 1 − resolution / (A κ²), κ² = 2H² − K, where
-// A κ² exceeds `resolution`; 0 elsewhere. V = −EL holds that part as +2(2H² − K) f_H ∆f, a diffusion
-// of f backwards in time; where the radius of curvature is about an edge it outweighs the leading
-// term at the mesh's own scale and grows single-vertex spikes (FlowOptions::curvature_resolution).
-// Energies with a K part are left alone: limited, f = K diverged and f = {H, K} failed.
+// where the energy is a function of H alone there (every term's f_K is 0): c = 2(2H² − K) f_H times
+// 1 − resolved_weight. V = −EL holds that part as +2(2H² − K) f_H ∆f, a diffusion of f backwards in
+// time. Energies with a K part are left alone: limited, f = K diverged and f = {H, K} failed.
 double dropped_factor(const SurfaceGeometry& geo, const std::vector<EnergyTerms>& terms,
                       const EnergyValues& values, Eigen::Index i, double resolution) {
-  const double squared_curvature = 2 * geo.H[i] * geo.H[i] - geo.K[i];
-  const double unresolved = geo.area[i] * squared_curvature;
-  if (!(unresolved > resolution)) return 0.0;
+  const double weight = resolved_weight(geo, i, resolution);
+  if (weight == 1.0) return 0.0;
   for (const EnergyTerms& t : terms)
     if (t.values.f_K[i] != 0) return 0.0;
-  return (1 - resolution / unresolved) * 2 * squared_curvature * values.f_H[i];
+  return (1 - weight) * 2 * (2 * geo.H[i] * geo.H[i] - geo.K[i]) * values.f_H[i];
 }
 
 // J += Σ_l P′_l Q_l (free rows and columns), P′ = R L∆ − Σ_c diag(w_c) G_c,
@@ -224,7 +229,9 @@ void evaluate_flow_terms(const FlowProblem& problem, FlowState& state) {
       break;
     case FlowKind::willmore:
       V.noalias() = -(state.ops.laplace * geo.H);
-      V.array() -= 2.0 * H * (H * H - geo.K.array());
+      // The cubic term, explicit, weighed by resolved_weight: at a spike it pushes the vertex out.
+      for (Eigen::Index i = 0; i < V.size(); ++i)
+        V[i] -= resolved_weight(geo, i, problem.curvature_resolution) * 2.0 * H[i] * (H[i] * H[i] - geo.K[i]);
       state.energy = weight.dot((geo.area.array() * H * H).matrix());
       break;
   }

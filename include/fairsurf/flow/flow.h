@@ -8,7 +8,8 @@
 //                      curvature (FlowOptions::curvature_resolution)
 //   mean_curvature     V = 2H                (a sphere shrinks)
 //   surface_diffusion  V = −∆H
-//   willmore           V = −(∆H + 2H(H² − K)) (descends ∫ H² dA; a cylinder inflates)
+//   willmore           V = −(∆H + 2H(H² − K)) (descends ∫ H² dA; a cylinder inflates), its cubic
+//                      term limited likewise
 // The step (method.md §5). Freeze fits, stencils, n, f_H, f_K, c and w at x^k, linearize
 // V^{k+1} ≈ V^k + J d and solve for the normal displacement d of the free vertices F:
 //   (I − τ J_FF) d_F = τ V_F,  d = 0 on fixed vertices,  x^{k+1} = x^k + d ∘ n^k, with
@@ -107,15 +108,16 @@ struct FlowOptions {
   std::vector<std::string> functions{"H"};
   /// Regularization ε = relative_epsilon · κ of singular functions (energy_function.h).
   double relative_epsilon = 1e-3;
-  /// Sixth order, energies of H alone (every f_l with f_K = 0: H, H², absHpH:p): EL's lower-order
-  /// factor c = 2(2H² − K) f_H (energy.h) is scaled by min(1, curvature_resolution / (A_i κ_i²)) in
-  /// the velocity and the Jacobian, κ_i² = 2H_i² − K_i and A_i the vertex area. Where the radius of
-  /// curvature falls below about an edge (A κ² above this), the term −c ∆f is anti-diffusive at the
-  /// mesh's own scale: a single vertex 0.6 edges out of a surface is pushed further out, a quarter
-  /// edge a step, where the flow without it pulls it back (docs/flow.md, "Unresolved curvature").
-  /// Where the curvature is resolved the flow is unchanged, so the limiter vanishes as the mesh is
-  /// refined. The energy E and the descent's gradient do not use it, nor do energies with a K part
-  /// (limited, f = K diverged on a raw scan). Must be positive; ∞ turns the limiter off.
+  /// The flows' lower-order curvature term is weighed by w_i = min(1, curvature_resolution /
+  /// (A_i κ_i²)), κ_i² = 2H_i² − K_i and A_i the vertex area: sixth order, energies of H alone
+  /// (every f_l with f_K = 0: H, H², absHpH:p), EL's factor c = 2(2H² − K) f_H (energy.h) in the
+  /// velocity and the Jacobian; Willmore, the cubic term 2H(H² − K). Where the radius of curvature
+  /// falls below about an edge (A κ² above this), that term outweighs the leading one at the mesh's
+  /// own scale and pushes a single raised vertex further out, a quarter edge a step (sixth order
+  /// from 0.6 edges, Willmore from about 1.2), where the flow without it pulls it back (docs/flow.md,
+  /// "Unresolved curvature"). Where the curvature is resolved w = 1, so the limiter vanishes as the
+  /// mesh is refined. The energy E and the descent's gradient do not use it, nor do energies with a
+  /// K part (limited, f = K diverged on a raw scan). Must be positive; ∞ turns the limiter off.
   double curvature_resolution = 0.5;
   /// κ in the flow's units; 0: curvature_scale() of the input (after normalization), kept fixed
   /// for the whole flow so that energies of different steps are comparable.
