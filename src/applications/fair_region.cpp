@@ -221,6 +221,8 @@ void fair_submesh(Submesh& sub, const Topology& local, const Region& region, con
   harmonic.iterations = std::max(1, options.harmonic_start_iterations);
   harmonic.tolerance = options.harmonic_start_tolerance;
   HeldOutChoice choice = choose_by_held_out(sub, local, options, report, refined);
+  report.held_out_linear = options.method == FairMethod::flow &&
+                           (choice == HeldOutChoice::linear || choice == HeldOutChoice::refined_linear);
   if (choice == HeldOutChoice::refined_linear) {
     HarmonicOptions once = harmonic;
     once.iterations = 1;

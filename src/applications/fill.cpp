@@ -282,13 +282,14 @@ std::string crossing_reason(const std::vector<FaceIntersection>& crossings, int 
   return reason;
 }
 
-// The patch's free vertices and `rings` rings around them, cut out of the patched mesh (fair_region
-// would cut out the same rings): the cost of checking the mesh stays in proportion to the hole, and
-// a defect far away (a pinched border elsewhere) does not concern this hole. `local`: the
-// connectivity of sub.mesh, derived from the patched mesh's once: validation, fairing, its held-out
-// trials and the continuity measures read it.
-void cut_out_neighbourhood(const InitialPatch& patch, int rings, Submesh& sub, Topology& local) {
-  sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, patch.topology, patch.free_vertices, rings);
+// `free` (the patch's free vertices, or one hole's) and `rings` rings around them, cut out of the
+// patched mesh (fair_region would cut out the same rings): the cost of checking the mesh stays in
+// proportion to the hole, and a defect far away (a pinched border elsewhere) does not concern this
+// hole. `local`: the connectivity of sub.mesh, derived from the patched mesh's once: validation,
+// fairing, its held-out trials and the continuity measures read it.
+void cut_out_neighbourhood(const InitialPatch& patch, const std::vector<int>& free, int rings, Submesh& sub,
+                           Topology& local) {
+  sub = extract_neighbourhood(patch.mesh.V, patch.mesh.F, patch.topology, free, rings);
   local = derive_topology(patch.topology, sub.mesh.F, sub.to_global);
 }
 
@@ -343,6 +344,68 @@ void report_fairing(const FairRegionReport& fairing, bool flowed, HoleReport& r)
   if (fairing.method == FairMethod::flow) r.well_posedness = fairing.flow.well_posedness;
 }
 
+// One hole of a joint group faired alone on the patched mesh (refair_each_hole): empty where its
+// flow is delivered, at the group's continuity `supported`, steady and clear of the mesh (its free
+// vertices then hold it in patch.mesh.V), else why not (patch.mesh.V may then hold anything there).
+std::string fair_hole_alone(InitialPatch& patch, const std::vector<int>& free, const std::vector<int>& faces,
+                            Continuity supported, const FairRegionOptions& fairing_options, const FillOptions& options,
+                            const FlowObserver& observer, FairRegionReport& alone) {
+  try {
+    Submesh sub;
+    Topology local;
+    cut_out_neighbourhood(patch, free, options.submesh_rings, sub, local);
+    alone = fair_detail::fair_checked_mesh(sub.mesh, local, sub.free_local, fairing_options, observer);
+    if (alone.linear) return alone.note.empty() ? "its linear solution was kept" : alone.note;
+    if (alone.supported != supported)
+      return "the mesh around it supports " + std::string(to_string(alone.supported)) + " only";
+    if (alone.flow.stop_reason != FlowStopReason::steady)
+      return std::string("the ") + to_string(alone.flow_kind) + " flow " + unsettled_reason(alone.flow);
+    write_back_free(sub, patch.mesh.V);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  if (options.check_intersections && !find_face_intersections(patch.mesh.V, patch.mesh.F, faces, 1).empty())
+    return "its flow's patch crosses the mesh";
+  return "";
+}
+
+// Each hole of a joint group faired again on its own (fill_group), where the group's flow ran but
+// was not kept (it folded against its start, did not settle or threw): a check over the whole group
+// that one hole's flow may have failed for all (a row of windows, one of which folds, holds back the
+// rest). Not where the held-out rings chose the linear solution: that verdict weighs the group as a
+// whole, and one hole's own rings, which run over its neighbours' linear patches, judge worse. The
+// group's other patches stay as the group left them, so the hole's fixed rings are complete; it
+// keeps the flow where that fairing delivers one at the group's continuity, steady and clear of the
+// mesh, and its linear solution otherwise, untouched (docs/fill.md, "Joint holes, one by one").
+void refair_each_hole(InitialPatch& patch, const std::vector<int>& group, const std::vector<std::vector<int>>& free,
+                      const std::vector<std::vector<int>>& faces, const FairRegionOptions& fairing_options,
+                      const FillOptions& options, const FlowObserver& observer, std::vector<HoleReport>& reports) {
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    if (free[k].empty()) continue;
+    HoleReport& r = reports[group[k]];
+    const std::string order = std::to_string(static_cast<int>(r.supported) + 1);
+    Vertices kept(free[k].size(), 3);
+    for (std::size_t i = 0; i < free[k].size(); ++i)
+      kept.row(static_cast<Eigen::Index>(i)) = patch.mesh.V.row(free[k][i]);
+    FairRegionReport alone;
+    const std::string lost = fair_hole_alone(patch, free[k], faces[k], r.supported, fairing_options, options,
+                                             observer, alone);
+    const std::string group_note = r.note;
+    if (!lost.empty()) {
+      for (std::size_t i = 0; i < free[k].size(); ++i)
+        patch.mesh.V.row(free[k][i]) = kept.row(static_cast<Eigen::Index>(i));
+      r.note = group_note + "; faired again alone, the group's other patches held as filled, it kept the linear ∆" +
+               order + " solution: " + lost;
+      continue;
+    }
+    r.note.clear();
+    report_fairing(alone, true, r);
+    r.continuity = alone.continuity;
+    r.note = "the joint fill kept the linear ∆" + order + " solution (" + group_note +
+             "); faired again alone, the group's other patches held as filled" + (r.note.empty() ? "" : ": " + r.note);
+  }
+}
+
 // Whether a rejected patch crosses the mesh, and if so whether a flow's result does.
 enum class PatchCrossing { none, flow, other };
 
@@ -377,7 +440,7 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
   const FlowObserver step_observer = [&](const StepRecord& r) {
     if (observer) observer(group, r);
   };
-  if (!patch.free_vertices.empty()) cut_out_neighbourhood(patch, options.submesh_rings, sub, local);
+  if (!patch.free_vertices.empty()) cut_out_neighbourhood(patch, patch.free_vertices, options.submesh_rings, sub, local);
   const FairRegionReport fairing = unfaired ? unfaired_report()
                                             : fair_patch(patch, fairing_options, step_observer, sub, local, whole);
   if (!patch.free_vertices.empty() && !unfaired) {
@@ -400,21 +463,25 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
 
   const PatchOwnership own = patch_ownership(patch, mesh.num_vertices(), loops, group);
   const bool flowed = !fairing.linear && !patch.free_vertices.empty();
-  for (int h : group) {
+  std::vector<std::vector<int>> hole_free(group.size()), hole_faces(group.size());
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    const int h = group[k];
     HoleReport& r = reports[h];
-    std::vector<int> free;
+    std::vector<int>& free = hole_free[k];
     for (std::size_t i = 0; i < own.vertex_hole.size(); ++i)
       if (own.vertex_hole[i] == h) free.push_back(mesh.num_vertices() + static_cast<int>(i));
+    for (std::size_t f = 0; f < own.face_hole.size(); ++f)
+      if (own.face_hole[f] == h) hole_faces[k].push_back(patch.first_patch_face + static_cast<int>(f));
     r.vertices_added = static_cast<int>(free.size());
-    r.faces_added = static_cast<int>(std::count(own.face_hole.begin(), own.face_hole.end(), h));
+    r.faces_added = static_cast<int>(hole_faces[k].size());
     report_fairing(fairing, flowed, r);
     if (!free.empty()) {
       // The fairing measured the same positions, faces and free set when it ran on `sub` itself
       // (as for a group of one hole): not measured twice.
-      const std::vector<int> hole_free = to_local(sub, free);
-      r.continuity = whole && hole_free == sub.free_local
+      const std::vector<int> hole_free_local = to_local(sub, free);
+      r.continuity = whole && hole_free_local == sub.free_local
                          ? fairing.continuity
-                         : measure_continuity(sub.mesh.V, sub.mesh.F, local, hole_free);
+                         : measure_continuity(sub.mesh.V, sub.mesh.F, local, hole_free_local);
     }
     if (free.empty()) {  // nothing was faired: the patch is the triangulation of the loop
       r.supported = Continuity::G0;
@@ -423,6 +490,9 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
       r.note = "the patch has no interior vertex: the loop's triangulation alone, continuous in position only";
     }
   }
+  if (group.size() > 1 && !unfaired && fairing.linear && !fairing.held_out_linear &&
+      fairing_options.method == FairMethod::flow)
+    refair_each_hole(patch, group, hole_free, hole_faces, fairing_options, options, step_observer, reports);
   mesh.V = std::move(patch.mesh.V);
   mesh.F = std::move(patch.mesh.F);
   mesh.vertex_scalars.clear();

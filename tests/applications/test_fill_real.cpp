@@ -141,6 +141,38 @@ INSTANTIATE_TEST_SUITE_P(Data, RealHoles,
                                            RealHole{"blub.obj", {0.176282, 0.148983, -0.699856}, 0.307912},
                                            RealHole{"blub.obj", {-0.565203, -0.333718, 0.0970017}, 0.153956}));
 
+// data/airplane_holes.obj: two rows of windows whose fixed rings overlap, filled jointly (holes 0,
+// 2, ..., 24 and 1, 3, ..., 25). The sixth-order flow folds at some windows of each row, and the
+// group's fold check, which reads the whole row, kept the linear floor for all of them: no window
+// was G2. Each window of a joint group is now faired again alone, the row's other patches held as
+// filled, and keeps the flow where its own checks pass, as a lone window would.
+TEST(RealHoleJointGroup, EachHoleOfAJointGroupGetsItsOwnChoice) {
+  const Mesh input = read_mesh(test::data_path("airplane_holes.obj"));
+  Mesh filled = input;
+  const FillOptions options;
+  const FillReport report = fill_holes(filled, options);
+  ASSERT_EQ(report.filled, 27);
+  EXPECT_TRUE(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).empty());
+  int joint = 0, g2 = 0;
+  for (const HoleReport& hole : report.holes) {
+    if (hole.filled_with.empty() || hole.vertices_added == 0) continue;
+    ++joint;
+    EXPECT_NE(hole.note.find("faired again alone"), std::string::npos) << hole.index << ": " << hole.note;
+    if (hole.linear) continue;
+    ++g2;
+    EXPECT_EQ(hole.supported, Continuity::G2) << hole.note;
+    EXPECT_EQ(hole.note.rfind("the joint fill kept the linear ∆3 solution", 0), 0u) << hole.note;
+    // Its own held-out choice and fold check chose the flow.
+    const double flow = std::min(hole.held_out_flow_error, hole.held_out_two_ring_flow_error);
+    EXPECT_LE(flow, options.held_out_margin * hole.held_out_linear_error) << hole.index;
+    EXPECT_LT(hole.continuity.max_normal_angle, 10 * kDegree) << hole.index;
+  }
+  std::printf("[joint] airplane_holes: %d of %d windows in joint groups G2\n", g2, joint);
+  EXPECT_EQ(joint, 26);
+  EXPECT_GE(g2, 6);
+  EXPECT_LT(g2, joint);  // the windows whose own flow folds or predicts worse keep the floor
+}
+
 // blub's 90-edge hole across the edge of its tail fin (bench_real_holes' worst clean row, 6.7× CGAL's
 // distance): the membrane flattens the patch against the fin's two sheets, and both the ∆³ solution
 // re-evaluated from it and the flow stay far from the fin's edge. One ∆³ solve from the patch as

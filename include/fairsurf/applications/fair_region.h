@@ -130,6 +130,10 @@ struct FairRegionReport {
   /// flows start; they are then not tried (their errors NaN). The linear method (method = harmonic,
   /// with held_out_rings) weighs the same two linear solutions and no flow.
   bool refined_start = false;
+  /// The held-out rings chose a linear solution (refined_start's or the re-evaluated one) over the
+  /// flow, which was then not run on the region; where the flow ran and was not kept (it did not
+  /// settle, threw or folded against its start), false.
+  bool held_out_linear = false;
   /// The fairing first reached crossed the mesh, and the linear solution delivered is the first
   /// that does not, possibly at a lower continuity than the rings support (`supported` is then
   /// that lower one; `note` says so).
