@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <limits>
 #include <string>
@@ -40,8 +41,9 @@ struct Args {
 CLI::Validator positive() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        double value = 0;
-        if (CLI::detail::lexical_cast(text, value) && value > 0) return "";
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (end != text.c_str() && *end == '\0' && value > 0) return "";
         return "must be a number > 0, got " + text;
       },
       "POSITIVE");
