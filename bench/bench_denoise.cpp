@@ -10,11 +10,13 @@
 //   --time-scale 97.41 (π⁴) runs the sixth-order flow to the earlier default time (2h̄)⁶;
 //   --tau-max F bounds the step τ by F times the end time (the CLI's bound: FlowOptions::tau_max).
 #include <fairsurf/applications/smooth.h>
-#include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/topology.h>
+
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <limits>
 #include <string>
@@ -34,23 +36,31 @@ struct Args {
   double tau_max_fraction = 0;  ///< > 0: the largest step, as a fraction of the end time
 };
 
-Args parse_args(int argc, char** argv) {
-  Args args;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (i + 1 >= argc) throw InvalidArgument("bench_denoise: " + a + " needs a value");
-    const std::string value = argv[++i];
-    if (a == "--mesh") args.mesh = value;
-    else if (a == "--sigma") args.sigma = std::stod(value);
-    else if (a == "--time-scale") args.time_scale = std::stod(value);
-    else if (a == "--tau-max") args.tau_max_fraction = std::stod(value);
-    else
-      throw InvalidArgument("bench_denoise: unknown argument " + a +
-                            " (--mesh NAME, --sigma S, --time-scale S, --tau-max F)");
-  }
-  if (!(args.sigma > 0) || !(args.time_scale > 0))
-    throw InvalidArgument("bench_denoise: --sigma and --time-scale must be positive");
-  return args;
+// --sigma and --time-scale: a number > 0, NaN refused. Not CLI::PositiveNumber: it lets NaN through,
+// and its refusal prints DBL_MAX's 309 digits.
+CLI::Validator positive() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (end != text.c_str() && *end == '\0' && value > 0) return "";
+        return "must be a number > 0, got " + text;
+      },
+      "POSITIVE");
+}
+
+void add_options(CLI::App& app, Args& args) {
+  app.add_option("--mesh", args.mesh, "Only the bundled meshes whose file name contains NAME")->type_name("NAME");
+  app.add_option("--sigma", args.sigma, "Noise σ in mean edge lengths h̄")
+      ->type_name("S")
+      ->check(positive())
+      ->capture_default_str();
+  app.add_option("--time-scale", args.time_scale, "Multiplies each flow's default end time")
+      ->type_name("S")
+      ->check(positive())
+      ->capture_default_str();
+  app.add_option("--tau-max", args.tau_max_fraction, "Bound the step τ by F times the end time (<= 0: no bound)")
+      ->type_name("F");
 }
 
 // For each vertex, the clean faces within 3 rings of it (the search set of `distances`). The rings
@@ -133,8 +143,13 @@ void run_mesh(const bench::ClosedMesh& m, const Args& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  CLI::App app{"How close `fairsurf smooth` brings a noisy copy of a real shape back to it", "bench_denoise"};
+  // CLI11 refuses a repeated option; the benches keep its last value, so that a run can append an override.
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  Args args;
+  add_options(app, args);
+  CLI11_PARSE(app, argc, argv);
   try {
-    const Args args = parse_args(argc, argv);
     for (const bench::ClosedMesh& m : bench::read_bundled_meshes(args.mesh)) run_mesh(m, args);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_denoise: %s\n", e.what());

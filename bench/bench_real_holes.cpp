@@ -10,9 +10,10 @@
 #include <fairsurf/applications/fill.h>
 #include <fairsurf/geometry/continuity_measure.h>
 #include <fairsurf/io/io.h>
-#include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/region_selection.h>
 #include <fairsurf/mesh/topology.h>
+
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -20,6 +21,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -590,40 +592,38 @@ std::string blend_section(const std::vector<Loaded>& meshes, bool quick, bool al
 // ---------------------------------------------------------------------------------------------
 // Main
 
-Args parse_args(int argc, char** argv) {
-  Args args;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw InvalidArgument("bench_real_holes: " + a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--section") args.section = value();
-    else if (a == "--mesh") args.mesh = value();
-    else if (a == "--mesh-file") args.mesh_files.push_back(value());
-    else if (a == "--csv") args.csv = value();
-    else if (a == "--random") args.random = std::stoi(value());
-    else if (a == "--seed") args.seed = std::stoull(value());
-    else if (a == "--no-cgal") args.cgal = false;
-    else if (a == "--quick") args.quick = true;
-    else if (a == "--all-slabs") args.all_slabs = true;
-    else throw InvalidArgument("bench_real_holes: unknown argument " + a +
-                               " (--section fill|fair|blend|all, --mesh NAME, --mesh-file PATH, --no-cgal, --quick, "
-                               "--random N, --seed S, --all-slabs, --csv FILE)");
-  }
-  if (args.random < 0) throw InvalidArgument("bench_real_holes: --random must be >= 0");
-  if (!args.mesh.empty() && !args.mesh_files.empty())
-    throw InvalidArgument("bench_real_holes: --mesh picks a bundled mesh, --mesh-file replaces them: give one");
-  if (args.section != "fill" && args.section != "fair" && args.section != "blend" && args.section != "all")
-    throw InvalidArgument("bench_real_holes: --section must be fill, fair, blend or all, got " + args.section);
-  return args;
+void add_options(CLI::App& app, Args& args) {
+  app.add_option("--section", args.section, "The section to run")
+      ->check(CLI::IsMember({"fill", "fair", "blend", "all"}))
+      ->capture_default_str();
+  CLI::Option* mesh =
+      app.add_option("--mesh", args.mesh, "Only the bundled meshes whose file name contains NAME")->type_name("NAME");
+  app.add_option("--mesh-file", args.mesh_files, "A closed mesh to cut instead of the bundled ones (repeatable)")
+      ->type_name("PATH")
+      ->allow_extra_args(false)
+      ->excludes(mesh);
+  app.add_flag_callback("--no-cgal", [&args] { args.cgal = false; }, "Leave out the CGAL columns");
+  app.add_flag("--quick", args.quick, "One ball centre and one blend plane a mesh");
+  // Not CLI::NonNegativeNumber: its refusal prints DBL_MAX's 309 digits.
+  app.add_option("--random", args.random, "Draw N ball centres a mesh at random instead of the fixed ones (0: fixed)")
+      ->type_name("N")
+      ->check(CLI::Range(0, std::numeric_limits<int>::max()).description(">= 0"));
+  app.add_option("--seed", args.seed, "Seed of the --random draws")->type_name("S")->capture_default_str();
+  app.add_flag("--all-slabs", args.all_slabs, "Blend every plane that qualifies instead of the fixed cases");
+  app.add_option("--csv", args.csv, "Write every row of every section to FILE")->type_name("FILE");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  CLI::App app{"fairsurf's fill, fair and blend on holes cut out of clean closed meshes (docs/fill.md)",
+               "bench_real_holes"};
+  // CLI11 refuses a repeated option; the benches keep its last value, so that a run can append an override.
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  Args args;
+  add_options(app, args);
+  CLI11_PARSE(app, argc, argv);
   try {
-    Args args = parse_args(argc, argv);
 #ifndef FAIRSURF_BENCH_CGAL
     if (args.cgal) std::printf("CGAL was not found at configure time: no CGAL columns\n");
     args.cgal = false;

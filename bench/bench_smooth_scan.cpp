@@ -11,6 +11,8 @@
 #include <fairsurf/mesh/mesh_quality.h>
 #include <fairsurf/mesh/topology.h>
 
+#include <CLI/CLI.hpp>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -60,15 +62,17 @@ void run_scan(const std::string& path, double relax, const std::string& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  CLI::App app{"`fairsurf smooth` on the raw scans of data/ with the CLI's options", "bench_smooth_scan"};
+  // CLI11 refuses a repeated option; the benches keep its last value, so that a run can append an override.
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   std::vector<std::string> scans;
   double relax = -1;
   std::string out;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--relax" && i + 1 < argc) relax = std::atof(argv[++i]);
-    else if (arg == "--out" && i + 1 < argc) out = argv[++i];
-    else scans.push_back(arg);
-  }
+  app.add_option("scans", scans, "The scans to run (default: demosthenes_scan_lowres.obj and hammer_rawscan.obj)")
+      ->type_name("PATH");
+  app.add_option("--relax", relax, "Tangential relaxation weight W (0 turns it off; < 0: the CLI's)")->type_name("W");
+  app.add_option("--out", out, "Write the result to PATH")->type_name("PATH");
+  CLI11_PARSE(app, argc, argv);
   if (scans.empty())
     scans = {std::string(FAIRSURF_DATA_DIR) + "/demosthenes_scan_lowres.obj",
              std::string(FAIRSURF_DATA_DIR) + "/hammer_rawscan.obj"};

@@ -19,10 +19,13 @@
 #include <fairsurf/mesh/topology.h>
 #include <fairsurf/mesh/validate.h>
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <set>
@@ -48,29 +51,24 @@ struct Args {
   std::uint64_t seed = 1;               // of the first trial; trial t draws from seed + t
 };
 
-Args parse_args(int argc, char** argv) {
-  Args args;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw InvalidArgument("bench_stress: " + a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--section") args.section = value();
-    else if (a == "--mesh") args.mesh = value();
-    else if (a == "--mesh-file") args.mesh_files.push_back(value());
-    else if (a == "--trials") args.trials = std::stoi(value());
-    else if (a == "--seed") args.seed = std::stoull(value());
-    else
-      throw InvalidArgument("bench_stress: unknown argument " + a +
-                            " (--section fill|fair|blend|all, --mesh NAME, --mesh-file PATH, --trials N, --seed S)");
-  }
-  if (args.trials < 1) throw InvalidArgument("bench_stress: --trials must be >= 1");
-  if (!args.mesh.empty() && !args.mesh_files.empty())
-    throw InvalidArgument("bench_stress: --mesh and --mesh-file exclude each other");
-  if (args.section != "fill" && args.section != "fair" && args.section != "blend" && args.section != "all")
-    throw InvalidArgument("bench_stress: --section must be fill, fair, blend or all, got " + args.section);
-  return args;
+void add_options(CLI::App& app, Args& args) {
+  app.add_option("--section", args.section, "The section to run")
+      ->check(CLI::IsMember({"fill", "fair", "blend", "all"}))
+      ->capture_default_str();
+  CLI::Option* mesh =
+      app.add_option("--mesh", args.mesh, "Only the bundled meshes whose file name contains NAME")->type_name("NAME");
+  app.add_option("--mesh-file", args.mesh_files, "A closed mesh to use instead of the bundled ones (repeatable)")
+      ->type_name("PATH")
+      ->allow_extra_args(false)
+      ->excludes(mesh);
+  // Not CLI::PositiveNumber: its refusal prints DBL_MAX's 309 digits.
+  app.add_option("--trials", args.trials, "Trials per mesh and section")
+      ->type_name("N")
+      ->check(CLI::Range(1, std::numeric_limits<int>::max()).description(">= 1"))
+      ->capture_default_str();
+  app.add_option("--seed", args.seed, "Fill and fair trial t draw from S + t, a mesh's blend slabs from S")
+      ->type_name("S")
+      ->capture_default_str();
 }
 
 // 1–3 balls, each centred at a vertex of `mesh` as cut so far (`cut`: cut each ball out, else keep
@@ -295,8 +293,13 @@ std::string blend_summary(const BlendTally& t) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  CLI::App app{"Fill, fair and blend on cases drawn at random on closed meshes (docs/fill.md)", "bench_stress"};
+  // CLI11 refuses a repeated option; the benches keep its last value, so that a run can append an override.
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  Args args;
+  add_options(app, args);
+  CLI11_PARSE(app, argc, argv);
   try {
-    const Args args = parse_args(argc, argv);
     std::vector<ClosedMesh> meshes;
     if (args.mesh_files.empty()) meshes = bench::read_bundled_meshes(args.mesh);
     for (const std::string& file : args.mesh_files) meshes.push_back(bench::read_closed_mesh(file));
