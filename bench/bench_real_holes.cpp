@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "case_options.h"
 #include "real_holes.h"
 #include "real_holes_cases.h"
 #include "real_holes_rows.h"
@@ -593,15 +594,7 @@ std::string blend_section(const std::vector<Loaded>& meshes, bool quick, bool al
 // Main
 
 void add_options(CLI::App& app, Args& args) {
-  app.add_option("--section", args.section, "The section to run")
-      ->check(CLI::IsMember({"fill", "fair", "blend", "all"}))
-      ->capture_default_str();
-  CLI::Option* mesh =
-      app.add_option("--mesh", args.mesh, "Only the bundled meshes whose file name contains NAME")->type_name("NAME");
-  app.add_option("--mesh-file", args.mesh_files, "A closed mesh to cut instead of the bundled ones (repeatable)")
-      ->type_name("PATH")
-      ->allow_extra_args(false)
-      ->excludes(mesh);
+  bench::add_case_options(app, args.section, args.mesh, args.mesh_files);
   app.add_flag_callback("--no-cgal", [&args] { args.cgal = false; }, "Leave out the CGAL columns");
   app.add_flag("--quick", args.quick, "One ball centre and one blend plane a mesh");
   // Not CLI::NonNegativeNumber: its refusal prints DBL_MAX's 309 digits.

@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "case_options.h"
 #include "real_holes.h"
 #include "real_holes_cases.h"
 
@@ -52,15 +53,7 @@ struct Args {
 };
 
 void add_options(CLI::App& app, Args& args) {
-  app.add_option("--section", args.section, "The section to run")
-      ->check(CLI::IsMember({"fill", "fair", "blend", "all"}))
-      ->capture_default_str();
-  CLI::Option* mesh =
-      app.add_option("--mesh", args.mesh, "Only the bundled meshes whose file name contains NAME")->type_name("NAME");
-  app.add_option("--mesh-file", args.mesh_files, "A closed mesh to use instead of the bundled ones (repeatable)")
-      ->type_name("PATH")
-      ->allow_extra_args(false)
-      ->excludes(mesh);
+  bench::add_case_options(app, args.section, args.mesh, args.mesh_files);
   // Not CLI::PositiveNumber: its refusal prints DBL_MAX's 309 digits.
   app.add_option("--trials", args.trials, "Trials per mesh and section")
       ->type_name("N")
