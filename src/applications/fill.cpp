@@ -345,8 +345,9 @@ void report_fairing(const FairRegionReport& fairing, bool flowed, HoleReport& r)
 }
 
 // One hole of a joint group faired alone on the patched mesh (refair_each_hole): empty where its
-// flow is delivered, at the group's continuity `supported`, steady and clear of the mesh (its free
-// vertices then hold it in patch.mesh.V), else why not (patch.mesh.V may then hold anything there).
+// flow is delivered, at the group's continuity `supported` or above, steady and clear of the mesh
+// (its free vertices then hold it in patch.mesh.V), else why not (patch.mesh.V may then hold
+// anything there).
 std::string fair_hole_alone(InitialPatch& patch, const std::vector<int>& free, const std::vector<int>& faces,
                             Continuity supported, const FairRegionOptions& fairing_options, const FillOptions& options,
                             const FlowObserver& observer, FairRegionReport& alone) {
@@ -356,7 +357,7 @@ std::string fair_hole_alone(InitialPatch& patch, const std::vector<int>& free, c
     cut_out_neighbourhood(patch, free, options.submesh_rings, sub, local);
     alone = fair_detail::fair_checked_mesh(sub.mesh, local, sub.free_local, fairing_options, observer);
     if (alone.linear) return alone.note.empty() ? "its linear solution was kept" : alone.note;
-    if (alone.supported != supported)
+    if (alone.supported < supported)
       return "the mesh around it supports " + std::string(to_string(alone.supported)) + " only";
     if (alone.flow.stop_reason != FlowStopReason::steady)
       return std::string("the ") + to_string(alone.flow_kind) + " flow " + unsettled_reason(alone.flow);
@@ -375,8 +376,9 @@ std::string fair_hole_alone(InitialPatch& patch, const std::vector<int>& free, c
 // rest). Not where the held-out rings chose the linear solution: that verdict weighs the group as a
 // whole, and one hole's own rings, which run over its neighbours' linear patches, judge worse. The
 // group's other patches stay as the group left them, so the hole's fixed rings are complete; it
-// keeps the flow where that fairing delivers one at the group's continuity, steady and clear of the
-// mesh, and its linear solution otherwise, untouched (docs/fill.md, "Joint holes, one by one").
+// keeps the flow where that fairing delivers one at the group's continuity or above, steady and
+// clear of the mesh, and its linear solution otherwise, untouched (docs/fill.md, "Joint holes, one
+// by one").
 void refair_each_hole(InitialPatch& patch, const std::vector<int>& group, const std::vector<std::vector<int>>& free,
                       const std::vector<std::vector<int>>& faces, const FairRegionOptions& fairing_options,
                       const FillOptions& options, const FlowObserver& observer, std::vector<HoleReport>& reports) {
