@@ -442,7 +442,8 @@ std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::
   const FlowObserver step_observer = [&](const StepRecord& r) {
     if (observer) observer(group, r);
   };
-  if (!patch.free_vertices.empty()) cut_out_neighbourhood(patch, patch.free_vertices, options.submesh_rings, sub, local);
+  if (!patch.free_vertices.empty())
+    cut_out_neighbourhood(patch, patch.free_vertices, options.submesh_rings, sub, local);
   const FairRegionReport fairing = unfaired ? unfaired_report()
                                             : fair_patch(patch, fairing_options, step_observer, sub, local, whole);
   if (!patch.free_vertices.empty() && !unfaired) {
