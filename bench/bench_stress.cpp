@@ -190,7 +190,29 @@ std::string fill_summary(const FillTally& t) {
 
 struct FairTally {
   int regions = 0, errors = 0, not_steady = 0, g2 = 0, crossing = 0;
+  int parts = 0, g2_parts = 0;  ///< FairRegionReport::parts (a region of one part counts as one)
 };
+
+bool steady_g2(const FairRegionReport& r) {
+  const bool steady = r.linear || r.flow.stop_reason == FlowStopReason::steady;
+  return steady && !r.linear && r.supported == Continuity::G2;
+}
+
+// " [parts: G2, C2 (linear)]" for a region faired part by part; counts its parts into `tally`.
+std::string parts_text(const FairRegionReport& r, FairTally& tally) {
+  if (r.parts.empty()) {
+    ++tally.parts;
+    tally.g2_parts += steady_g2(r);
+    return "";
+  }
+  std::string text;
+  for (const FairRegionReport& part : r.parts) {
+    ++tally.parts;
+    tally.g2_parts += steady_g2(part);
+    text += (text.empty() ? " [parts: " : ", ") + delivered_label(part.supported, part.linear);
+  }
+  return text + "]";
+}
 
 void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, FairTally& tally) {
   Mesh mesh = m.mesh;
@@ -213,10 +235,10 @@ void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, FairTally& 
     const bool crossing = find_face_intersections(faired.V, faired.F, faces, 0).size() >
                           find_face_intersections(mesh.V, mesh.F, faces, 0).size();
     tally.not_steady += !steady;
-    tally.g2 += steady && !r.linear && r.supported == Continuity::G2;
+    tally.g2 += steady_g2(r);
     tally.crossing += crossing;
-    std::printf("%s%s, %.2f s%s\n", delivered_label(r.supported, r.linear).c_str(), steady ? "" : ", NOT STEADY",
-                r.seconds, crossing ? ", OUTPUT CROSSES" : "");
+    std::printf("%s%s%s, %.2f s%s\n", delivered_label(r.supported, r.linear).c_str(), parts_text(r, tally).c_str(),
+                steady ? "" : ", NOT STEADY", r.seconds, crossing ? ", OUTPUT CROSSES" : "");
   } catch (const std::exception& e) {
     ++tally.errors;
     std::printf("error: %s\n", e.what());
@@ -225,8 +247,9 @@ void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, FairTally& 
 
 std::string fair_summary(const FairTally& t) {
   char text[300];
-  std::snprintf(text, sizeof text, "fair: %d regions, errors %d, not steady %d, steady G2 %d, crossing outputs %d",
-                t.regions, t.errors, t.not_steady, t.g2, t.crossing);
+  std::snprintf(text, sizeof text,
+                "fair: %d regions, errors %d, not steady %d, steady G2 %d (of their %d parts %d), crossing outputs %d",
+                t.regions, t.errors, t.not_steady, t.g2, t.parts, t.g2_parts, t.crossing);
   return text;
 }
 

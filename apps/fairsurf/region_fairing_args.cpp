@@ -59,6 +59,7 @@ nlohmann::json to_json(const FairRegionReport& r) {
     j["held_out_two_ring_flow_error"] = r.held_out_two_ring_flow_error;
     j["two_ring_boundary_fits"] = r.two_ring_boundary_fits;
   }
+  for (const FairRegionReport& part : r.parts) j["parts"].push_back(to_json(part));
   if (r.has_flow_report()) {
     j.update(to_json(r.flow));
   } else {
@@ -71,6 +72,13 @@ nlohmann::json to_json(const FairRegionReport& r) {
 }
 
 std::string summary(const FairRegionReport& r) {
+  if (!r.parts.empty()) {
+    std::string out = std::to_string(r.parts.size()) + " parts whose fixed rings do not meet, each faired on its own:";
+    for (std::size_t k = 0; k < r.parts.size(); ++k)
+      out += (k == 0 ? " " : "; ") + std::string("part ") + std::to_string(k + 1) + " (" +
+             std::to_string(r.parts[k].free_vertices) + " free vertices): " + summary(r.parts[k]);
+    return out;
+  }
   char text[256];
   if (r.linear) {
     std::snprintf(text, sizeof text, "%s (cotangent ∆^%d, %d solves)", delivered_label(r.supported, true).c_str(),

@@ -63,6 +63,11 @@ py::dict to_dict(const FairRegionReport& r) {
     d["held_out_two_ring_flow_error"] = r.held_out_two_ring_flow_error;
     d["two_ring_boundary_fits"] = r.two_ring_boundary_fits;
   }
+  if (!r.parts.empty()) {
+    py::list parts;
+    for (const FairRegionReport& part : r.parts) parts.append(to_dict(part));
+    d["parts"] = parts;
+  }
   if (r.has_flow_report()) {
     for (const auto item : to_dict(r.flow)) d[item.first] = item.second;
   } else {

@@ -1,4 +1,5 @@
 #include "border_fold.h"
+#include "fair_region_parts.h"
 #include "flow/flow_failure.h"
 #include "held_out.h"
 #include "mesh/crossing_count.h"
@@ -427,19 +428,30 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
 
 }  // namespace
 
+namespace {
+
+// fair_region on a validated mesh: part by part (fair_in_parts), each part with its crossing check.
+FairRegionReport fair_validated(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                const FairRegionOptions& options, const FlowObserver& observer) {
+  return fair_detail::fair_in_parts(mesh, topo, free_vertices, options, [&](std::span<const int> part) {
+    return fair_uncrossed(mesh, topo, part, options,
+                          [&] { return fair_detail::fair_valid_mesh(mesh, topo, part, options, observer); });
+  });
+}
+
+}  // namespace
+
 FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
                              const FairRegionOptions& options, const FlowObserver& observer) {
   // validate builds the mesh's connectivity: kept, not built again.
   const Topology topo = detail::validated_topology(mesh, Requirements{}, "fair_region");
-  return fair_uncrossed(mesh, topo, free_vertices, options,
-                        [&] { return fair_detail::fair_valid_mesh(mesh, topo, free_vertices, options, observer); });
+  return fair_validated(mesh, topo, free_vertices, options, observer);
 }
 
 FairRegionReport fair_region(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                              const FairRegionOptions& options, const FlowObserver& observer) {
   require_valid(validate(mesh, topo), Requirements{}, "fair_region");
-  return fair_uncrossed(mesh, topo, free_vertices, options,
-                        [&] { return fair_detail::fair_valid_mesh(mesh, topo, free_vertices, options, observer); });
+  return fair_validated(mesh, topo, free_vertices, options, observer);
 }
 
 }  // namespace fairsurf

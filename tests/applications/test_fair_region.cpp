@@ -3,6 +3,7 @@
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/face_intersection.h>
+#include <fairsurf/mesh/topology.h>
 
 #include <gtest/gtest.h>
 
@@ -343,3 +344,47 @@ TEST(FairRegionReal, ARegionThatAlreadyCrossesIsHeldToTheCrossingsItHad) {
   EXPECT_TRUE(region_crossings(without_triangle, region).empty());
 }
 
+// Parts of a region are the free vertices whose fixed rings do not meet: on a grid row, two free
+// vertices 2·rings + 1 = 7 edges apart share a part (their rings touch), 8 apart do not.
+TEST(RegionParts, FreeVerticesMoreThanTwiceTheRingsPlusOneEdgesApartArePartsOfTheirOwn) {
+  const Mesh grid = test::saddle_patch(40, 1.0);
+  const Topology topo = build_topology(grid.F, grid.num_vertices());
+  const int a = 20 * 41 + 10;
+  EXPECT_EQ(region_parts(topo, std::vector<int>{a + 7, a}, 3).size(), 1u);
+  EXPECT_EQ(region_parts(topo, std::vector<int>{a + 8, a}, 3).size(), 2u);
+  const auto parts = region_parts(topo, std::vector<int>{a + 9, a, a + 1, a}, 3);
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_EQ(parts[0], (std::vector<int>{a, a + 1}));  // ascending, without repeats
+  EXPECT_EQ(parts[1], (std::vector<int>{a + 9}));
+  EXPECT_EQ(region_parts(topo, std::vector<int>{a + 8, a}, 4).size(), 1u);  // wider rings meet
+}
+
+// Two balls on data/blub.obj far apart, freed together. Faired as one region, one check decided
+// for both: C2 (linear). Each part now gets its own fairing and choice: the flow on one, the
+// floor on the other, each exactly what fairing that part alone gives.
+TEST(FairRegionReal, ARegionInPartsGetsItsOwnFairingForEachPart) {
+  const Mesh input = read_mesh(test::data_path("blub.obj"));
+  const double r = 0.148137;
+  std::vector<int> region = test::ball_vertices(input, input.V.row(1987).transpose(), r);
+  const std::vector<int> second = test::ball_vertices(input, input.V.row(6569).transpose(), r);
+  region.insert(region.end(), second.begin(), second.end());
+  const FairRegionOptions options = FairRegionOptions::harmonic_started();
+
+  Mesh whole = input;
+  const FairRegionReport report = fair_region(whole, region, options);
+  ASSERT_EQ(report.parts.size(), 2u) << report.note;
+  EXPECT_EQ(report.parts[0].free_vertices + report.parts[1].free_vertices, report.free_vertices);
+  EXPECT_EQ(report.free_vertices, static_cast<int>(region.size()));
+  EXPECT_NE(report.parts[0].linear, report.parts[1].linear) << report.note;
+  EXPECT_TRUE(report.linear);  // the label claims no more than every part has
+  EXPECT_EQ(report.note.rfind("faired in 2 parts whose fixed rings do not meet", 0), 0u) << report.note;
+
+  const auto parts = region_parts(build_topology(input.F, input.num_vertices()), region, 3);
+  ASSERT_EQ(parts.size(), 2u);
+  Mesh alone = input;
+  for (const std::vector<int>& part : parts) {
+    const FairRegionReport one = fair_region(alone, part, options);
+    EXPECT_TRUE(one.parts.empty());
+  }
+  EXPECT_TRUE(alone.V == whole.V);
+}

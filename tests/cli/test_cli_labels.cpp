@@ -82,6 +82,24 @@ TEST_F(CliLabels, SceneFollowUpCommandIsNotFlaggedNotSteady) {
   EXPECT_EQ(run.out.find("NOT steady"), std::string::npos) << run.out;
 }
 
+// A region in parts whose fixed rings do not meet (two balls on blub far apart) is faired part by
+// part, and the summary labels each part as what it got, not the whole as one.
+TEST_F(CliLabels, ARegionInPartsIsLabelledPartByPart) {
+  const Mesh blub = read_mesh(test::data_path("blub.obj"));
+  std::ofstream region(file("parts.txt"));
+  for (int centre : {1987, 6569})
+    for (int v : test::ball_vertices(blub, blub.V.row(centre).transpose(), 0.148137)) region << v << "\n";
+  region.close();
+  const auto run = test::run_cli("fair '" + test::data_path("blub.obj") + "' -o " + path("out.ply") + " --region " +
+                                 path("parts.txt") + " --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("2 parts whose fixed rings do not meet, each faired on its own: part 1 ("),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("free vertices): G2 ("), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("free vertices): C2 (linear) ("), std::string::npos) << run.out;
+}
+
 // A region scene's free region is the vertex property 'free', which only PLY stores: another
 // format would drop it silently and the printed `fair --region-property free` would then fail.
 TEST_F(CliLabels, RegionSceneRefusesFormatsWithoutProperties) {

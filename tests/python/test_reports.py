@@ -65,6 +65,23 @@ def test_fair_report_fields(cli, tmp_path):
     assert promised == [s["predicted_decrease"] for s in log["steps"]]
 
 
+def test_fair_report_of_a_region_in_parts(cli, tmp_path, data_dir):
+    # Two balls on blub far apart: each part faired on its own, reported under "parts" (the CLI's
+    # log the same), the whole labelled by its weakest part.
+    V, F = fairsurf.read_mesh(data_dir / "blub.obj")
+    region = np.zeros(len(V), dtype=bool)
+    for centre in (1987, 6569):
+        region |= np.linalg.norm(V - V[centre], axis=1) <= 0.148137
+    (tmp_path / "parts.txt").write_text(" ".join(map(str, region.nonzero()[0])))
+    _, report = fairsurf.fair(V, F, region=region)
+    log = cli_log(cli, tmp_path, "fair", data_dir / "blub.obj", "--region", tmp_path / "parts.txt")
+    assert keys(report) == keys(log)
+    assert [p["delivered"] for p in report["parts"]] == [p["delivered"] for p in log["parts"]]
+    assert sorted(p["delivered"] for p in report["parts"]) == ["C2 (linear)", "G2"]
+    assert sum(p["free_vertices"] for p in report["parts"]) == report["free_vertices"] == region.sum()
+    assert report["delivered"] == "C2 (linear)"
+
+
 def test_blend_report_fields_and_result(cli, tmp_path):
     subprocess.run([str(cli), "scene", "fig4", "-o", str(tmp_path / "fig4.ply"), "--edge-length", "0.25"],
                    check=True, capture_output=True)

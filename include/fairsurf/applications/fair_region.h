@@ -19,6 +19,7 @@
 #include <limits>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace fairsurf {
 
@@ -142,6 +143,16 @@ struct FairRegionReport {
   bool two_ring_boundary_fits = false;
   ContinuityMeasure continuity;                ///< measured after fairing
   double seconds = 0;                          ///< wall time of the whole call
+  /// A region in parts whose fixed rings do not meet (region_parts) is faired part by part, each
+  /// with its own flow, floor, held-out choice and checks, the later parts on the mesh as the
+  /// earlier ones left it; their reports are here, in the order of their smallest vertex. The
+  /// fields above then describe the whole: free_vertices, seconds and the flow's steps summed,
+  /// `supported` the lowest part's, `linear` set where any part's result is linear (so that
+  /// delivered_label never claims more than every part has), `flow` the parts' flows together
+  /// where every part flowed (steady only where each is; else, as for a kept floor, only its
+  /// well_posedness), `continuity` over the whole region, `note` each part's label. Empty for a
+  /// region of one part.
+  std::vector<FairRegionReport> parts;
 
   /// The flow ran on the region and `flow` holds its report. False for method harmonic, where
   /// held_out_rings chose the linear solution before any flow on the region, and where the flow
@@ -153,6 +164,13 @@ struct FairRegionReport {
 /// sixth order (G2).
 FlowKind flow_for(Continuity c);
 
+/// The parts of the free region `free_vertices` (valid indices of topo's vertices) whose `rings`
+/// fixed rings do not meet: the free vertices grouped by the connected components of the vertices
+/// within `rings` rings of the region, so that parts are more than 2·rings + 1 edges apart and the
+/// fairing of one reads none of another's vertices. Each part ascending, without repeats; the parts
+/// in the order of their smallest vertex.
+std::vector<std::vector<int>> region_parts(const Topology& topo, std::span<const int> free_vertices, int rings);
+
 /// Fairs the vertices `free_vertices` of `mesh` (mesh.V updated in place; only free vertices move).
 /// Requires a manifold, consistently oriented mesh without degenerate faces (InvalidMeshError).
 /// Throws InvalidArgument for an empty or out-of-range free set or a flow.kind that contradicts the
@@ -161,7 +179,8 @@ FlowKind flow_for(Continuity c);
 /// given region did not (find_face_intersections; faces that crossed in the given mesh, as a noisy
 /// scan's may, take no part) is replaced by the first linear ∆^k solution from the given positions,
 /// k from the continuity reached down to 1, that does not (reported `linear`, the reason in
-/// `note`); NumericalError if every one crosses, with mesh.V at the result.
+/// `note`); NumericalError if every one crosses, with mesh.V at the result. A region in parts is
+/// faired part by part (FairRegionReport::parts); a throw leaves the parts before as they ended.
 FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
                              const FairRegionOptions& options = {},
                              const FlowObserver& observer = {});

@@ -1,0 +1,124 @@
+#include "fair_region_parts.h"
+
+#include "stopwatch.h"
+
+#include <fairsurf/geometry/continuity_measure.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace fairsurf {
+
+std::vector<std::vector<int>> region_parts(const Topology& topo, std::span<const int> free_vertices, int rings) {
+  std::vector<int> free(free_vertices.begin(), free_vertices.end());
+  std::sort(free.begin(), free.end());
+  free.erase(std::unique(free.begin(), free.end()), free.end());
+  const std::vector<int> distance = ring_distances(topo, free, rings);
+  std::vector<int> part_of(distance.size(), -1);
+  std::vector<std::vector<int>> parts;
+  std::vector<int> stack;
+  for (int seed : free) {
+    if (part_of[seed] >= 0) continue;
+    const int part = static_cast<int>(parts.size());
+    parts.emplace_back();
+    part_of[seed] = part;
+    stack.assign(1, seed);
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      for (int u : topo.vertex_vertices.row(v))
+        if (distance[u] >= 0 && part_of[u] < 0) {
+          part_of[u] = part;
+          stack.push_back(u);
+        }
+    }
+  }
+  for (int v : free) parts[part_of[v]].push_back(v);
+  return parts;
+}
+
+namespace fair_detail {
+namespace {
+
+// Adds a part's flow to the whole region's (FairRegionReport::parts): steps and energies summed,
+// max|V| and time the largest, steady only while every flowed part is.
+void add_part_flow(const FairRegionReport& part, FlowReport& whole) {
+  whole.well_posedness.vertices += part.flow.well_posedness.vertices;
+  whole.well_posedness.violating_vertices += part.flow.well_posedness.violating_vertices;
+  if (part.linear || !part.has_flow_report()) return;
+  const FlowReport& f = part.flow;
+  if (whole.free_vertices == 0) {
+    whole.stop_reason = FlowStopReason::steady;
+    whole.length_scale = f.length_scale;
+    whole.curvature_scale = f.curvature_scale;
+    whole.tau = f.tau;
+    whole.supported = f.supported;
+  }
+  whole.records.insert(whole.records.end(), f.records.begin(), f.records.end());
+  if (whole.stop_reason == FlowStopReason::steady) whole.stop_reason = f.stop_reason;
+  whole.accepted_steps += f.accepted_steps;
+  whole.rejected_steps += f.rejected_steps;
+  whole.time = std::max(whole.time, f.time);
+  whole.tau = std::min(whole.tau, f.tau);
+  whole.initial_energy += f.initial_energy;
+  whole.final_energy += f.final_energy;
+  whole.initial_max_velocity = std::max(whole.initial_max_velocity, f.initial_max_velocity);
+  whole.final_max_velocity = std::max(whole.final_max_velocity, f.final_max_velocity);
+  whole.free_vertices += f.free_vertices;
+  whole.supported = std::min(whole.supported, f.supported);
+}
+
+// The whole region's report from its parts' (FairRegionReport::parts), but for continuity and
+// seconds, which the caller measures.
+FairRegionReport combined_report(std::vector<FairRegionReport> parts, const FairRegionOptions& options) {
+  FairRegionReport whole;
+  whole.requested = options.continuity;
+  whole.method = options.method;
+  whole.supported = Continuity::G2;
+  std::string labels;
+  for (const FairRegionReport& part : parts) {
+    whole.free_vertices += part.free_vertices;
+    whole.supported = std::min(whole.supported, part.supported);
+    whole.linear = whole.linear || part.linear;
+    whole.crossing_fallback = whole.crossing_fallback || part.crossing_fallback;
+    whole.harmonic.free_vertices += part.harmonic.free_vertices;
+    whole.harmonic.iterations += part.harmonic.iterations;
+    whole.harmonic.backward_error = std::max(whole.harmonic.backward_error, part.harmonic.backward_error);
+    whole.harmonic.max_move = std::max(whole.harmonic.max_move, part.harmonic.max_move);
+    add_part_flow(part, whole.flow);
+    labels += (labels.empty() ? "" : ", ") + delivered_label(part.supported, part.linear) + " (" +
+              std::to_string(part.free_vertices) + " free vertices)";
+  }
+  if (whole.linear) {  // as for one region whose floor was kept: the flow's well-posedness alone
+    const WellPosedness weighed = whole.flow.well_posedness;
+    whole.flow = FlowReport{};
+    whole.flow.well_posedness = weighed;
+  }
+  whole.flow_kind = flow_for(whole.supported);
+  whole.harmonic.order = static_cast<int>(whole.supported) + 1;
+  whole.note = "faired in " + std::to_string(parts.size()) +
+               " parts whose fixed rings do not meet, each on its own: " + labels;
+  whole.parts = std::move(parts);
+  return whole;
+}
+
+}  // namespace
+
+FairRegionReport fair_in_parts(const Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                               const FairRegionOptions& options, const PartFairing& fair_part) {
+  for (int v : free_vertices)
+    if (v < 0 || v >= mesh.num_vertices()) return fair_part(free_vertices);
+  const std::vector<std::vector<int>> parts = region_parts(topo, free_vertices, rings_needed(options.continuity));
+  if (parts.size() <= 1) return fair_part(free_vertices);
+  const auto start = detail::Clock::now();
+  std::vector<FairRegionReport> reports;
+  for (const std::vector<int>& part : parts) reports.push_back(fair_part(part));
+  FairRegionReport whole = combined_report(std::move(reports), options);
+  whole.continuity = measure_continuity(mesh.V, mesh.F, topo, free_vertices);
+  whole.seconds = detail::seconds_since(start);
+  return whole;
+}
+
+}  // namespace fair_detail
+}  // namespace fairsurf

@@ -1,0 +1,22 @@
+// A free region in parts whose fixed rings do not meet, faired part by part (fair_region.h,
+// FairRegionReport::parts).
+#pragma once
+
+#include <fairsurf/applications/fair_region.h>
+#include <fairsurf/mesh/topology.h>
+
+#include <functional>
+#include <span>
+
+namespace fairsurf::fair_detail {
+
+/// Fairs one part of a region on the mesh (fair_region's whole fairing, with its checks).
+using PartFairing = std::function<FairRegionReport(std::span<const int> part)>;
+
+/// `fair_part` on the region itself where it is one part (or holds an index out of range, which
+/// fair_part reports), else on each of its region_parts in turn, their reports combined
+/// (FairRegionReport::parts). `mesh`, `topo`: the mesh being faired and its connectivity.
+FairRegionReport fair_in_parts(const Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                               const FairRegionOptions& options, const PartFairing& fair_part);
+
+}  // namespace fairsurf::fair_detail
