@@ -193,10 +193,10 @@ struct FairTally {
   int parts = 0, g2_parts = 0;  ///< FairRegionReport::parts (a region of one part counts as one)
 };
 
-bool steady_g2(const FairRegionReport& r) {
-  const bool steady = r.linear || r.flow.stop_reason == FlowStopReason::steady;
-  return steady && !r.linear && r.supported == Continuity::G2;
-}
+// The floor, or a flow that settled.
+bool settled(const FairRegionReport& r) { return r.linear || r.flow.stop_reason == FlowStopReason::steady; }
+
+bool steady_g2(const FairRegionReport& r) { return settled(r) && !r.linear && r.supported == Continuity::G2; }
 
 // " [parts: G2, C2 (linear)]" for a region faired part by part; counts its parts into `tally`.
 std::string parts_text(const FairRegionReport& r, FairTally& tally) {
@@ -225,7 +225,7 @@ void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, FairTally& 
   Mesh faired = mesh;
   try {
     const FairRegionReport r = fair_region(faired, region, FairRegionOptions::harmonic_started());
-    const bool steady = r.linear || r.flow.stop_reason == FlowStopReason::steady;
+    const bool steady = settled(r);
     // More crossings than the given region had (a noisy scan's may cross already).
     std::vector<char> free(mesh.num_vertices(), 0);
     for (int v : region) free[v] = 1;

@@ -136,32 +136,33 @@ double resolved_weight(const SurfaceGeometry& geo, Eigen::Index i, double resolu
   return unresolved > resolution ? resolution / unresolved : 1.0;
 }
 
-// The part of EL's factor c (euler_lagrange_factor) of `values` that the flow drops at vertex i
-// where the energy is a function of H alone there (every term's f_K is 0): c = 2(2H² − K) f_H times
-// 1 − resolved_weight. V = −EL holds that part as +2(2H² − K) f_H ∆f, a diffusion of f backwards in
-// time. Energies with a K part are left alone: limited, f = K diverged and f = {H, K} failed.
-double dropped_factor(const SurfaceGeometry& geo, const std::vector<EnergyTerms>& terms,
-                      const EnergyValues& values, Eigen::Index i, double resolution) {
-  const double weight = resolved_weight(geo, i, resolution);
-  if (weight == 1.0) return 0.0;
-  for (const EnergyTerms& t : terms)
-    if (t.values.f_K[i] != 0) return 0.0;
-  return (1 - weight) * 2 * (2 * geo.H[i] * geo.H[i] - geo.K[i]) * values.f_H[i];
+// Per vertex, the part of 2(2H² − K) that the flow drops from EL's factor c = 2(2H² − K) f_H
+// (euler_lagrange_factor) of every term: 1 − resolved_weight of it where the energy is a function
+// of H alone there (every term's f_K is 0), else 0. V = −EL holds that part as +2(2H² − K) f_H ∆f, a
+// diffusion of f backwards in time. Energies with a K part are left alone: limited, f = K diverged
+// and f = {H, K} failed. Set once per evaluation; the velocity and the Jacobian read it.
+void set_dropped_curvature(const SurfaceGeometry& geo, const std::vector<EnergyTerms>& terms, double resolution,
+                           Eigen::VectorXd& dropped) {
+  dropped.resize(geo.H.size());
+  for (Eigen::Index i = 0; i < dropped.size(); ++i) {
+    const double weight = resolved_weight(geo, i, resolution);
+    bool of_h_alone = true;
+    for (const EnergyTerms& t : terms) of_h_alone = of_h_alone && t.values.f_K[i] == 0;
+    dropped[i] = weight == 1.0 || !of_h_alone ? 0.0 : (1 - weight) * 2 * (2 * geo.H[i] * geo.H[i] - geo.K[i]);
+  }
 }
 
 // J += Σ_l P′_l Q_l (free rows and columns), P′ = R L∆ − Σ_c diag(w_c) G_c,
 // R = L∆ diag(f_H) + 2 L□ diag(f_K) + diag(c), w = 2H∇f − 2◇f, Q = ½ diag(f_H) A_H + diag(f_K) A_K.
-void add_sixth_order(const FlowProblem& problem, const FlowState& state, const EnergyTerms& t,
+void add_sixth_order(const FlowState& state, const Region& region, const EnergyTerms& t,
                      JacobianWorkspace& work, SparseRowMatrix& jacobian) {
-  const Region& region = *problem.region;
   const SurfaceOperators& ops = state.ops;
   const double* lap = ops.laplace.valuePtr();
   const double* gia = ops.giaquinta.valuePtr();
   const Eigen::VectorXd& fH = t.values.f_H;
   const Eigen::VectorXd& fK = t.values.f_K;
   Eigen::VectorXd c = euler_lagrange_factor(ops.geometry, t.values);
-  for (Eigen::Index i = 0; i < c.size(); ++i)
-    c[i] -= dropped_factor(ops.geometry, state.evaluation.terms, t.values, i, problem.curvature_resolution);
+  c -= state.dropped_curvature.cwiseProduct(fH);
   fill_like(ops.laplace, work.R, [&](int i, int j, int p) {
     return lap[p] * fH[j] + 2.0 * gia[p] * fK[j] + (i == j ? c[i] : 0.0);
   });
@@ -213,10 +214,10 @@ void evaluate_flow_terms(const FlowProblem& problem, FlowState& state) {
       evaluate_energy(state.ops, problem.functions, problem.scale, state.evaluation);
       V = -state.evaluation.euler_lagrange;
       // EL holds −c ∆f; the flow drops the part of c that unresolved curvature makes anti-diffusive.
+      set_dropped_curvature(geo, state.evaluation.terms, problem.curvature_resolution, state.dropped_curvature);
       for (const EnergyTerms& t : state.evaluation.terms)
         for (Eigen::Index i = 0; i < V.size(); ++i)
-          V[i] -= dropped_factor(geo, state.evaluation.terms, t.values, i, problem.curvature_resolution) *
-                  t.laplace_f[i];
+          V[i] -= state.dropped_curvature[i] * t.values.f_H[i] * t.laplace_f[i];
       state.energy = weight.dot(geo.area.cwiseProduct(state.evaluation.density));
       break;
     case FlowKind::mean_curvature:
@@ -263,7 +264,7 @@ void assemble_jacobian(const FlowProblem& problem, const FlowState& state, Jacob
   switch (problem.kind) {
     case FlowKind::sixth_order:
       normal_weighted(ops.giaquinta, ops.geometry.normal, work.A_K);
-      for (const EnergyTerms& t : state.evaluation.terms) add_sixth_order(problem, state, t, work, jacobian);
+      for (const EnergyTerms& t : state.evaluation.terms) add_sixth_order(state, region, t, work, jacobian);
       break;
     case FlowKind::mean_curvature:
       add_product(region, ops.laplace, work.A_H.valuePtr(), 1.0, [](int i, double* row) { row[i] = 1.0; },

@@ -33,6 +33,10 @@ struct FlowState {
   QuadraticFits fits;
   SurfaceOperators ops;
   EnergyEvaluation evaluation;  ///< sixth order only
+  /// Sixth order: per vertex, the part of 2(2H² − K) that the flow drops from EL's factor c where
+  /// the mesh does not resolve the curvature (FlowOptions::curvature_resolution); evaluate_flow_terms
+  /// sets it, the Jacobian reads it.
+  Eigen::VectorXd dropped_curvature;
   Eigen::VectorXd velocity;     ///< #V normal velocity V (flow.h), zero on fixed vertices
   double energy = 0;            ///< the flow's energy over energy_weight
   double max_velocity = 0;      ///< max over free vertices of |V|
