@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_options.h"
 #include "real_holes.h"
 #include "real_holes_cases.h"
 
@@ -144,8 +145,7 @@ void run_mesh(const bench::ClosedMesh& m, const Args& args) {
 
 int main(int argc, char** argv) {
   CLI::App app{"How close `fairsurf smooth` brings a noisy copy of a real shape back to it", "bench_denoise"};
-  // CLI11 refuses a repeated option; the benches keep its last value, so that a run can append an override.
-  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  bench::take_last_values(app);
   Args args;
   add_options(app, args);
   CLI11_PARSE(app, argc, argv);

@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "case_options.h"
+#include "bench_options.h"
 #include "real_holes.h"
 #include "real_holes_cases.h"
 #include "real_holes_rows.h"
@@ -611,8 +611,7 @@ void add_options(CLI::App& app, Args& args) {
 int main(int argc, char** argv) {
   CLI::App app{"fairsurf's fill, fair and blend on holes cut out of clean closed meshes (docs/fill.md)",
                "bench_real_holes"};
-  // CLI11 refuses a repeated option; the benches keep its last value, so that a run can append an override.
-  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  bench::take_last_values(app);
   Args args;
   add_options(app, args);
   CLI11_PARSE(app, argc, argv);

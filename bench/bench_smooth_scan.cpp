@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "bench_options.h"
+
 using namespace fairsurf;
 
 namespace {
@@ -63,8 +65,7 @@ void run_scan(const std::string& path, double relax, const std::string& out) {
 
 int main(int argc, char** argv) {
   CLI::App app{"`fairsurf smooth` on the raw scans of data/ with the CLI's options", "bench_smooth_scan"};
-  // CLI11 refuses a repeated option; the benches keep its last value, so that a run can append an override.
-  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  bench::take_last_values(app);
   std::vector<std::string> scans;
   double relax = -1;
   std::string out;

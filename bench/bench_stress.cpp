@@ -32,7 +32,7 @@
 #include <string>
 #include <vector>
 
-#include "case_options.h"
+#include "bench_options.h"
 #include "real_holes.h"
 #include "real_holes_cases.h"
 
@@ -310,8 +310,7 @@ std::string blend_summary(const BlendTally& t) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Fill, fair and blend on cases drawn at random on closed meshes (docs/fill.md)", "bench_stress"};
-  // CLI11 refuses a repeated option; the benches keep its last value, so that a run can append an override.
-  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  bench::take_last_values(app);
   Args args;
   add_options(app, args);
   CLI11_PARSE(app, argc, argv);

@@ -1,6 +1,8 @@
-#include "case_options.h"
+#include "bench_options.h"
 
 namespace fairsurf::bench {
+
+void take_last_values(CLI::App& app) { app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast); }
 
 void add_case_options(CLI::App& app, std::string& section, std::string& mesh, std::vector<std::string>& mesh_files) {
   app.add_option("--section", section, "The section to run")
