@@ -69,6 +69,11 @@ FairRegionOptions FairRegionOptions::harmonic_started() {
   return o;
 }
 
+void keep_settled_flow(FairRegionOptions& options) {
+  options.held_out_rings = 0;
+  options.max_border_angle_ratio = std::numeric_limits<double>::infinity();
+}
+
 namespace {
 
 // Empty, or why the flow's steady state folds against the ∆^k solution `start` it started from:

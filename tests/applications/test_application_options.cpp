@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace fairsurf;
 
 namespace {
@@ -46,4 +48,19 @@ TEST(ApplicationOptions, FillStartsFromTheHarmonicStartedFairingReEvaluated) {
 TEST(ApplicationOptions, BlendStartsFromThePlainFairingDefaults) {
   expect_same_fairing(BlendOptions{}, FairRegionOptions{});
   EXPECT_EQ(BlendOptions{}.harmonic_start_iterations, 0);
+}
+
+// keep_settled_flow switches off the two checks that weigh a settled flow against its floor and
+// nothing else: the floor itself stays for a flow that does not settle.
+TEST(ApplicationOptions, KeepingTheSettledFlowSwitchesOffTheHeldOutRingsAndTheFoldCheckOnly) {
+  FillOptions kept;
+  keep_settled_flow(kept);
+  EXPECT_EQ(kept.held_out_rings, 0);
+  EXPECT_TRUE(std::isinf(kept.max_border_angle_ratio));
+  EXPECT_TRUE(kept.linear_floor);
+  FillOptions expected;
+  expected.held_out_rings = kept.held_out_rings;
+  expected.max_border_angle_ratio = kept.max_border_angle_ratio;
+  expect_same_fairing(kept, expected);
+  EXPECT_NE(FillOptions{}.held_out_rings, 0);  // so the test above changes something
 }

@@ -360,6 +360,35 @@ TEST(RealHoleFold, AFlowThatFoldsAgainstItsLinearStartIsNotDelivered) {
   EXPECT_GT(flowed_distance, 2 * r.distance);
 }
 
+// keep_settled_flow: on a spot hole where the held-out rings choose a linear solution, the settled
+// flow is delivered instead, G2, watertight, from the same patch; it lies farther from the uncut
+// surface than the default fill (the trade the option makes, docs/fill.md "Keeping the flow"), yet
+// well within an edge of it.
+TEST(RealHoleKeepFlow, TheSettledFlowIsDeliveredWhereTheHeldOutRingsChoseALinearSolution) {
+  const BallHole ball = fill_ball_hole("spot.obj", {0.312594, 0.674309, -0.341185}, 4);
+  ASSERT_EQ(ball.r.report.holes.size(), 1u);
+  EXPECT_TRUE(ball.r.hole().linear) << ball.r.hole().note;
+
+  Mesh kept = ball.cut;
+  FillOptions options;
+  keep_settled_flow(options);
+  const FillReport report = fill_holes(kept, options);
+  ASSERT_EQ(report.holes.size(), 1u);
+  const HoleReport& hole = report.holes.front();
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
+  EXPECT_TRUE(std::isnan(hole.held_out_flow_error) && std::isnan(hole.held_out_linear_error));
+  EXPECT_EQ(kept.num_vertices(), ball.r.filled.num_vertices());  // the same patch, faired otherwise
+  EXPECT_TRUE(kept.V.topRows(ball.cut.num_vertices()) == ball.cut.V) << "an input vertex moved";
+  EXPECT_TRUE(validate(kept).manifold());
+  EXPECT_TRUE(boundary_loops(kept.F, build_topology(kept.F, kept.num_vertices())).empty());
+  const double distance = mean_new_vertex_distance(kept, ball.cut.num_vertices(), ball.truth) / ball.h;
+  std::printf("[keep flow] spot 4h: kept flow %.3f h, default %.3f h, linear floor %.3f h\n", distance, ball.r.distance,
+              ball.r.floor_distance);
+  EXPECT_GT(distance, ball.r.distance);
+  EXPECT_LT(distance, 0.5);
+}
+
 // Two balls of 16 h and 17 h cut off the end of the hammer's handle and bite into its side: a
 // 197-edge loop round a thin part. Its membrane folds against the border (177°), and every fairing
 // started there (the flow, then ∆³, ∆², ∆¹ re-evaluated from it) crosses the handle's far side. The

@@ -101,6 +101,14 @@ struct FairRegionOptions {
   static FairRegionOptions harmonic_started();
 };
 
+/// Keeps the flow wherever it settles: switches off the two checks that weigh a settled flow against
+/// its linear floor, the held-out rings (held_out_rings = 0) and the fold check
+/// (max_border_angle_ratio = ∞). The floor still takes a flow that throws or does not settle, and
+/// fill's fallbacks a patch that crosses the mesh. For a user who wants the G2 asked for over a C2
+/// result that may lie closer to the surface, which on real holes it often does (docs/fill.md,
+/// "Keeping the flow").
+void keep_settled_flow(FairRegionOptions& options);
+
 struct FairRegionReport {
   int free_vertices = 0;
   Continuity requested = Continuity::G2;
