@@ -20,6 +20,7 @@ struct FairArgs {
   std::string input, output, region_file, region_property;
   std::vector<double> region_sphere;
   std::string start = "harmonic";
+  bool keep_flow = false;
   RegionFairingArgs fairing;
 };
 
@@ -53,6 +54,7 @@ void run_fair(const FairArgs& args) {
   FairRegionOptions options =
       args.start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{};
   apply_region_fairing_args(f, options);
+  apply_keep_flow(args.keep_flow, "fair", options);
   Mesh mesh = read_input(args.input);
   drop_shape_properties(mesh, args.input);
   const auto repaired = repair_input(mesh, f.repair, args.input);
@@ -62,6 +64,7 @@ void run_fair(const FairArgs& args) {
                      {{"command", "fair"},
                       {"input", args.input},
                       {"functions", f.functions},
+                      {"keep_flow", args.keep_flow},
                       {"repair", repair_json(repaired)}},
                      options.flow.step_kind);
   const FairRegionReport report =
@@ -98,6 +101,7 @@ void setup_fair(CLI::App& app) {
                   "time-stepped flow with tau doubling from 1e-9)")
       ->check(CLI::IsMember({"harmonic", "flat"}));
   add_region_fairing_options(cmd, args->fairing);
+  add_keep_flow_flag(cmd, args->keep_flow);
   cmd->callback([args] { run_fair(*args); });
 }
 

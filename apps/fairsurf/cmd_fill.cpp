@@ -25,7 +25,7 @@ struct FillArgs {
   std::vector<std::string> functions{"H"};
   std::vector<int> holes;
   int max_hole_edges = 0, max_steps = 0;
-  bool skip_largest = false, force = false, quiet = false, repair = false;
+  bool skip_largest = false, force = false, quiet = false, repair = false, keep_flow = false;
 };
 
 FillOptions fill_options(const FillArgs& args) {
@@ -40,6 +40,7 @@ FillOptions fill_options(const FillArgs& args) {
   o.holes = args.holes;
   o.max_hole_edges = args.max_hole_edges;
   o.skip_largest = args.skip_largest;
+  apply_keep_flow(args.keep_flow, "fill", o);
   return o;
 }
 
@@ -171,6 +172,7 @@ void run_fill(const FillArgs& args) {
                        {"output", args.output},
                        {"continuity", args.continuity},
                        {"method", args.method},
+                       {"keep_flow", args.keep_flow},
                        {"functions", args.functions},
                        {"filled", report.filled},
                        {"skipped", report.skipped},
@@ -228,6 +230,7 @@ void setup_fill(CLI::App& app) {
   cmd->add_flag("--skip-largest", args->skip_largest,
                 "Leave the longest loop open (the outer border of an open surface)");
   cmd->add_option("--method", args->method, "flow (default: the flow, or its linear ∆^k floor where that re-predicts the held-out rings better by more than 5%) or harmonic (the cotangent ∆^k alone, labelled C2 (linear): re-evaluated from the membrane, or one solve from the patch before it where that re-predicts the held-out rings more than twice as well)");
+  add_keep_flow_flag(cmd, args->keep_flow);
   add_solver_options(cmd, args->solver);
   cmd->add_option("--max-steps", args->max_steps, "Stop each hole's flow after this many accepted steps (>= 1)")
       ->check(whole_number_at_least(1));

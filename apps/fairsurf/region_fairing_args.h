@@ -35,6 +35,13 @@ void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args);
 /// FairRegionOptions::harmonic_started(), `blend` from the plain defaults (fair_region.h says why).
 void apply_region_fairing_args(const RegionFairingArgs& args, FairRegionOptions& options);
 
+/// Adds --keep-flow (fill, fair): keep the flow wherever it settles (keep_settled_flow).
+void add_keep_flow_flag(CLI::App* cmd, bool& keep_flow);
+
+/// keep_settled_flow(options) where `keep_flow`; throws InvalidArgument, naming `command`, where it
+/// comes with the harmonic method, which runs no flow to keep.
+void apply_keep_flow(bool keep_flow, const std::string& command, FairRegionOptions& options);
+
 nlohmann::json to_json(const ContinuityMeasure& measure);
 /// Method, continuity requested and supported, flow kind and run (or harmonic figures), measure.
 nlohmann::json to_json(const FairRegionReport& report);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "scratch_dir.h"
@@ -96,6 +97,39 @@ TEST_F(CliFill, ExitCodes) {
   run = test::run_cli("fill " + quoted(copy) + " -o " + out + " --holes 9");
   EXPECT_EQ(run.exit_code, 1) << run.out;
   EXPECT_NE(run.out.find("fill_holes: hole 9 is outside [0, 4)"), std::string::npos) << run.out;
+}
+
+// The bunny scan's five holes get the linear floor by default: it re-predicts the held-out rings
+// better than the flow on each. --keep-flow keeps the settled flow on all five, and the log says
+// the flag was given; with --method harmonic there is no flow to keep.
+TEST_F(CliFill, KeepFlowDeliversTheSettledFlowWhereTheHeldOutRingsChoseTheFloor) {
+  const std::string in = quoted(test::data_path("stanford_bunny_zipper.obj"));
+  auto run = test::run_cli("fill " + in + " -o " + quoted(path("default.ply")) + " --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("(5 C2 (linear); 0 failed"), std::string::npos) << run.out;
+
+  run = test::run_cli("fill " + in + " -o " + quoted(path("kept.ply")) + " --keep-flow --log " +
+                      quoted(path("log.json")));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("(5 G2; 0 failed"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("re-predicts the 2 rings"), std::string::npos) << run.out;
+  std::ifstream log_file(path("log.json"));
+  const auto log = nlohmann::json::parse(log_file);
+  EXPECT_EQ(log["keep_flow"], true);
+  for (const auto& hole : log["holes"]) {
+    EXPECT_EQ(hole["delivered"], "G2") << hole.dump();
+    EXPECT_TRUE(hole["held_out_flow_error"].is_null()) << hole.dump();  // not weighed
+    EXPECT_LT(hole["continuity"]["max_normal_angle"].get<double>(), std::numbers::pi / 2) << hole.dump();
+  }
+  const Mesh kept = read_mesh(path("kept.ply"));
+  EXPECT_EQ(loop_count(kept), 0);
+
+  run = test::run_cli("fill " + in + " -o " + quoted(path("linear.ply")) + " --keep-flow --method harmonic");
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_NE(run.out.find("fill: --keep-flow keeps the flow's result; --method harmonic runs no flow"),
+            std::string::npos)
+      << run.out;
+  EXPECT_FALSE(fs::exists(path("linear.ply")));
 }
 
 TEST_F(CliFill, SomeHolesFailingExitsFourAndKeepsTheFilledOnes) {

@@ -100,6 +100,24 @@ TEST_F(CliLabels, ARegionInPartsIsLabelledPartByPart) {
   EXPECT_NE(run.out.find("free vertices): C2 (linear) ("), std::string::npos) << run.out;
 }
 
+// A ball on blub where the held-out rings choose the linear floor: --keep-flow delivers the settled
+// flow instead, labelled G2.
+TEST_F(CliLabels, FairKeepsTheSettledFlowWhenAsked) {
+  const Mesh blub = read_mesh(test::data_path("blub.obj"));
+  std::ofstream region(file("ball.txt"));
+  for (int v : test::ball_vertices(blub, blub.V.row(6569).transpose(), 0.148137)) region << v << "\n";
+  region.close();
+  const std::string command =
+      "fair '" + test::data_path("blub.obj") + "' --region " + path("ball.txt") + " --quiet -o ";
+  auto run = test::run_cli(command + path("default.ply"));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("free vertices, C2 (linear) (cotangent"), std::string::npos) << run.out;
+  run = test::run_cli(command + path("kept.ply") + " --keep-flow");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("free vertices, G2 (sixth-order flow"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find(", steady,"), std::string::npos) << run.out;
+}
+
 // A region scene's free region is the vertex property 'free', which only PLY stores: another
 // format would drop it silently and the printed `fair --region-property free` would then fail.
 TEST_F(CliLabels, RegionSceneRefusesFormatsWithoutProperties) {
