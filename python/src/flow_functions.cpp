@@ -107,9 +107,19 @@ py::tuple smooth_binding(const py::handle& V, const py::handle& F, const SmoothA
   return py::make_tuple(to_numpy(std::move(mesh.V)), d);
 }
 
+// As the CLI's --keep-flow (apply_keep_flow): keep_settled_flow where asked, refused with the
+// harmonic method, which runs no flow to keep.
+void apply_keep_flow(bool keep_flow, const char* call, FairRegionOptions& o) {
+  if (!keep_flow) return;
+  if (o.method == FairMethod::harmonic)
+    throw InvalidArgument(std::string(call) + ": keep_flow keeps the flow's result; method 'harmonic' runs no flow");
+  keep_settled_flow(o);
+}
+
 py::tuple fill_binding(const py::handle& V, const py::handle& F, const std::string& continuity,
                        const std::optional<py::object>& holes, const Functions& functions, const std::string& method,
-                       int max_hole_edges, bool skip_largest, std::optional<int> max_steps, py::object callback) {
+                       int max_hole_edges, bool skip_largest, std::optional<int> max_steps, bool keep_flow,
+                       py::object callback) {
   Mesh mesh = to_mesh(V, F);
   FillOptions o;
   o.continuity = parse_continuity(continuity);
@@ -119,6 +129,7 @@ py::tuple fill_binding(const py::handle& V, const py::handle& F, const std::stri
   if (holes) o.holes = to_indices(*holes, "holes");
   o.max_hole_edges = max_hole_edges;
   o.skip_largest = skip_largest;
+  apply_keep_flow(keep_flow, "fill_holes", o);
   Progress progress(std::move(callback));
   progress.attach(o.flow);
   FillReport report;
@@ -127,7 +138,7 @@ py::tuple fill_binding(const py::handle& V, const py::handle& F, const std::stri
     report = fill_holes(mesh, o, progress.fill_observer());
   }
   progress.rethrow();
-  py::dict d("continuity"_a = continuity, "method"_a = method, "functions"_a = functions);
+  py::dict d("continuity"_a = continuity, "method"_a = method, "keep_flow"_a = keep_flow, "functions"_a = functions);
   for (const auto item : to_dict(report, progress.fill_steps())) d[item.first] = item.second;
   return py::make_tuple(to_numpy(std::move(mesh.V)), to_numpy(std::move(mesh.F)), d);
 }
@@ -163,7 +174,7 @@ void set_fairing(const FairingArgs& a, FairRegionOptions& o) {
 }
 
 py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handle& region, const FairingArgs& args,
-                       const std::string& start, py::object callback) {
+                       const std::string& start, bool keep_flow, py::object callback) {
   // 'flat' as the CLI's --start names it; 'input', this keyword's former value, stays as its alias.
   if (start != "harmonic" && start != "flat" && start != "input")
     throw InvalidArgument("fair: start must be 'harmonic' or 'flat' (alias 'input'), got '" + start + "'");
@@ -172,12 +183,13 @@ py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handl
   FairRegionOptions options =
       start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{};
   set_fairing(args, options);
+  apply_keep_flow(keep_flow, "fair", options);
   Progress progress(std::move(callback));
   progress.attach(options.flow);
   const FairRegionReport report =
       keeping_last_state(mesh, [&] { return fair_region(mesh, free, options, progress.flow_observer()); });
   progress.rethrow();
-  py::dict d("functions"_a = args.functions);
+  py::dict d("functions"_a = args.functions, "keep_flow"_a = keep_flow);
   for (const auto item : to_dict(report)) d[item.first] = item.second;
   return py::make_tuple(to_numpy(std::move(mesh.V)), d);
 }
@@ -226,25 +238,25 @@ void register_flow_functions(py::module_& m) {
       [](const py::handle& V, const py::handle& F, const std::string& continuity,
          const std::optional<py::object>& holes, std::optional<Functions> functions, std::optional<Functions> f,
          const std::string& method, int max_hole_edges, bool skip_largest, std::optional<int> max_steps,
-         py::object progress) {
+         bool keep_flow, py::object progress) {
         return fill_binding(V, F, continuity, holes, functions_kwarg("fill_holes", functions, f), method,
-                            max_hole_edges, skip_largest, max_steps, std::move(progress));
+                            max_hole_edges, skip_largest, max_steps, keep_flow, std::move(progress));
       },
       "V"_a, "F"_a, py::kw_only(), "continuity"_a = "G2", "holes"_a = py::none(), "functions"_a = py::none(),
       "f"_a = py::none(), "method"_a = "flow", "max_hole_edges"_a = 0, "skip_largest"_a = false,
-      "max_steps"_a = py::none(), "progress"_a = py::none(),
+      "max_steps"_a = py::none(), "keep_flow"_a = false, "progress"_a = py::none(),
       "Fills boundary loops with G2 (G1, G0) boundary data, as `fairsurf fill`; returns (V, F, report).");
   m.def(
       "fair",
       [](const py::handle& V, const py::handle& F, const py::handle& region, std::string continuity,
          std::optional<Functions> functions, std::optional<Functions> f, std::string method, int max_steps,
-         std::string start, py::object progress) {
+         std::string start, bool keep_flow, py::object progress) {
         return fair_binding(V, F, region, {continuity, functions_kwarg("fair", functions, f), method, max_steps},
-                            start, std::move(progress));
+                            start, keep_flow, std::move(progress));
       },
       "V"_a, "F"_a, "region"_a, py::kw_only(), "continuity"_a = "G2", "functions"_a = py::none(),
       "f"_a = py::none(), "method"_a = "flow", "max_steps"_a = fair_steps, "start"_a = "harmonic",
-      "progress"_a = py::none(),
+      "keep_flow"_a = false, "progress"_a = py::none(),
       "Fairs a region (boolean mask or vertex indices), as `fairsurf fair`; returns (V, report).");
   m.def(
       "blend",

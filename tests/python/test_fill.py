@@ -2,6 +2,7 @@ import json
 import subprocess
 
 import numpy as np
+import pytest
 
 import fairsurf
 
@@ -56,3 +57,18 @@ def test_a_hole_given_the_solve_before_its_membrane_reports_its_flows_untried(da
     assert 2 * hole["held_out_refined_linear_error"] < hole["held_out_linear_error"]
     assert np.isnan(hole["held_out_flow_error"]) and np.isnan(hole["held_out_two_ring_flow_error"])
     assert "the flow was not tried" in hole["note"]
+
+
+def test_keep_flow_delivers_g2_where_the_held_out_rings_chose_the_floor(data_dir):
+    # The bunny scan's five holes: by default the linear floor re-predicts the held-out rings better
+    # on each (C2 (linear)); keep_flow=True keeps the settled flow on all five, as `fill --keep-flow`.
+    V, F = fairsurf.read_mesh(data_dir / "stanford_bunny_zipper.obj")
+    _, _, default = fairsurf.fill_holes(V, F)
+    V2, F2, kept = fairsurf.fill_holes(V, F, keep_flow=True)
+    assert not default["keep_flow"] and kept["keep_flow"]
+    assert [h["delivered"] for h in default["holes"]] == ["C2 (linear)"] * 5
+    assert [h["delivered"] for h in kept["holes"]] == ["G2"] * 5
+    assert all(np.isnan(h["held_out_flow_error"]) for h in kept["holes"])  # the rings were not weighed
+    assert fairsurf.info(V2, F2)["boundary_loops"] == []
+    with pytest.raises(fairsurf.InvalidArgument, match="keep_flow"):
+        fairsurf.fill_holes(V, F, keep_flow=True, method="harmonic")
