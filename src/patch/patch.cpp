@@ -6,9 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <unordered_map>
-
 #include <utility>
 
 namespace fairsurf {
@@ -36,27 +33,23 @@ void refine_and_relax(const Vertices& V, const Faces& F, const Faces& patch, con
 }
 
 // The largest angle between the normals of a patch face and the mesh face across a border edge.
-double border_dihedral_angle(const Mesh& mesh, int first_patch_face) {
+// `topo`: the connectivity of mesh.F; only the patch's edges are visited, so the cost goes with the
+// patch, not the mesh.
+double border_dihedral_angle(const Mesh& mesh, const Topology& topo, int first_patch_face) {
   const Vertices& V = mesh.V;
   const Faces& F = mesh.F;
   const auto normal = [&](int f) {
     const Eigen::Vector3d a = V.row(F(f, 0)).transpose(), b = V.row(F(f, 1)).transpose(), c = V.row(F(f, 2)).transpose();
     return Eigen::Vector3d((b - a).cross(c - a));
   };
-  std::unordered_map<std::uint64_t, int> mesh_face;  // directed edge -> mesh face
-  const auto key = [](int a, int b) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-  };
-  for (int f = 0; f < first_patch_face; ++f)
-    for (int k = 0; k < 3; ++k) mesh_face.emplace(key(F(f, k), F(f, (k + 1) % 3)), f);
   double angle = 0.0;
   for (int f = first_patch_face; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const auto it = mesh_face.find(key(F(f, (k + 1) % 3), F(f, k)));
-      if (it == mesh_face.end()) continue;
-      const Eigen::Vector3d n = normal(f), m = normal(it->second);
-      angle = std::max(angle, std::atan2(n.cross(m).norm(), n.dot(m)));
-    }
+    for (int k = 0; k < 3; ++k)
+      for (int g : topo.edge_faces.row(topo.face_edges[3 * static_cast<std::size_t>(f) + k])) {
+        if (g >= first_patch_face) continue;
+        const Eigen::Vector3d n = normal(f), m = normal(g);
+        angle = std::max(angle, std::atan2(n.cross(m).norm(), n.dot(m)));
+      }
   return angle;
 }
 
@@ -86,7 +79,7 @@ InitialPatch hole_patch(const Mesh& mesh, const Topology& topo, const std::vecto
     rows += static_cast<int>(hole.faces.rows());
   }
   refine_and_relax(mesh.V, mesh.F, patch, options, out);
-  out.border_dihedral_angle = border_dihedral_angle(out.mesh, out.first_patch_face);
+  out.border_dihedral_angle = border_dihedral_angle(out.mesh, out.topology, out.first_patch_face);
   return out;
 }
 
