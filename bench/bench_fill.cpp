@@ -8,12 +8,16 @@
 // from the step records), total wall time of fill_holes (triangulation, refinement, membrane, ∆³,
 // flow, checks), max|r − 1| over the new vertices, peak memory, and the report's note when the
 // continuity fell back. Arguments: "large" adds the ~100k case, "harmonic" runs the baseline only.
+// "small-holes" instead cuts ten balls of four mean edge lengths out of icospheres of 10k to 655k
+// vertices and fills them: the time a small hole costs as the mesh around it grows (it should not
+// grow with it).
 #include <fairsurf/applications/fill.h>
 #include <fairsurf/mesh/errors.h>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -78,11 +82,67 @@ int run_case(int subdivisions, double cap, FairMethod method) {
   return 0;
 }
 
-void in_child(int subdivisions, double cap, FairMethod method) {
+// The icosphere without the faces whose three vertices lie within `radius` of one of ten points
+// spread over it (a Fibonacci lattice; the vertices stay, unused).
+Mesh sphere_with_small_holes(int subdivisions, double radius) {
+  const Mesh sphere = bench::icosphere(subdivisions);
+  std::vector<Eigen::Vector3d> centres;
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < 10; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / 10.0, r = std::sqrt(1.0 - z * z);
+    centres.emplace_back(r * std::cos(golden * i), r * std::sin(golden * i), z);
+  }
+  Mesh out;
+  out.V = sphere.V;
+  std::vector<int> kept;
+  for (int f = 0; f < sphere.num_faces(); ++f) {
+    bool inside = false;
+    for (const Eigen::Vector3d& c : centres) {
+      bool all = true;
+      for (int k = 0; k < 3; ++k) all = all && (sphere.V.row(sphere.F(f, k)).transpose() - c).norm() < radius;
+      inside = inside || all;
+    }
+    if (!inside) kept.push_back(f);
+  }
+  out.F.resize(static_cast<int>(kept.size()), 3);
+  for (int i = 0; i < static_cast<int>(kept.size()); ++i) out.F.row(i) = sphere.F.row(kept[i]);
+  return out;
+}
+
+// Ten holes of 4 mean edge lengths on an icosphere of `subdivisions`: seconds per hole (the hole
+// reports' own, patch to checks) against the mesh's size.
+int run_small_holes(int subdivisions) {
+  const double edge = 1.1 * std::pow(0.5, subdivisions);  // the icosphere's mean edge, to a few percent
+  Mesh mesh = sphere_with_small_holes(subdivisions, 4 * edge);
+  const int input_vertices = mesh.num_vertices();
+  FillReport report;
+  try {
+    report = fill_holes(mesh, FillOptions{});
+  } catch (const Error& e) {
+    std::printf("%d subdivisions, small holes: failed: %s\n", subdivisions, e.what());
+    return 1;
+  }
+  double total = 0, slowest = 0;
+  int g2 = 0;
+  for (const HoleReport& h : report.holes) {
+    total += h.seconds;
+    slowest = std::max(slowest, h.seconds);
+    g2 += h.status == HoleStatus::filled && !h.linear;
+  }
+  const int holes = static_cast<int>(report.holes.size());
+  std::printf("%7d vertices (%d subdivisions): %d holes (%d filled, %d G2), %.3f s a hole (slowest %.3f s), "
+              "fill_holes %.2f s; peak %.0f MB\n",
+              input_vertices, subdivisions, holes, report.filled, g2, holes > 0 ? total / holes : 0.0, slowest,
+              report.seconds, static_cast<double>(bench::peak_bytes()) / 1e6);
+  return report.filled == holes ? 0 : 1;
+}
+
+template <class Case>
+void in_child(Case run) {
   std::fflush(stdout);
   const pid_t child = ::fork();
   if (child == 0) {
-    const int code = run_case(subdivisions, cap, method);
+    const int code = run();
     std::fflush(stdout);
     ::_exit(code);
   }
@@ -93,10 +153,15 @@ void in_child(int subdivisions, double cap, FairMethod method) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool large = false, harmonic_only = false;
+  bool large = false, harmonic_only = false, small_holes = false;
   for (int i = 1; i < argc; ++i) {
     large = large || std::strcmp(argv[i], "large") == 0;
     harmonic_only = harmonic_only || std::strcmp(argv[i], "harmonic") == 0;
+    small_holes = small_holes || std::strcmp(argv[i], "small-holes") == 0;
+  }
+  if (small_holes) {
+    for (int subdivisions : {5, 6, 7, 8}) in_child([=] { return run_small_holes(subdivisions); });
+    return 0;
   }
   struct Case {
     int subdivisions;
@@ -106,6 +171,7 @@ int main(int argc, char** argv) {
   if (large) cases.push_back({8, 0.53});
   for (const Case& c : cases)
     for (const FairMethod method : {FairMethod::flow, FairMethod::harmonic})
-      if (!harmonic_only || method == FairMethod::harmonic) in_child(c.subdivisions, c.cap, method);
+      if (!harmonic_only || method == FairMethod::harmonic)
+        in_child([=] { return run_case(c.subdivisions, c.cap, method); });
   return 0;
 }
