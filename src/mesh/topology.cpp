@@ -9,6 +9,7 @@
 #include <atomic>
 #include <numeric>
 #include <string>
+#include <utility>
 
 namespace fairsurf {
 namespace {
@@ -54,11 +55,11 @@ Csr build_vertex_vertices(const Faces& F, const Csr& vf) {
   return vv;
 }
 
-// Throws InvalidArgument, naming `who`, for a face index outside [0, num_vertices) or a face that
-// repeats a vertex.
-void check_faces(const Faces& F, int num_vertices, const std::string& who) {
+// Throws InvalidArgument, naming `who`, for a face from `first` on with an index outside
+// [0, num_vertices) or that repeats a vertex.
+void check_faces(const Faces& F, int num_vertices, const std::string& who, int first = 0) {
   if (num_vertices < 0) throw InvalidArgument(who + ": negative vertex count");
-  for (int f = 0; f < F.rows(); ++f) {
+  for (int f = first; f < F.rows(); ++f) {
     for (int k = 0; k < 3; ++k) {
       const int v = F(f, k);
       if (v < 0 || v >= num_vertices)
@@ -140,7 +141,137 @@ Csr derived_vertex_vertices(const Faces& F, const Csr& vf, const Topology& paren
   return vv;
 }
 
+// extend_topology's vertex -> faces: each base row, then the added faces at that vertex (their
+// indices exceed every base face's, so rows stay ascending).
+Csr extended_vertex_faces(const Csr& base, const Faces& F, int first_added, int num_vertices) {
+  Csr vf;
+  vf.offsets.assign(num_vertices + 1, 0);
+  for (int v = 0; v < base.rows(); ++v) vf.offsets[v + 1] = base.size(v);
+  for (int f = first_added; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) ++vf.offsets[F(f, k) + 1];
+  std::partial_sum(vf.offsets.begin(), vf.offsets.end(), vf.offsets.begin());
+  vf.indices.resize(vf.offsets.back());
+  std::vector<int> fill(vf.offsets.begin(), vf.offsets.end() - 1);
+  for (int v = 0; v < base.rows(); ++v) {
+    const auto row = base.row(v);
+    fill[v] = static_cast<int>(std::copy(row.begin(), row.end(), vf.indices.begin() + fill[v]) - vf.indices.begin());
+  }
+  for (int f = first_added; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) vf.indices[fill[F(f, k)]++] = f;
+  return vf;
+}
+
+// extend_topology's vertex -> neighbours: the base row where no added face touches the vertex,
+// else the base row merged with the added faces' neighbours, sorted and deduplicated.
+Csr extended_vertex_vertices(const Csr& base, const Faces& F, int first_added, const Csr& vf) {
+  const int n = vf.rows();
+  Csr vv;
+  vv.offsets.assign(n + 1, 0);
+  vv.indices.reserve(base.indices.size() + static_cast<std::size_t>(F.rows() - first_added) * 6);
+  std::vector<int> scratch;
+  for (int v = 0; v < n; ++v) {
+    const std::span<const int> old = v < base.rows() ? base.row(v) : std::span<const int>{};
+    const auto faces = vf.row(v);
+    const auto added = std::lower_bound(faces.begin(), faces.end(), first_added);
+    if (added == faces.end()) {
+      vv.indices.insert(vv.indices.end(), old.begin(), old.end());
+    } else {
+      scratch.assign(old.begin(), old.end());
+      for (auto f = added; f != faces.end(); ++f)
+        for (int k = 0; k < 3; ++k)
+          if (F(*f, k) != v) scratch.push_back(F(*f, k));
+      std::sort(scratch.begin(), scratch.end());
+      scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+      vv.indices.insert(vv.indices.end(), scratch.begin(), scratch.end());
+    }
+    vv.offsets[v + 1] = static_cast<int>(vv.indices.size());
+  }
+  return vv;
+}
+
+// extend_topology's edges, face_edges and edge_faces. The edges are the base's merged with the
+// added ones in lexicographic order; a base edge's index moves up by the added edges before it, and
+// the base faces' face_edges and edge_faces rows follow that move instead of being searched again.
+void add_extended_edges(const Topology& base, const Faces& F, Topology& t) {
+  const int first_added = base.num_faces;
+  // The added faces' edges that the base does not have, (min, max), sorted and unique.
+  std::vector<std::pair<int, int>> fresh;
+  const auto base_has = [&](int v, int w) {
+    if (v >= base.num_vertices) return false;
+    const auto row = base.vertex_vertices.row(v);
+    return std::binary_search(row.begin(), row.end(), w);
+  };
+  for (int f = first_added; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int v = std::min(F(f, k), F(f, (k + 1) % 3)), w = std::max(F(f, k), F(f, (k + 1) % 3));
+      if (!base_has(v, w)) fresh.emplace_back(v, w);
+    }
+  std::sort(fresh.begin(), fresh.end());
+  fresh.erase(std::unique(fresh.begin(), fresh.end()), fresh.end());
+
+  const int base_edges = static_cast<int>(base.edges.rows());
+  t.edges.resize(base_edges + static_cast<int>(fresh.size()), 2);
+  std::vector<int> moved(base_edges);  // base edge -> its index among all
+  for (int e = 0, i = 0, out = 0; e < base_edges || i < static_cast<int>(fresh.size()); ++out) {
+    const bool take_base = i == static_cast<int>(fresh.size()) ||
+                           (e < base_edges && std::make_pair(base.edges(e, 0), base.edges(e, 1)) < fresh[i]);
+    if (take_base) {
+      t.edges.row(out) = base.edges.row(e);
+      moved[e++] = out;
+    } else {
+      t.edges(out, 0) = fresh[i].first, t.edges(out, 1) = fresh[i].second;
+      ++i;
+    }
+  }
+  // An added face's edge: its index among all edges, by bisection in the merged list.
+  const auto edge_index = [&](int a, int b) {
+    const std::pair<int, int> key(std::min(a, b), std::max(a, b));
+    int lo = 0, hi = static_cast<int>(t.edges.rows());
+    while (lo < hi) {
+      const int mid = (lo + hi) / 2;
+      if (std::make_pair(t.edges(mid, 0), t.edges(mid, 1)) < key) lo = mid + 1;
+      else hi = mid;
+    }
+    return lo;
+  };
+
+  t.face_edges.resize(static_cast<std::size_t>(F.rows()) * 3);
+  for (std::size_t i = 0; i < base.face_edges.size(); ++i) t.face_edges[i] = moved[base.face_edges[i]];
+  for (int f = first_added; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) t.face_edges[3 * static_cast<std::size_t>(f) + k] = edge_index(F(f, k), F(f, (k + 1) % 3));
+
+  // Each edge's faces: the base row (ascending, all below first_added), then the added faces.
+  t.edge_faces.offsets.assign(t.edges.rows() + 1, 0);
+  for (int e = 0; e < base_edges; ++e) t.edge_faces.offsets[moved[e] + 1] = base.edge_faces.size(e);
+  for (std::size_t i = 3 * static_cast<std::size_t>(first_added); i < t.face_edges.size(); ++i)
+    ++t.edge_faces.offsets[t.face_edges[i] + 1];
+  std::partial_sum(t.edge_faces.offsets.begin(), t.edge_faces.offsets.end(), t.edge_faces.offsets.begin());
+  t.edge_faces.indices.resize(t.edge_faces.offsets.back());
+  std::vector<int> fill(t.edge_faces.offsets.begin(), t.edge_faces.offsets.end() - 1);
+  for (int e = 0; e < base_edges; ++e) {
+    const auto row = base.edge_faces.row(e);
+    int& at = fill[moved[e]];
+    at = static_cast<int>(std::copy(row.begin(), row.end(), t.edge_faces.indices.begin() + at) -
+                          t.edge_faces.indices.begin());
+  }
+  for (int f = first_added; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) t.edge_faces.indices[fill[t.face_edges[3 * static_cast<std::size_t>(f) + k]]++] = f;
+}
+
 }  // namespace
+
+Topology extend_topology(const Topology& base, const Faces& F, int num_vertices) {
+  if (F.rows() < base.num_faces || num_vertices < base.num_vertices)
+    throw InvalidArgument("extend_topology: the mesh has fewer faces or vertices than the base connectivity's");
+  check_faces(F, num_vertices, "extend_topology", base.num_faces);
+  Topology t;
+  t.num_vertices = num_vertices;
+  t.num_faces = static_cast<int>(F.rows());
+  t.vertex_faces = extended_vertex_faces(base.vertex_faces, F, base.num_faces, num_vertices);
+  t.vertex_vertices = extended_vertex_vertices(base.vertex_vertices, F, base.num_faces, t.vertex_faces);
+  add_extended_edges(base, F, t);
+  return t;
+}
 
 std::uint64_t topology_builds() { return builds.load(std::memory_order_relaxed); }
 

@@ -1,10 +1,12 @@
-// derive_topology (topology.h): the connectivity of a part of a mesh, derived from the whole mesh's,
-// must equal build_topology of the part's faces field by field, since every later stage reads it as
-// if it had been built (an order that differed would change results, not only counts).
+// derive_topology and extend_topology (topology.h): the connectivity of a part of a mesh, derived
+// from the whole mesh's, and of a mesh grown by added faces, extended from the smaller mesh's, must
+// equal build_topology of their faces field by field, since every later stage reads them as if they
+// had been built (an order that differed would change results, not only counts).
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/submesh.h>
 #include <fairsurf/mesh/topology.h>
+#include <fairsurf/patch/patch.h>
 
 #include <gtest/gtest.h>
 
@@ -57,7 +59,73 @@ void expect_derived_equals_built(const Topology& parent, const Part& part) {
                                              << " vertices";
 }
 
+// Extends the connectivity of F's first `base_faces` rows over `base_vertices` vertices to all of F
+// over `num_vertices`, and compares it with F's own build.
+void expect_extended_equals_built(const Faces& F, int base_faces, int base_vertices, int num_vertices) {
+  const Topology base = build_topology(F.topRows(base_faces), base_vertices);
+  const std::uint64_t before = topology_builds();
+  const Topology extended = extend_topology(base, F, num_vertices);
+  EXPECT_EQ(topology_builds(), before) << "extending is not a build";
+  EXPECT_TRUE(same_topology(extended, build_topology(F, num_vertices)))
+      << base_faces << " of " << F.rows() << " faces, " << base_vertices << " of " << num_vertices << " vertices";
+}
+
 }  // namespace
+
+// A hole's patch added to a scan, as hole_patch adds it (refined, so with new vertices): the
+// patched mesh's connectivity is extended from the scan's.
+TEST(ExtendTopology, APatchedScanEqualsItsBuild) {
+  const Mesh mesh = read_mesh(test::data_path("stanford_bunny_zipper.obj"));
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  const std::vector<std::vector<int>> loops = boundary_loops(mesh.F, topo);
+  ASSERT_GE(loops.size(), 2u);
+  const InitialPatch patch = hole_patch(mesh, topo, {loops[0], loops[1]});
+  ASSERT_GT(patch.mesh.num_vertices(), mesh.num_vertices());
+  EXPECT_TRUE(same_topology(patch.topology, build_topology(patch.mesh.F, patch.mesh.num_vertices())));
+  expect_extended_equals_built(patch.mesh.F, mesh.num_faces(), mesh.num_vertices(), patch.mesh.num_vertices());
+}
+
+// Faces added in every split of a closed mesh, a grid with a border and a thin torus: the added
+// faces take base edges, new edges before, between and after the base's, and vertices that only
+// they use; none added, or all.
+TEST(ExtendTopology, EverySplitOfAMeshEqualsItsBuild) {
+  for (const Mesh& mesh : {test::icosphere(1), test::regular_grid(5, 4), test::torus_grid(12, 4, 1.0, 0.1).mesh}) {
+    const int n = mesh.num_faces();
+    for (int base_faces : {0, 1, n / 3, n / 2, n - 1, n}) {
+      int base_vertices = 0;  // the vertices the base faces use, as if the later ones were added
+      for (int f = 0; f < base_faces; ++f)
+        for (int k = 0; k < 3; ++k) base_vertices = std::max(base_vertices, mesh.F(f, k) + 1);
+      expect_extended_equals_built(mesh.F, base_faces, base_vertices, mesh.num_vertices());
+      expect_extended_equals_built(mesh.F, base_faces, mesh.num_vertices(), mesh.num_vertices() + 2);
+    }
+  }
+}
+
+// build_topology represents non-manifold meshes; so does the extension, whichever faces are added.
+TEST(ExtendTopology, ANonManifoldMeshEqualsItsBuild) {
+  Faces F(7, 3);
+  F << 0, 1, 2,  //
+      1, 0, 3,   // the edge 0-1 has three faces
+      0, 1, 4,   //
+      0, 1, 2,   // the first face again
+      2, 1, 5,   //
+      4, 6, 7,   // a second fan at vertex 4
+      7, 6, 8;
+  for (int base_faces = 0; base_faces <= F.rows(); ++base_faces) expect_extended_equals_built(F, base_faces, 9, 10);
+}
+
+TEST(ExtendTopology, RejectsAddedFacesBuildWouldRejectAndAShrunkMesh) {
+  const Mesh grid = test::regular_grid(2, 2);
+  const Topology topo = build_topology(grid.F, grid.num_vertices());
+  Faces grown(grid.num_faces() + 1, 3);
+  grown.topRows(grid.num_faces()) = grid.F;
+  grown.bottomRows(1) << 0, 9, 4;  // vertex 9 is outside the 9 vertices
+  EXPECT_THROW(extend_topology(topo, grown, grid.num_vertices()), InvalidArgument);
+  grown.bottomRows(1) << 0, 4, 4;
+  EXPECT_THROW(extend_topology(topo, grown, grid.num_vertices()), InvalidArgument);
+  EXPECT_THROW(extend_topology(topo, grid.F.topRows(2), grid.num_vertices()), InvalidArgument);
+  EXPECT_THROW(extend_topology(topo, grid.F, grid.num_vertices() - 1), InvalidArgument);
+}
 
 // Neighbourhoods as fill and fair_region cut them (0 rings: the membrane's; 6: the fairing's) around
 // a border of a real scan, and the whole scan as its own part.

@@ -58,6 +58,16 @@ Topology build_topology(const Faces& F, int num_vertices);
 /// ascending or out of the parent's range, or for a face with an edge the parent does not have.
 Topology derive_topology(const Topology& parent, const Faces& F, std::span<const int> to_parent);
 
+/// The connectivity of a mesh grown from the one `base` was built for: the first base.num_faces
+/// rows of `F` are that mesh's faces, unchanged, and the rows after them are added faces, over
+/// `num_vertices` (at least base.num_vertices) vertices, the added ones last. The result equals
+/// build_topology(F, num_vertices), field by field, but only the added faces are searched: the base's
+/// rows are copied, and its edges keep their order with the added ones merged in. So a hole's patch
+/// added to a large mesh costs a copy of the mesh's connectivity, not a rebuild with its sorts. The
+/// base faces are trusted to be the ones `base` was built from (not checked). Not counted by
+/// topology_builds(). Throws InvalidArgument as build_topology does for an added face, and for an
+/// `F` or `num_vertices` smaller than the base's.
+Topology extend_topology(const Topology& base, const Faces& F, int num_vertices);
 /// Diagnostic counter: how many times build_topology has run in this process (all threads). Tests
 /// read its difference across a call to check that an operation builds each mesh's connectivity
 /// once and passes it down (deriving its parts' with derive_topology) instead of rebuilding it.
