@@ -12,8 +12,9 @@ namespace fairsurf {
 namespace {
 
 // Refines `patch` on (V, F), then relaxes its interior: the steps shared by holes and tubes.
-void refine_and_relax(const Vertices& V, const Faces& F, const Faces& patch, const PatchOptions& options,
-                      InitialPatch& out) {
+// `topo`: the connectivity of F, which the patched mesh's extends.
+void refine_and_relax(const Vertices& V, const Faces& F, const Topology& topo, const Faces& patch,
+                      const PatchOptions& options, InitialPatch& out) {
   out.refinement = refine_patch(V, F, patch, options.refinement);
   out.mesh.V = std::move(out.refinement.V);
   out.mesh.F = std::move(out.refinement.F);
@@ -21,8 +22,9 @@ void refine_and_relax(const Vertices& V, const Faces& F, const Faces& patch, con
   out.refinement.F.resize(0, 3);
   out.free_vertices = out.refinement.free_vertices;
   out.first_patch_face = out.refinement.first_patch_face;
-  // The patched mesh's connectivity, built once: the membrane reads it here, the caller's fairing later.
-  out.topology = build_topology(out.mesh.F, out.mesh.num_vertices());
+  // The patched mesh's connectivity, once: the membrane reads it here, the caller's fairing later.
+  // Refinement keeps the mesh's faces first, so it extends the mesh's own.
+  out.topology = extend_topology(topo, out.mesh.F, out.mesh.num_vertices());
   if (options.relax && !out.free_vertices.empty()) {
     out.refined_free.resize(static_cast<Eigen::Index>(out.free_vertices.size()), 3);
     for (std::size_t k = 0; k < out.free_vertices.size(); ++k)
@@ -78,7 +80,7 @@ InitialPatch hole_patch(const Mesh& mesh, const Topology& topo, const std::vecto
     patch.middleRows(rows, hole.faces.rows()) = hole.faces;
     rows += static_cast<int>(hole.faces.rows());
   }
-  refine_and_relax(mesh.V, mesh.F, patch, options, out);
+  refine_and_relax(mesh.V, mesh.F, topo, patch, options, out);
   out.border_dihedral_angle = border_dihedral_angle(out.mesh, out.topology, out.first_patch_face);
   return out;
 }
@@ -94,7 +96,7 @@ InitialPatch tube_patch(const Mesh& mesh, const Topology& topo, std::span<const 
     throw InvalidArgument("tube_patch: the topology was built for another mesh");
   InitialPatch out;
   out.tube = build_tube(mesh.V, mesh.F, topo, loop_a, loop_b, options.tube);
-  refine_and_relax(out.tube.V, mesh.F, out.tube.faces, options, out);
+  refine_and_relax(out.tube.V, mesh.F, topo, out.tube.faces, options, out);
   return out;
 }
 
