@@ -404,6 +404,7 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
       if (!linear || tube_crosses(linear->mesh, first_tube_face)) return report;
       return keep_linear_tube(mesh, *linear, report, "did not settle");
     }
+    if (!options.weigh_against_linear_tube) return report;
     const int creases = tube_creases(mesh.V, mesh.F, topo, first_tube_face);
     // Neither rule of loses_to_linear can hold, whatever the linear tube: no solve.
     if (report.continuity.max_normal_angle <= detail::kSmallestFoldAngle && !creases_against(creases, 0))
@@ -610,6 +611,11 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
   }
   report.seconds = detail::seconds_since(start);
   return report;
+}
+
+void keep_settled_flow(BlendOptions& options) {
+  keep_settled_flow(static_cast<FairRegionOptions&>(options));
+  options.weigh_against_linear_tube = false;
 }
 
 }  // namespace fairsurf

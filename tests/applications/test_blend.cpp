@@ -12,6 +12,8 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -433,6 +435,28 @@ TEST(BlendReal, ADescentThatFoldsAgainstTheLinearTubeIsNotKept) {
   const double delivered = tube_distance(m, b.cut.num_vertices(), b.uncut, b.h);
   std::printf("[blend] spot band: tube %.4f h from the uncut mesh\n", delivered);
   EXPECT_LT(delivered, 0.04);
+}
+
+// The same band with keep_settled_flow: the descent's settled G2 tube is delivered though it turns
+// the normal across the loops more than the linear tube; it stays clear of the mesh, and lies
+// farther from spot than the linear tube (the trade docs/blend.md describes).
+TEST(BlendReal, KeepingTheSettledFlowDeliversTheG2TubeTheAngleRuleRefuses) {
+  const Band b = band_across("spot.obj", {-0.293232, 0.0711038, 0.460405}, Eigen::Vector3d::UnitY());
+  Mesh m = b.cut;
+  BlendOptions o;
+  keep_settled_flow(o);
+  EXPECT_FALSE(o.weigh_against_linear_tube);
+  const BlendReport r = blend_loops(m, o);
+  std::printf("[blend] spot band, flow kept: %s\n", r.fair.note.c_str());
+  EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "G2");
+  EXPECT_EQ(r.fair.flow.stop_reason, FlowStopReason::steady);
+  EXPECT_EQ(r.fair.note.find("kept the linear"), std::string::npos) << r.fair.note;
+  EXPECT_GT(r.fair.continuity.max_normal_angle, 1.05 * 8.84 * std::numbers::pi / 180);
+  EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
+  const double kept = tube_distance(m, b.cut.num_vertices(), b.uncut, b.h);
+  std::printf("[blend] spot band, flow kept: tube %.4f h from the uncut mesh\n", kept);
+  EXPECT_GT(kept, 0.04);
+  EXPECT_LT(kept, 0.5);
 }
 
 // The same band without the descent: the time-stepped flow's diverged tube passes through the mesh,

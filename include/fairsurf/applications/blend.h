@@ -59,7 +59,17 @@ struct BlendOptions : FairRegionOptions {
   /// The reference measurement (BlendLoop::reference) is taken this many rings from each loop on
   /// the input; 0: not taken.
   int reference_ring = 3;
+  /// Deliver the linear ∆^k tube where the flow's settled tube turns the normal across the loops
+  /// more than it does or creases against it (docs/blend.md, "A G2 tube that turns more than the
+  /// linear one", "Creased tubes"). false: keep the flow's tube wherever it settles clear of the
+  /// mesh (keep_settled_flow).
+  bool weigh_against_linear_tube = true;
 };
+
+/// keep_settled_flow for a blend: the base's checks off (fair_region.h) and the flow's settled tube
+/// not weighed against the linear tube (weigh_against_linear_tube = false). The linear tube still
+/// takes a tube that does not settle or crosses the mesh.
+void keep_settled_flow(BlendOptions& options);
 
 /// One of the two loops that were joined.
 struct BlendLoop {
