@@ -24,6 +24,7 @@ struct BlendArgs {
   std::vector<int> loops;
   bool no_relax = false;
   bool no_descent_fallback = false;
+  bool keep_flow = false;
   RegionFairingArgs fairing;
 };
 
@@ -33,6 +34,7 @@ BlendOptions blend_options(const BlendArgs& args) {
   o.patch.relax = !args.no_relax;
   apply_solver_args(args.fairing.solver, o.patch.solver);
   o.descent_fallback = !args.no_descent_fallback;
+  apply_keep_flow(args.keep_flow, "blend", o);
   if (!args.loops.empty()) {
     o.loop_a = args.loops[0];
     o.loop_b = args.loops[1];
@@ -86,6 +88,7 @@ void run_blend(const BlendArgs& args) {
                      {{"command", "blend"},
                       {"inputs", args.inputs},
                       {"functions", f.functions},
+                      {"keep_flow", args.keep_flow},
                       {"repair", repair_json(repaired)}},
                      options.flow.step_kind);
   const BlendReport report =
@@ -149,6 +152,7 @@ void setup_blend(CLI::App& app) {
                 "Keep the time-stepped flow's last state when it does not settle, instead of continuing "
                 "with the energy descent (BlendOptions::descent_fallback; docs/blend.md)");
   add_region_fairing_options(cmd, args->fairing);
+  add_keep_flow_flag(cmd, args->keep_flow);
   cmd->callback([args] { run_blend(*args); });
 }
 

@@ -37,15 +37,9 @@ void apply_region_fairing_args(const RegionFairingArgs& args, FairRegionOptions&
 void add_keep_flow_flag(CLI::App* cmd, bool& keep_flow) {
   cmd->add_flag("--keep-flow", keep_flow,
                 "Keep the flow wherever it settles, even where its linear Delta^k floor re-predicts the held-out "
-                "rings better or the flow turns the border more than the floor (G2 over a C2 result that may lie "
-                "closer to the surface; the floor still takes a flow that does not settle)");
-}
-
-void apply_keep_flow(bool keep_flow, const std::string& command, FairRegionOptions& options) {
-  if (!keep_flow) return;
-  if (options.method == FairMethod::harmonic)
-    throw InvalidArgument(command + ": --keep-flow keeps the flow's result; --method harmonic runs no flow");
-  keep_settled_flow(options);
+                "rings better or the flow turns the border more than the floor (blend: turns the normal across "
+                "the loops more or creases against the linear tube): G2 over a C2 result that may lie closer to "
+                "the surface; the floor still takes a flow that does not settle");
 }
 
 nlohmann::json to_json(const ContinuityMeasure& m) {

@@ -3,7 +3,9 @@
 // (the run itself, progress and log: FlowCommandRun in flow_log.h).
 #pragma once
 
+#include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
+#include <fairsurf/mesh/errors.h>
 
 #include <CLI/CLI.hpp>
 
@@ -35,12 +37,19 @@ void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args);
 /// FairRegionOptions::harmonic_started(), `blend` from the plain defaults (fair_region.h says why).
 void apply_region_fairing_args(const RegionFairingArgs& args, FairRegionOptions& options);
 
-/// Adds --keep-flow (fill, fair): keep the flow wherever it settles (keep_settled_flow).
+/// Adds --keep-flow (fill, fair, blend): keep the flow wherever it settles (keep_settled_flow).
 void add_keep_flow_flag(CLI::App* cmd, bool& keep_flow);
 
-/// keep_settled_flow(options) where `keep_flow`; throws InvalidArgument, naming `command`, where it
-/// comes with the harmonic method, which runs no flow to keep.
-void apply_keep_flow(bool keep_flow, const std::string& command, FairRegionOptions& options);
+/// keep_settled_flow(options) where `keep_flow` (FillOptions and FairRegionOptions take the base's
+/// overload, BlendOptions its own); throws InvalidArgument, naming `command`, where it comes with the
+/// harmonic method, which runs no flow to keep.
+template <class Options>
+void apply_keep_flow(bool keep_flow, const std::string& command, Options& options) {
+  if (!keep_flow) return;
+  if (options.method == FairMethod::harmonic)
+    throw InvalidArgument(command + ": --keep-flow keeps the flow's result; --method harmonic runs no flow");
+  keep_settled_flow(options);
+}
 
 nlohmann::json to_json(const ContinuityMeasure& measure);
 /// Method, continuity requested and supported, flow kind and run (or harmonic figures), measure.

@@ -157,6 +157,22 @@ TEST_F(CliLabels, BlendSaysItDropsVertexProperties) {
   EXPECT_TRUE(read_mesh(file("b.ply")).vertex_scalars.empty());
 }
 
+// blend takes --keep-flow as fill and fair do (BlendReal.KeepingTheSettledFlowDeliversTheG2TubeTheAngleRuleRefuses
+// shows what it changes): the log records it, and the harmonic method, which runs no flow, refuses it.
+TEST_F(CliLabels, BlendKeepFlowIsLoggedAndNeedsTheFlow) {
+  ASSERT_EQ(test::run_cli("scene fig8 -o " + path("fig8.ply")).exit_code, 0);
+  auto run = test::run_cli("blend " + path("fig8.ply") + " -o " + path("b.ply") + " --keep-flow --quiet --log " +
+                           path("b.json"));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  std::ifstream log_file(file("b.json"));
+  EXPECT_EQ(nlohmann::json::parse(log_file)["keep_flow"], true);
+  run = test::run_cli("blend " + path("fig8.ply") + " -o " + path("h.ply") + " --keep-flow --method harmonic");
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_NE(run.out.find("blend: --keep-flow keeps the flow's result; --method harmonic runs no flow"),
+            std::string::npos)
+      << run.out;
+}
+
 // A band cut across spot's ear (bench_real_holes --all-slabs' spot 1477 y) leaves the ear's flat tip
 // as one loop: the tube folds back there, turning the normal by about 128° where the uncut ear
 // reads 9°. blend writes it and says so; a tube between loops that face each other (fig8's) does
