@@ -107,9 +107,10 @@ py::tuple smooth_binding(const py::handle& V, const py::handle& F, const SmoothA
   return py::make_tuple(to_numpy(std::move(mesh.V)), d);
 }
 
-// As the CLI's --keep-flow (apply_keep_flow): keep_settled_flow where asked, refused with the
-// harmonic method, which runs no flow to keep.
-void apply_keep_flow(bool keep_flow, const char* call, FairRegionOptions& o) {
+// As the CLI's --keep-flow (apply_keep_flow): keep_settled_flow where asked (BlendOptions take their
+// own overload), refused with the harmonic method, which runs no flow to keep.
+template <class Options>
+void apply_keep_flow(bool keep_flow, const char* call, Options& o) {
   if (!keep_flow) return;
   if (o.method == FairMethod::harmonic)
     throw InvalidArgument(std::string(call) + ": keep_flow keeps the flow's result; method 'harmonic' runs no flow");
@@ -195,18 +196,19 @@ py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handl
 }
 
 py::tuple blend_binding(const py::handle& V, const py::handle& F, const std::optional<std::pair<int, int>>& loops,
-                        const FairingArgs& args, bool relax, py::object callback) {
+                        const FairingArgs& args, bool relax, bool keep_flow, py::object callback) {
   Mesh mesh = to_mesh(V, F);
   BlendOptions options;
   set_fairing(args, options);
   options.patch.relax = relax;
+  apply_keep_flow(keep_flow, "blend", options);
   if (loops) std::tie(options.loop_a, options.loop_b) = *loops;
   Progress progress(std::move(callback));
   progress.attach(options.flow);
   const BlendReport report =
       keeping_last_state(mesh, [&] { return blend_loops(mesh, options, progress.flow_observer()); });
   progress.rethrow();
-  py::dict d("functions"_a = args.functions);
+  py::dict d("functions"_a = args.functions, "keep_flow"_a = keep_flow);
   for (const auto item : to_dict(report)) d[item.first] = item.second;
   return py::make_tuple(to_numpy(std::move(mesh.V)), to_numpy(std::move(mesh.F)), d);
 }
@@ -262,13 +264,13 @@ void register_flow_functions(py::module_& m) {
       "blend",
       [](const py::handle& V, const py::handle& F, std::optional<std::pair<int, int>> loops, std::string continuity,
          std::optional<Functions> functions, std::optional<Functions> f, std::string method, int max_steps, bool relax,
-         py::object progress) {
+         bool keep_flow, py::object progress) {
         return blend_binding(V, F, loops, {continuity, functions_kwarg("blend", functions, f), method, max_steps},
-                             relax, std::move(progress));
+                             relax, keep_flow, std::move(progress));
       },
       "V"_a, "F"_a, py::kw_only(), "loops"_a = py::none(), "continuity"_a = "G2", "functions"_a = py::none(),
       "f"_a = py::none(), "method"_a = "flow", "max_steps"_a = fair_steps, "relax"_a = true,
-      "progress"_a = py::none(),
+      "keep_flow"_a = false, "progress"_a = py::none(),
       "Joins two boundary loops by a fair tube, as `fairsurf blend`; returns (V, F, report).");
 }
 
