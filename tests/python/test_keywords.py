@@ -63,3 +63,15 @@ def test_fair_start_takes_the_cli_values_and_its_former_one(tmp_path):
     with pytest.raises(fairsurf.InvalidArgument) as error:
         fairsurf.fair(V, F, region=cap, start="membrane")
     assert str(error.value) == "fair: start must be 'harmonic' or 'flat' (alias 'input'), got 'membrane'"
+
+
+@pytest.mark.parametrize("call", ["fill_holes", "fair", "blend"])
+def test_keep_flow_is_reported_and_needs_the_flow(hand, call):
+    # `keep_flow` is --keep-flow (keep_settled_flow): the report says it was given, and the harmonic
+    # method, which runs no flow to keep, refuses it.
+    V, F = fairsurf.scene("fig8") if call == "blend" else hand
+    extra = {"region": np.arange(5)} if call == "fair" else {}
+    report = getattr(fairsurf, call)(V, F, keep_flow=True, max_steps=3, **extra)[-1]
+    assert report["keep_flow"] is True
+    with pytest.raises(fairsurf.InvalidArgument, match="keep_flow keeps the flow's result; method 'harmonic'"):
+        getattr(fairsurf, call)(V, F, keep_flow=True, method="harmonic", **extra)
