@@ -59,6 +59,20 @@ void expect_derived_equals_built(const Topology& parent, const Part& part) {
                                              << " vertices";
 }
 
+// Seven faces over vertices 0-8 (build_topology's for 10 leaves vertex 9 without a face): an edge
+// with three faces, a face given twice, two fans at a vertex.
+Faces non_manifold_faces() {
+  Faces F(7, 3);
+  F << 0, 1, 2,  //
+      1, 0, 3,   // the edge 0-1 has three faces
+      0, 1, 4,   //
+      0, 1, 2,   // the first face again
+      2, 1, 5,   //
+      4, 6, 7,   // a second fan at vertex 4
+      7, 6, 8;
+  return F;
+}
+
 // Extends the connectivity of F's first `base_faces` rows over `base_vertices` vertices to all of F
 // over `num_vertices`, and compares it with F's own build.
 void expect_extended_equals_built(const Faces& F, int base_faces, int base_vertices, int num_vertices) {
@@ -103,14 +117,7 @@ TEST(ExtendTopology, EverySplitOfAMeshEqualsItsBuild) {
 
 // build_topology represents non-manifold meshes; so does the extension, whichever faces are added.
 TEST(ExtendTopology, ANonManifoldMeshEqualsItsBuild) {
-  Faces F(7, 3);
-  F << 0, 1, 2,  //
-      1, 0, 3,   // the edge 0-1 has three faces
-      0, 1, 4,   //
-      0, 1, 2,   // the first face again
-      2, 1, 5,   //
-      4, 6, 7,   // a second fan at vertex 4
-      7, 6, 8;
+  const Faces F = non_manifold_faces();
   for (int base_faces = 0; base_faces <= F.rows(); ++base_faces) expect_extended_equals_built(F, base_faces, 9, 10);
 }
 
@@ -174,14 +181,7 @@ TEST(DeriveTopology, NeighbourhoodWhoseRingsTouchThemselves) {
 // build_topology represents a non-manifold parent (an edge with three faces, a face given twice, two
 // fans at a vertex); every part of it derives what it builds.
 TEST(DeriveTopology, EveryPartOfANonManifoldParent) {
-  Faces F(7, 3);
-  F << 0, 1, 2,  //
-      1, 0, 3,   // the edge 0-1 has three faces
-      0, 1, 4,   //
-      0, 1, 2,   // the first face again
-      2, 1, 5,   //
-      4, 6, 7,   // a second fan at vertex 4
-      7, 6, 8;
+  const Faces F = non_manifold_faces();
   const Topology topo = build_topology(F, 10);  // vertex 9 has no face
   for (int subset = 1; subset < (1 << F.rows()); ++subset) {
     std::vector<int> faces;
