@@ -154,7 +154,8 @@ Csr extended_vertex_faces(const Csr& base, const Faces& F, int first_added, int 
   std::vector<int> fill(vf.offsets.begin(), vf.offsets.end() - 1);
   for (int v = 0; v < base.rows(); ++v) {
     const auto row = base.row(v);
-    fill[v] = static_cast<int>(std::copy(row.begin(), row.end(), vf.indices.begin() + fill[v]) - vf.indices.begin());
+    std::copy(row.begin(), row.end(), vf.indices.begin() + fill[v]);
+    fill[v] += static_cast<int>(row.size());
   }
   for (int f = first_added; f < F.rows(); ++f)
     for (int k = 0; k < 3; ++k) vf.indices[fill[F(f, k)]++] = f;
@@ -189,12 +190,9 @@ Csr extended_vertex_vertices(const Csr& base, const Faces& F, int first_added, c
   return vv;
 }
 
-// extend_topology's edges, face_edges and edge_faces. The edges are the base's merged with the
-// added ones in lexicographic order; a base edge's index moves up by the added edges before it, and
-// the base faces' face_edges and edge_faces rows follow that move instead of being searched again.
-void add_extended_edges(const Topology& base, const Faces& F, Topology& t) {
-  const int first_added = base.num_faces;
-  // The added faces' edges that the base does not have, (min, max), sorted and unique.
+// The added faces' edges (from row first_added of F) that `base` does not have, as (min, max)
+// pairs, sorted and unique.
+std::vector<std::pair<int, int>> fresh_edges(const Topology& base, const Faces& F, int first_added) {
   std::vector<std::pair<int, int>> fresh;
   const auto base_has = [&](int v, int w) {
     if (v >= base.num_vertices) return false;
@@ -208,51 +206,62 @@ void add_extended_edges(const Topology& base, const Faces& F, Topology& t) {
     }
   std::sort(fresh.begin(), fresh.end());
   fresh.erase(std::unique(fresh.begin(), fresh.end()), fresh.end());
+  return fresh;
+}
 
-  const int base_edges = static_cast<int>(base.edges.rows());
-  t.edges.resize(base_edges + static_cast<int>(fresh.size()), 2);
-  std::vector<int> moved(base_edges);  // base edge -> its index among all
-  for (int e = 0, i = 0, out = 0; e < base_edges || i < static_cast<int>(fresh.size()); ++out) {
-    const bool take_base = i == static_cast<int>(fresh.size()) ||
-                           (e < base_edges && std::make_pair(base.edges(e, 0), base.edges(e, 1)) < fresh[i]);
-    if (take_base) {
-      t.edges.row(out) = base.edges.row(e);
+// The base's edges merged with `fresh` in lexicographic order into `edges`; returns each base
+// edge's index among them (moved up by the fresh edges before it).
+std::vector<int> merge_edges(const Edges& base, const std::vector<std::pair<int, int>>& fresh, Edges& edges) {
+  const int base_edges = static_cast<int>(base.rows()), fresh_count = static_cast<int>(fresh.size());
+  edges.resize(base_edges + fresh_count, 2);
+  std::vector<int> moved(base_edges);
+  for (int e = 0, i = 0, out = 0; e < base_edges || i < fresh_count; ++out) {
+    if (i == fresh_count || (e < base_edges && std::make_pair(base(e, 0), base(e, 1)) < fresh[i])) {
+      edges.row(out) = base.row(e);
       moved[e++] = out;
     } else {
-      t.edges(out, 0) = fresh[i].first, t.edges(out, 1) = fresh[i].second;
+      edges(out, 0) = fresh[i].first, edges(out, 1) = fresh[i].second;
       ++i;
     }
   }
-  // An added face's edge: its index among all edges, by bisection in the merged list.
-  const auto edge_index = [&](int a, int b) {
-    const std::pair<int, int> key(std::min(a, b), std::max(a, b));
-    int lo = 0, hi = static_cast<int>(t.edges.rows());
-    while (lo < hi) {
-      const int mid = (lo + hi) / 2;
-      if (std::make_pair(t.edges(mid, 0), t.edges(mid, 1)) < key) lo = mid + 1;
-      else hi = mid;
-    }
-    return lo;
-  };
+  return moved;
+}
 
+// Index of the edge (a, b) in `edges` (sorted lexicographically, holding it), by bisection.
+int sorted_edge_index(const Edges& edges, int a, int b) {
+  const std::pair<int, int> key(std::min(a, b), std::max(a, b));
+  int lo = 0, hi = static_cast<int>(edges.rows());
+  while (lo < hi) {
+    const int mid = (lo + hi) / 2;
+    if (std::make_pair(edges(mid, 0), edges(mid, 1)) < key) lo = mid + 1;
+    else hi = mid;
+  }
+  return lo;
+}
+
+// extend_topology's edges, face_edges and edge_faces: the base faces' entries follow their edges'
+// move (merge_edges) instead of being searched again; only the added faces' are searched.
+void add_extended_edges(const Topology& base, const Faces& F, Topology& t) {
+  const int first_added = base.num_faces;
+  const std::vector<int> moved = merge_edges(base.edges, fresh_edges(base, F, first_added), t.edges);
   t.face_edges.resize(static_cast<std::size_t>(F.rows()) * 3);
   for (std::size_t i = 0; i < base.face_edges.size(); ++i) t.face_edges[i] = moved[base.face_edges[i]];
   for (int f = first_added; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) t.face_edges[3 * static_cast<std::size_t>(f) + k] = edge_index(F(f, k), F(f, (k + 1) % 3));
+    for (int k = 0; k < 3; ++k)
+      t.face_edges[3 * static_cast<std::size_t>(f) + k] = sorted_edge_index(t.edges, F(f, k), F(f, (k + 1) % 3));
 
   // Each edge's faces: the base row (ascending, all below first_added), then the added faces.
   t.edge_faces.offsets.assign(t.edges.rows() + 1, 0);
-  for (int e = 0; e < base_edges; ++e) t.edge_faces.offsets[moved[e] + 1] = base.edge_faces.size(e);
+  for (std::size_t e = 0; e < moved.size(); ++e) t.edge_faces.offsets[moved[e] + 1] = base.edge_faces.size(static_cast<int>(e));
   for (std::size_t i = 3 * static_cast<std::size_t>(first_added); i < t.face_edges.size(); ++i)
     ++t.edge_faces.offsets[t.face_edges[i] + 1];
   std::partial_sum(t.edge_faces.offsets.begin(), t.edge_faces.offsets.end(), t.edge_faces.offsets.begin());
   t.edge_faces.indices.resize(t.edge_faces.offsets.back());
   std::vector<int> fill(t.edge_faces.offsets.begin(), t.edge_faces.offsets.end() - 1);
-  for (int e = 0; e < base_edges; ++e) {
-    const auto row = base.edge_faces.row(e);
-    int& at = fill[moved[e]];
-    at = static_cast<int>(std::copy(row.begin(), row.end(), t.edge_faces.indices.begin() + at) -
-                          t.edge_faces.indices.begin());
+  for (std::size_t e = 0; e < moved.size(); ++e) {
+    const auto row = base.edge_faces.row(static_cast<int>(e));
+    std::copy(row.begin(), row.end(), t.edge_faces.indices.begin() + fill[moved[e]]);
+    fill[moved[e]] += static_cast<int>(row.size());
   }
   for (int f = first_added; f < F.rows(); ++f)
     for (int k = 0; k < 3; ++k) t.edge_faces.indices[fill[t.face_edges[3 * static_cast<std::size_t>(f) + k]]++] = f;
