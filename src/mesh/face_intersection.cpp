@@ -174,21 +174,35 @@ std::vector<FaceIntersection> find_face_intersections(const Vertices& V, const F
   }
   const double cell = std::max(edge_total / (3.0 * query_faces.size()), 1e-12 * (region.hi - region.lo).norm());
   FaceGrid grid(region, cell > 0 ? cell : 1.0);
-  std::vector<Box> boxes(F.rows());
+  // Only the faces whose boxes meet the query faces' region can cross one: they are kept (ascending,
+  // with their boxes) and the grid holds their positions among them, so that a small patch on a
+  // large mesh stores nothing per face of the mesh but the query flags.
+  std::vector<int> near;
+  std::vector<Box> boxes;
   for (int f = 0; f < F.rows(); ++f) {
-    boxes[f] = face_box(V, F, f);
-    if (boxes[f].meets(region)) grid.insert(f, boxes[f]);
+    const Box b = face_box(V, F, f);
+    if (!b.meets(region)) continue;
+    grid.insert(static_cast<int>(near.size()), b);
+    near.push_back(f);
+    boxes.push_back(b);
   }
+  const auto position = [&](int f) {
+    return static_cast<int>(std::lower_bound(near.begin(), near.end(), f) - near.begin());
+  };
 
-  std::vector<int> seen(F.rows(), -1);
+  std::vector<int> seen(near.size(), -1);
   for (int f : query_faces) {
+    const int i = position(f);
+    // A query face outside the region its own box spans has a non-finite corner: it crosses nothing.
+    if (i == static_cast<int>(near.size()) || near[i] != f) continue;
     std::vector<int> crossed;
-    grid.for_cells(boxes[f], [&](std::size_t c) {
-      for (int g : grid.cell(c)) {
-        if (g == f || seen[g] == f) continue;
-        seen[g] = f;
+    grid.for_cells(boxes[i], [&](std::size_t c) {
+      for (int j : grid.cell(c)) {
+        const int g = near[j];
+        if (g == f || seen[j] == f) continue;
+        seen[j] = f;
         if (is_query[g] && g < f) continue;  // that pair was tested from g's side
-        if (!boxes[f].meets(boxes[g]) || faces_share_vertex(F, f, g)) continue;
+        if (!boxes[i].meets(boxes[j]) || faces_share_vertex(F, f, g)) continue;
         if (triangles_cross(corner(V, F, f, 0), corner(V, F, f, 1), corner(V, F, f, 2),
                             corner(V, F, g, 0), corner(V, F, g, 1), corner(V, F, g, 2)))
           crossed.push_back(g);
