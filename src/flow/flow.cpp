@@ -390,8 +390,8 @@ bool FlowRun::try_step(double tau, StepRecord& record) {
 // energy_descent, after a rejection: whether the last two trials, both rejected because E rose,
 // were promised the same decrease by the Gauss–Newton model (within 1%: shrinking τ no longer damps
 // the step, which is the model's own minimum) and that decrease is below steady_energy_tolerance·E,
-// or below ten times that and below what E rose by on both trials (the model's error there is
-// larger than its promise: it no longer resolves a decrease). Then E has stopped decreasing.
+// or below a hundred times that and below what E rose by on both trials (the model's error there
+// is larger than its promise: it no longer resolves a decrease). Then E has stopped decreasing.
 // Without this test the rejections went on shrinking τ over a dozen orders of magnitude, each a
 // factorization, until the damping finally bit and a step lowered E by a few 1e-7 of it
 // (docs/flow.md, "Energy descent").
@@ -404,7 +404,7 @@ bool FlowRun::model_minimum_reached(int consecutive_rejections) const {
   const double promised = last.predicted_decrease, earlier = before.predicted_decrease;
   if (std::abs(promised - earlier) > 0.01 * std::abs(earlier)) return false;
   const double rise = std::min(last.energy, before.energy) - energy_;
-  return promised < tolerance * energy_ || (promised < 10 * tolerance * energy_ && promised < rise);
+  return promised < tolerance * energy_ || (promised < 100 * tolerance * energy_ && promised < rise);
 }
 
 FlowReport FlowRun::run() {
