@@ -413,7 +413,10 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
     if (!linear) return report;
     if (!tube_crosses(linear->mesh, first_tube_face)) {
       const std::string reason = loses_to_linear(mesh, report, creases, *linear, topo, first_tube_face);
-      return reason.empty() ? report : keep_linear_tube(mesh, *linear, report, reason);
+      if (reason.empty()) return report;
+      FairRegionReport kept = keep_linear_tube(mesh, *linear, report, reason);
+      kept.checks_chose_linear = true;
+      return kept;
     }
     // The linear tube crosses the mesh: the flow's is weighed against the first lower one that does
     // not, the floor blend_lower_linear_tube would deliver.
@@ -429,6 +432,7 @@ FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<i
                                                                         " tube crosses the mesh)");
       kept.requested = options.continuity;
       kept.crossing_fallback = true;
+      kept.checks_chose_linear = true;
       return kept;
     }
     return report;

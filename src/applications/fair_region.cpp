@@ -105,10 +105,11 @@ void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& regi
   const bool floor = options.linear_floor && options.harmonic_start_iterations > 0;
   const Vertices start = floor ? sub.mesh.V : Vertices();
   std::string failure;
+  bool folded = false;
   try {
     report.flow = run_flow(sub.mesh.V, sub.mesh.F, local, region, flow, observer);
     if (report.flow.stop_reason != FlowStopReason::steady) failure = unsettled_reason(report.flow);
-    else if (floor) failure = border_fold_reason(sub, local, start, options);
+    else if (floor) folded = !(failure = border_fold_reason(sub, local, start, options)).empty();
   } catch (const NumericalError& e) {
     if (const auto* failure = dynamic_cast<const flow_detail::FlowFailure*>(&e))
       report.flow.well_posedness = failure->well_posedness;  // what the lost report held
@@ -121,6 +122,7 @@ void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& regi
   if (!floor || failure.empty()) return;
   sub.mesh.V = start;
   report.linear = true;
+  report.checks_chose_linear = folded;
   report.note = std::string("the ") + to_string(report.flow_kind) + " flow " + failure +
                 "; kept the linear ∆" + std::to_string(static_cast<int>(region.supported) + 1) +
                 " solution it started from";
@@ -229,6 +231,7 @@ void fair_submesh(Submesh& sub, const Topology& local, const Region& region, con
   HeldOutChoice choice = choose_by_held_out(sub, local, options, report, refined);
   report.held_out_linear = options.method == FairMethod::flow &&
                            (choice == HeldOutChoice::linear || choice == HeldOutChoice::refined_linear);
+  report.checks_chose_linear = report.held_out_linear;
   if (choice == HeldOutChoice::refined_linear) {
     HarmonicOptions once = harmonic;
     once.iterations = 1;

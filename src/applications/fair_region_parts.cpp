@@ -81,6 +81,7 @@ FairRegionReport combined_report(std::vector<FairRegionReport> parts, const Fair
     whole.free_vertices += part.free_vertices;
     whole.supported = std::min(whole.supported, part.supported);
     whole.linear = whole.linear || part.linear;
+    whole.checks_chose_linear = whole.checks_chose_linear || part.checks_chose_linear;
     whole.crossing_fallback = whole.crossing_fallback || part.crossing_fallback;
     whole.harmonic.free_vertices += part.harmonic.free_vertices;
     whole.harmonic.iterations += part.harmonic.iterations;

@@ -337,6 +337,7 @@ void report_fairing(const FairRegionReport& fairing, bool flowed, HoleReport& r)
   r.held_out_two_ring_flow_error = fairing.held_out_two_ring_flow_error;
   r.held_out_refined_linear_error = fairing.held_out_refined_linear_error;
   r.refined_start = fairing.refined_start;
+  r.checks_chose_linear = fairing.checks_chose_linear;
   r.two_ring_boundary_fits = flowed && fairing.two_ring_boundary_fits;
   r.steps = flowed ? fairing.flow.accepted_steps : 0;
   r.harmonic_solves = fairing.harmonic.iterations;

@@ -426,6 +426,7 @@ TEST(BlendReal, ADescentThatFoldsAgainstTheLinearTubeIsNotKept) {
   const BlendReport r = blend_loops(m, BlendOptions{});
   std::printf("[blend] spot band: %s\n", r.fair.note.c_str());
   EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)");
+  EXPECT_TRUE(r.fair.checks_chose_linear);  // the angle rule, which keep_settled_flow switches off
   EXPECT_NE(r.fair.note.find("the energy descent continued from its last state"), std::string::npos) << r.fair.note;
   EXPECT_NE(r.fair.note.find("the sixth-order flow's tube turns the normal across the loops by 12.3°, more than the "
                              "linear tube (8.84°)"),
@@ -451,6 +452,7 @@ TEST(BlendReal, KeepingTheSettledFlowDeliversTheG2TubeTheAngleRuleRefuses) {
   EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "G2");
   EXPECT_EQ(r.fair.flow.stop_reason, FlowStopReason::steady);
   EXPECT_EQ(r.fair.note.find("kept the linear"), std::string::npos) << r.fair.note;
+  EXPECT_FALSE(r.fair.checks_chose_linear);
   EXPECT_GT(r.fair.continuity.max_normal_angle, 1.05 * 8.84 * std::numbers::pi / 180);
   EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
   const double kept = tube_distance(m, b.cut.num_vertices(), b.uncut, b.h);

@@ -368,6 +368,7 @@ TEST(RealHoleKeepFlow, TheSettledFlowIsDeliveredWhereTheHeldOutRingsChoseALinear
   const BallHole ball = fill_ball_hole("spot.obj", {0.312594, 0.674309, -0.341185}, 4);
   ASSERT_EQ(ball.r.report.holes.size(), 1u);
   EXPECT_TRUE(ball.r.hole().linear) << ball.r.hole().note;
+  EXPECT_TRUE(ball.r.hole().checks_chose_linear) << ball.r.hole().note;
 
   Mesh kept = ball.cut;
   FillOptions options;
@@ -377,6 +378,7 @@ TEST(RealHoleKeepFlow, TheSettledFlowIsDeliveredWhereTheHeldOutRingsChoseALinear
   const HoleReport& hole = report.holes.front();
   ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
   EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
+  EXPECT_FALSE(hole.checks_chose_linear);
   EXPECT_TRUE(std::isnan(hole.held_out_flow_error) && std::isnan(hole.held_out_linear_error));
   EXPECT_EQ(kept.num_vertices(), ball.r.filled.num_vertices());  // the same patch, faired otherwise
   EXPECT_TRUE(kept.V.topRows(ball.cut.num_vertices()) == ball.cut.V) << "an input vertex moved";

@@ -143,6 +143,11 @@ struct FairRegionReport {
   /// flow, which was then not run on the region; where the flow ran and was not kept (it did not
   /// settle, threw or folded against its start), false.
   bool held_out_linear = false;
+  /// The linear solution was delivered over the flow by a check that keep_settled_flow switches
+  /// off: the held-out rings (held_out_linear) or the fold check (a settled flow that folds against
+  /// its start); blend: the angle or crease rule against the linear tube. Not where the flow did not
+  /// settle, threw or crossed the mesh. For a region in parts, set where any part's is.
+  bool checks_chose_linear = false;
   /// The fairing first reached crossed the mesh, and the linear solution delivered is the first
   /// that does not, possibly at a lower continuity than the rings support (`supported` is then
   /// that lower one; `note` says so).

@@ -124,6 +124,9 @@ struct HoleReport {
   bool refined_start = false;
   /// The delivered flow read its boundary data from 2-ring fits (FlowOptions::two_ring_boundary_fits).
   bool two_ring_boundary_fits = false;
+  /// The linear solution was delivered over the flow by the held-out rings or the fold check, the
+  /// checks keep_settled_flow switches off (FairRegionReport's).
+  bool checks_chose_linear = false;
   /// Why `supported` is below `requested` (too few complete rings around the hole, or a failed
   /// attempt at a higher continuity — a throw, no steady state, a crossing: FillOptions::
   /// fallback_on_failure). Empty otherwise.
