@@ -96,6 +96,8 @@ void run_blend(const BlendArgs& args) {
   if (report.fair.method == FairMethod::flow) warn_if_not_parabolic(report.fair.flow);
   warn_if_folded_back("a", report.a);
   warn_if_folded_back("b", report.b);
+  if (report.fair.checks_chose_linear)
+    note_keep_flow("the tube is the linear one, which the angle or crease rule preferred to the settled G2 tube");
   note_vertex_data_dropped(had_vertex_data, mesh, input_name, "blend");
   note_new_faces(mesh, input_faces, input_name, "blend");
   write_mesh_output(args.output, mesh);

@@ -70,6 +70,9 @@ void run_fair(const FairArgs& args) {
   const FairRegionReport report =
       run.run([&] { return fair_region(mesh, region, options, run.observer()); }, mesh, args.output);
   if (report.method == FairMethod::flow) warn_if_not_parabolic(report.flow);
+  if (report.checks_chose_linear)
+    note_keep_flow(std::string(report.parts.empty() ? "the region" : "a part of the region") +
+                   " got the linear solution, which the held-out rings or the fold check preferred to the flow");
   write_mesh_output(args.output, mesh);
   run.finish(to_json(report));
   std::printf("faired %s: %d free vertices, %s; border (%d vertices): max normal angle %s, max H jump "

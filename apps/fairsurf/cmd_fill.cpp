@@ -112,6 +112,7 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"held_out_two_ring_flow_error", r.held_out_two_ring_flow_error},
                    {"held_out_refined_linear_error", r.held_out_refined_linear_error},
                    {"refined_start", r.refined_start},
+                   {"checks_chose_linear", r.checks_chose_linear},
                    {"two_ring_boundary_fits", r.two_ring_boundary_fits},
                    {"note", r.note},
                    {"steps", r.steps},
@@ -191,6 +192,11 @@ void run_fill(const FillArgs& args) {
 
   for (const auto& r : report.holes) warn_if_not_parabolic(r.well_posedness, "hole " + std::to_string(r.index) + ": ");
   for (const auto& r : report.holes) warn_if_folded_back(r);
+  const auto checked = std::count_if(report.holes.begin(), report.holes.end(),
+                                     [](const HoleReport& r) { return r.checks_chose_linear; });
+  if (checked > 0)
+    note_keep_flow(std::to_string(checked) + (checked == 1 ? " hole got" : " holes got") +
+                   " the linear solution, which the held-out rings or the fold check preferred to the G2 flow");
   if (!args.quiet)
     for (const auto& r : report.holes) std::printf("%s\n", hole_line(r).c_str());
   const int selected = report.filled + report.failed;

@@ -42,6 +42,13 @@ void add_keep_flow_flag(CLI::App* cmd, bool& keep_flow) {
                 "the surface; the floor still takes a flow that does not settle");
 }
 
+void note_keep_flow(const std::string& what) {
+  std::fprintf(stderr,
+               "fairsurf: note: %s; --keep-flow keeps the flow wherever it settles clear of the mesh, G2 over a linear "
+               "result that may lie closer to the surface (docs/fill.md, \"Keeping the flow\")\n",
+               what.c_str());
+}
+
 nlohmann::json to_json(const ContinuityMeasure& m) {
   return {{"border_vertices", m.border_vertices},
           {"max_normal_angle", m.max_normal_angle},
@@ -66,6 +73,7 @@ nlohmann::json to_json(const FairRegionReport& r) {
     j["held_out_linear_error"] = r.held_out_linear_error;
     j["held_out_two_ring_flow_error"] = r.held_out_two_ring_flow_error;
     j["two_ring_boundary_fits"] = r.two_ring_boundary_fits;
+    j["checks_chose_linear"] = r.checks_chose_linear;
   }
   for (const FairRegionReport& part : r.parts) j["parts"].push_back(to_json(part));
   if (r.has_flow_report()) {

@@ -51,6 +51,11 @@ void apply_keep_flow(bool keep_flow, const std::string& command, Options& option
   keep_settled_flow(options);
 }
 
+/// Where the checks that --keep-flow switches off chose the linear solution over the flow
+/// (FairRegionReport::checks_chose_linear): "fairsurf: note: `what`; --keep-flow keeps ..." on
+/// standard error, so that the flag is found where it would change the result.
+void note_keep_flow(const std::string& what);
+
 nlohmann::json to_json(const ContinuityMeasure& measure);
 /// Method, continuity requested and supported, flow kind and run (or harmonic figures), measure.
 nlohmann::json to_json(const FairRegionReport& report);

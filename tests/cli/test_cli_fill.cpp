@@ -107,12 +107,17 @@ TEST_F(CliFill, KeepFlowDeliversTheSettledFlowWhereTheHeldOutRingsChoseTheFloor)
   auto run = test::run_cli("fill " + in + " -o " + quoted(path("default.ply")) + " --quiet");
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("(5 C2 (linear); 0 failed"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("fairsurf: note: 5 holes got the linear solution, which the held-out rings or the fold "
+                         "check preferred to the G2 flow; --keep-flow keeps the flow"),
+            std::string::npos)
+      << run.out;
 
   run = test::run_cli("fill " + in + " -o " + quoted(path("kept.ply")) + " --keep-flow --log " +
                       quoted(path("log.json")));
   ASSERT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("(5 G2; 0 failed"), std::string::npos) << run.out;
   EXPECT_EQ(run.out.find("re-predicts the 2 rings"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("--keep-flow keeps"), std::string::npos) << run.out;
   std::ifstream log_file(path("log.json"));
   const auto log = nlohmann::json::parse(log_file);
   EXPECT_EQ(log["keep_flow"], true);
