@@ -18,9 +18,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,20 +33,29 @@ namespace {
 
 using namespace fairsurf;
 
-// The icosphere without the faces that have a vertex above z = cap (the vertices stay, unused).
-Mesh holed_sphere(int subdivisions, double cap) {
+// The icosphere of `subdivisions` without the faces for which `removed(corners)` holds (the
+// vertices stay, unused).
+Mesh icosphere_without(int subdivisions, const std::function<bool(const std::array<Eigen::Vector3d, 3>&)>& removed) {
   const Mesh sphere = bench::icosphere(subdivisions);
   Mesh out;
   out.V = sphere.V;
   std::vector<int> kept;
   for (int f = 0; f < sphere.num_faces(); ++f) {
-    bool above = false;
-    for (int k = 0; k < 3; ++k) above = above || sphere.V(sphere.F(f, k), 2) > cap;
-    if (!above) kept.push_back(f);
+    const std::array<Eigen::Vector3d, 3> corners{sphere.V.row(sphere.F(f, 0)).transpose(),
+                                                  sphere.V.row(sphere.F(f, 1)).transpose(),
+                                                  sphere.V.row(sphere.F(f, 2)).transpose()};
+    if (!removed(corners)) kept.push_back(f);
   }
   out.F.resize(static_cast<int>(kept.size()), 3);
   for (int i = 0; i < static_cast<int>(kept.size()); ++i) out.F.row(i) = sphere.F.row(kept[i]);
   return out;
+}
+
+// The icosphere without the faces that have a vertex above z = cap.
+Mesh holed_sphere(int subdivisions, double cap) {
+  return icosphere_without(subdivisions, [cap](const std::array<Eigen::Vector3d, 3>& corners) {
+    return std::any_of(corners.begin(), corners.end(), [cap](const Eigen::Vector3d& p) { return p.z() > cap; });
+  });
 }
 
 int run_case(int subdivisions, double cap, FairMethod method) {
@@ -83,30 +94,20 @@ int run_case(int subdivisions, double cap, FairMethod method) {
 }
 
 // The icosphere without the faces whose three vertices lie within `radius` of one of ten points
-// spread over it (a Fibonacci lattice; the vertices stay, unused).
+// spread over it (a Fibonacci lattice).
 Mesh sphere_with_small_holes(int subdivisions, double radius) {
-  const Mesh sphere = bench::icosphere(subdivisions);
   std::vector<Eigen::Vector3d> centres;
   const double golden = M_PI * (3.0 - std::sqrt(5.0));
   for (int i = 0; i < 10; ++i) {
     const double z = 1.0 - (2.0 * i + 1.0) / 10.0, r = std::sqrt(1.0 - z * z);
     centres.emplace_back(r * std::cos(golden * i), r * std::sin(golden * i), z);
   }
-  Mesh out;
-  out.V = sphere.V;
-  std::vector<int> kept;
-  for (int f = 0; f < sphere.num_faces(); ++f) {
-    bool inside = false;
-    for (const Eigen::Vector3d& c : centres) {
-      bool all = true;
-      for (int k = 0; k < 3; ++k) all = all && (sphere.V.row(sphere.F(f, k)).transpose() - c).norm() < radius;
-      inside = inside || all;
-    }
-    if (!inside) kept.push_back(f);
-  }
-  out.F.resize(static_cast<int>(kept.size()), 3);
-  for (int i = 0; i < static_cast<int>(kept.size()); ++i) out.F.row(i) = sphere.F.row(kept[i]);
-  return out;
+  return icosphere_without(subdivisions, [&](const std::array<Eigen::Vector3d, 3>& corners) {
+    return std::any_of(centres.begin(), centres.end(), [&](const Eigen::Vector3d& c) {
+      return std::all_of(corners.begin(), corners.end(),
+                         [&](const Eigen::Vector3d& p) { return (p - c).norm() < radius; });
+    });
+  });
 }
 
 // Ten holes of 4 mean edge lengths on an icosphere of `subdivisions`: seconds per hole (the hole
