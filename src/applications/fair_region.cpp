@@ -109,7 +109,10 @@ void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& regi
   try {
     report.flow = run_flow(sub.mesh.V, sub.mesh.F, local, region, flow, observer);
     if (report.flow.stop_reason != FlowStopReason::steady) failure = unsettled_reason(report.flow);
-    else if (floor) folded = !(failure = border_fold_reason(sub, local, start, options)).empty();
+    else if (floor) {
+      failure = border_fold_reason(sub, local, start, options);
+      folded = !failure.empty();
+    }
   } catch (const NumericalError& e) {
     if (const auto* failure = dynamic_cast<const flow_detail::FlowFailure*>(&e))
       report.flow.well_posedness = failure->well_posedness;  // what the lost report held

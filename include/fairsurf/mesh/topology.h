@@ -68,6 +68,7 @@ Topology derive_topology(const Topology& parent, const Faces& F, std::span<const
 /// topology_builds(). Throws InvalidArgument as build_topology does for an added face, and for an
 /// `F` or `num_vertices` smaller than the base's.
 Topology extend_topology(const Topology& base, const Faces& F, int num_vertices);
+
 /// Diagnostic counter: how many times build_topology has run in this process (all threads). Tests
 /// read its difference across a call to check that an operation builds each mesh's connectivity
 /// once and passes it down (deriving its parts' with derive_topology) instead of rebuilding it.
