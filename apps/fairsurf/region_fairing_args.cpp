@@ -39,7 +39,7 @@ void add_keep_flow_flag(CLI::App* cmd, bool& keep_flow) {
                 "Keep the flow wherever it settles, even where its linear Delta^k floor re-predicts the held-out "
                 "rings better or the flow turns the border more than the floor (blend: turns the normal across "
                 "the loops more or creases against the linear tube): G2 over a C2 result that may lie closer to "
-                "the surface; the floor still takes a flow that does not settle");
+                "the surface; the floor still takes a flow that does not settle or crosses the mesh");
 }
 
 void note_keep_flow(const std::string& what) {
