@@ -4,7 +4,7 @@
 // are described in docs/fill.md, "Real holes benchmark".
 //
 // Usage: bench_real_holes [--section fill|fair|blend|all] [--mesh NAME | --mesh-file PATH...] [--no-cgal]
-//                         [--quick] [--random N [--seed S]] [--all-slabs] [--csv FILE]
+//                         [--quick] [--random N [--seed S]] [--all-slabs] [--keep-flow] [--csv FILE]
 #include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/applications/fill.h>
@@ -50,7 +50,31 @@ struct Args {
   bool all_slabs = false;  // blend: every_blend_slab instead of the fixed cases
   int random = 0;          // ball centres drawn at random instead of the fixed ones (0: fixed)
   std::uint64_t seed = 1;  // of those draws
+  bool keep_flow = false;  // fairsurf's rows as with --keep-flow
 };
+
+// What fairsurf's own rows run: the commands' defaults, or with `--keep-flow` their settled flows
+// kept over the linear floors the held-out rings and the fold and angle checks prefer.
+struct Ours {
+  // FillOptions{} is exactly what `fairsurf fill` runs without options (apps/fairsurf/cmd_fill.cpp
+  // starts from it and sets continuity G2, method flow, f = H: the defaults).
+  FillOptions fill;
+  // `fairsurf fair` without options: harmonic_started() with the flags' defaults (G2, f = H, flow,
+  // 200 steps), which are its own (apps/fairsurf/cmd_fair.cpp, region_fairing_args.cpp).
+  FairRegionOptions fair = FairRegionOptions::harmonic_started();
+  // BlendOptions{} is what `fairsurf blend` runs without options (apps/fairsurf/cmd_blend.cpp).
+  BlendOptions blend;
+};
+
+Ours ours_options(bool keep_flow) {
+  Ours ours;
+  if (keep_flow) {
+    keep_settled_flow(ours.fill);
+    keep_settled_flow(ours.fair);
+    keep_settled_flow(ours.blend);
+  }
+  return ours;
+}
 
 // N distinct vertices of `mesh` drawn by std::mt19937_64 (whose output the standard fixes), the same
 // on every platform for a seed: holes that are not the fixed cases, for the robustness of a choice
@@ -152,12 +176,10 @@ double max_border_angle(const FillReport& report) {
   return angle;
 }
 
-void fill_ours(const Mesh& cut, const Truth& truth, double h, Row& row) {
-  // FillOptions{} is exactly what `fairsurf fill` runs without options (apps/fairsurf/cmd_fill.cpp
-  // starts from it and sets continuity G2, method flow, f = H: the defaults).
+void fill_ours(const Mesh& cut, const FillOptions& options, const Truth& truth, double h, Row& row) {
   const auto start = Clock::now();
   try {
-    const FillReport report = run_fill(cut, FillOptions{}, truth, h, row.ours);
+    const FillReport report = run_fill(cut, options, truth, h, row.ours);
     row.continuity = continuity_text(report);
     row.seconds = report.seconds;
     row.status = report.failed > 0 ? "failed" : "ok";
@@ -221,7 +243,7 @@ void print_fill_row(const Row& r) {
   std::fflush(stdout);
 }
 
-Row fill_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) {
+Row fill_case(const Loaded& m, int centre, int radius_h, bool noisy, const Ours& ours, bool cgal) {
   Row row = ball_row("fill", m, centre, radius_h, noisy);
   const Eigen::Vector3d c = m.mesh.V.row(centre).transpose();
   bench::CutMesh cut = bench::cut_ball(m.mesh, c, radius_h * m.h);
@@ -230,7 +252,7 @@ Row fill_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) 
   row.disks = removed_disks(m.mesh, cut.mesh);
   if (!row.disks) add_note(row, "not disk holes (excluded from the summary)");
   const Truth truth(m, c);
-  fill_ours(cut.mesh, truth, m.h, row);
+  fill_ours(cut.mesh, ours.fill, truth, m.h, row);
   fill_baseline(cut.mesh, truth, m.h, row);
   if (cgal) fill_cgal(cut.mesh, truth, m.h, row);
   if (!cut.dropped.empty())
@@ -258,7 +280,7 @@ bool all_g2(const std::string& continuity) {
   return true;
 }
 
-std::string fill_section(const std::vector<Loaded>& meshes, bool cgal) {
+std::string fill_section(const std::vector<Loaded>& meshes, const Ours& ours, bool cgal) {
   std::printf("== fill: holes cut by a ball of radius r·h around vertex `centre`; distances in h ==\n");
   print_fill_header();
   Tally tally[2];
@@ -266,7 +288,7 @@ std::string fill_section(const std::vector<Loaded>& meshes, bool cgal) {
     for (const Loaded& m : meshes)
       for (int centre : m.centres)
         for (int radius_h : {4, 8}) {
-          const Row row = fill_case(m, centre, radius_h, noisy, cgal);
+          const Row row = fill_case(m, centre, radius_h, noisy, ours, cgal);
           print_fill_row(row);
           add_csv(row);
           Tally& t = tally[noisy];
@@ -289,14 +311,12 @@ std::string fill_section(const std::vector<Loaded>& meshes, bool cgal) {
 // ---------------------------------------------------------------------------------------------
 // Fair: the ball's vertices freed on the uncut mesh
 
-void fair_ours(const Mesh& mesh, const Topology& topo, const std::vector<int>& region, const Truth& truth,
-               double h, Row& row) {
-  // `fairsurf fair` without options: harmonic_started() with the flags' defaults (G2, f = H, flow,
-  // 200 steps), which are its own (apps/fairsurf/cmd_fair.cpp, region_fairing_args.cpp).
+void fair_ours(const Mesh& mesh, const Topology& topo, const std::vector<int>& region,
+               const FairRegionOptions& options, const Truth& truth, double h, Row& row) {
   Mesh faired = mesh;
   const auto start = Clock::now();
   try {
-    const FairRegionReport report = fair_region(faired, region, FairRegionOptions::harmonic_started());
+    const FairRegionReport report = fair_region(faired, region, options);
     row.status = report.linear || report.flow.stop_reason == FlowStopReason::steady ? "steady" : "not steady";
     row.continuity = delivered_label(report.supported, report.linear);
     row.steps = report.flow.accepted_steps;
@@ -305,6 +325,7 @@ void fair_ours(const Mesh& mesh, const Topology& topo, const std::vector<int>& r
     row.ours = measure(truth, faired.V, region, h);
     row.energy = bench::region_energy(faired.V, faired.F, topo, region);
     add_choice(row, report);
+    add_note(row, report.note);
   } catch (const std::exception& e) {
     row.seconds = seconds_since(start);
     row.status = "error";
@@ -367,7 +388,7 @@ void fair_cgal([[maybe_unused]] const Mesh& mesh, [[maybe_unused]] const Topolog
 #endif
 }
 
-Row fair_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) {
+Row fair_case(const Loaded& m, int centre, int radius_h, bool noisy, const Ours& ours, bool cgal) {
   Row row = ball_row("fair", m, centre, radius_h, noisy);
   const Eigen::Vector3d c = m.mesh.V.row(centre).transpose();
   Mesh mesh = m.mesh;
@@ -378,7 +399,7 @@ Row fair_case(const Loaded& m, int centre, int radius_h, bool noisy, bool cgal) 
   const Truth truth(m, c);
   const Topology topo = build_topology(mesh.F, mesh.num_vertices());
   row.truth_energy = bench::region_energy(m.mesh.V, m.mesh.F, topo, region);
-  fair_ours(mesh, topo, region, truth, m.h, row);
+  fair_ours(mesh, topo, region, ours.fair, truth, m.h, row);
   fair_baseline(mesh, topo, region, truth, m.h, row);
   fair_flow_alone(mesh, topo, region, truth, m.h, row);
   if (cgal) fair_cgal(mesh, topo, region, truth, m.h, row);
@@ -444,7 +465,7 @@ void print_fair_row(const Row& r) {
   std::fflush(stdout);
 }
 
-std::string fair_section(const std::vector<Loaded>& meshes, bool cgal) {
+std::string fair_section(const std::vector<Loaded>& meshes, const Ours& ours, bool cgal) {
   std::printf("== fair: the vertices strictly inside the ball freed on the uncut mesh; distances in h ==\n");
   print_fair_header();
   Tally tally;
@@ -454,7 +475,7 @@ std::string fair_section(const std::vector<Loaded>& meshes, bool cgal) {
     for (const Loaded& m : meshes)
       for (int centre : m.centres)
         for (int radius_h : {4, 8}) {
-          const Row row = fair_case(m, centre, radius_h, noisy, cgal);
+          const Row row = fair_case(m, centre, radius_h, noisy, ours, cgal);
           print_fair_row(row);
           energies.add(row);
           add_csv(row);
@@ -491,7 +512,7 @@ void blend_baseline(const Mesh& cut, const Truth& truth, double h, Row& row) {
   }
 }
 
-Row blend_case(const Loaded& m, const Slab& slab) {
+Row blend_case(const Loaded& m, const Slab& slab, const BlendOptions& options) {
   Row row;
   row.section = "blend";
   row.mesh = m.name;
@@ -504,8 +525,7 @@ Row blend_case(const Loaded& m, const Slab& slab) {
   Mesh mesh = cut.mesh;
   const auto start = Clock::now();
   try {
-    // BlendOptions{} is what `fairsurf blend` runs without options (apps/fairsurf/cmd_blend.cpp).
-    const BlendReport report = blend_loops(mesh, BlendOptions{});
+    const BlendReport report = blend_loops(mesh, options);
     row.status = report.fair.linear || report.fair.flow.stop_reason == FlowStopReason::steady ? "steady" : "not steady";
     row.continuity = delivered_label(report.fair.supported, report.fair.linear);
     add_note(row, report.fair.note);
@@ -560,7 +580,7 @@ struct BlendRatios {
   std::string text() const { return "mean distance " + faceted.text() + "; to the smooth surface: " + smooth.text(); }
 };
 
-std::string blend_section(const std::vector<Loaded>& meshes, bool quick, bool all_slabs) {
+std::string blend_section(const std::vector<Loaded>& meshes, const BlendOptions& options, bool quick, bool all_slabs) {
   std::printf("== blend: the band of the slab |(x - centre)·axis| < 2h through `centre` removed, the two loops "
               "blended; distances in h ==\n");
   std::printf("%-9s %6s %4s %-8s %-10s %-11s %5s %6s | %-12s | %-12s %5s | %6s %6s %s\n", "mesh", "centre", "axis",
@@ -569,7 +589,7 @@ std::string blend_section(const std::vector<Loaded>& meshes, bool quick, bool al
   BlendRatios ratios;
   for (const Loaded& m : meshes)
     for (const Slab& slab : all_slabs ? bench::every_blend_slab(m) : blend_slabs(m, quick ? 1 : 2)) {
-      const Row r = blend_case(m, slab);
+      const Row r = blend_case(m, slab, options);
       const double ratio = r.ours.count > 0 && r.has_baseline ? r.ours.mean / r.baseline.mean : NAN;
       std::printf("%-9s %6d %4c %-8s %-10s %-11s %5d %6.2f | %s | %s %5s | %6s %6s %s%s%s\n", r.mesh.c_str(),
                   r.centre, "xyz"[slab.axis], r.size.c_str(), r.status.c_str(), r.continuity.c_str(), r.steps,
@@ -604,6 +624,9 @@ void add_options(CLI::App& app, Args& args) {
   app.add_option("--seed", args.seed, "Seed of the --random draws")->type_name("S")->capture_default_str();
   app.add_flag("--all-slabs", args.all_slabs, "Blend every plane that qualifies instead of the fixed cases");
   app.add_option("--csv", args.csv, "Write every row of every section to FILE")->type_name("FILE");
+  app.add_flag("--keep-flow", args.keep_flow,
+               "fairsurf's rows as `fairsurf fill|fair|blend --keep-flow`: the settled flow kept over the linear "
+               "floor that the held-out rings and the fold and angle checks prefer");
 }
 
 }  // namespace
@@ -631,11 +654,13 @@ int main(int argc, char** argv) {
       for (int c : m.centres) std::printf(" %d", c);
       std::printf("\n");
     }
+    const Ours ours = ours_options(args.keep_flow);
+    if (args.keep_flow) std::printf("fairsurf's rows with --keep-flow\n");
     std::vector<std::string> summaries;
     const auto wanted = [&](const char* section) { return args.section == section || args.section == "all"; };
-    if (wanted("fill")) summaries.push_back(fill_section(meshes, args.cgal));
-    if (wanted("fair")) summaries.push_back(fair_section(meshes, args.cgal));
-    if (wanted("blend")) summaries.push_back(blend_section(meshes, args.quick, args.all_slabs));
+    if (wanted("fill")) summaries.push_back(fill_section(meshes, ours, args.cgal));
+    if (wanted("fair")) summaries.push_back(fair_section(meshes, ours, args.cgal));
+    if (wanted("blend")) summaries.push_back(blend_section(meshes, ours.blend, args.quick, args.all_slabs));
     std::string overall;
     for (const auto& s : summaries) overall += (overall.empty() ? "" : " | ") + s;
     std::printf("overall: %s\n", overall.c_str());
