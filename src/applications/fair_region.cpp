@@ -70,7 +70,7 @@ FairRegionOptions FairRegionOptions::harmonic_started() {
 }
 
 void keep_settled_flow(FairRegionOptions& options) {
-  options.held_out_rings = 0;
+  options.held_out_may_choose_linear = false;
   options.max_border_angle_ratio = std::numeric_limits<double>::infinity();
 }
 
@@ -141,15 +141,19 @@ enum class HeldOutChoice { flow, two_ring_flow, linear, refined_linear };
 // `refined` (fill): one ∆^k solve from these positions of the free vertices is weighed first, and
 // taken where it beats the re-evaluated solution by kRefinedStartMargin (the flows are then not tried).
 // The linear method (method = harmonic) weighs only these two: with `refined` and held-out rings it
-// returns refined_linear or linear, else linear.
+// returns refined_linear or linear, else linear. Without held_out_may_choose_linear the flow weighs
+// only its two boundary fits.
 HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, const FairRegionOptions& options,
                                  FairRegionReport& report, const Vertices* refined) {
   const bool linear_method = options.method == FairMethod::harmonic;
   if (options.held_out_rings <= 0) return linear_method ? HeldOutChoice::linear : HeldOutChoice::flow;
   if (linear_method && !refined) return HeldOutChoice::linear;
   if (!linear_method && (!options.linear_floor || options.harmonic_start_iterations <= 0)) return HeldOutChoice::flow;
-  const fair_detail::HeldOutErrors errors =
-      fair_detail::held_out_errors(sub, local, options.held_out_rings, options, refined, !linear_method);
+  const bool may_choose_linear = linear_method || options.held_out_may_choose_linear;
+  if (!may_choose_linear && !(options.held_out_two_ring_fits && !options.flow.two_ring_boundary_fits))
+    return HeldOutChoice::flow;
+  const fair_detail::HeldOutErrors errors = fair_detail::held_out_errors(
+      sub, local, options.held_out_rings, options, may_choose_linear ? refined : nullptr, !linear_method);
   report.held_out_flow_error = errors.flow;
   report.held_out_two_ring_flow_error = errors.two_ring_flow;
   report.held_out_linear_error = errors.linear;
@@ -171,7 +175,7 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
   if (linear_method) return HeldOutChoice::linear;
   const bool two_ring = errors.two_ring_flow < errors.flow;  // false for NaN (not weighed)
   const double best_flow = two_ring ? errors.two_ring_flow : errors.flow;
-  if (errors.linear * options.held_out_margin < best_flow) {
+  if (may_choose_linear && errors.linear * options.held_out_margin < best_flow) {
     report.flow.well_posedness = errors.flow_well_posedness;  // the flow that was weighed, not run here
     std::snprintf(text, sizeof text,
                   "the linear ∆%d solution re-predicts the %d rings around the region better than the %s "

@@ -18,6 +18,8 @@ void expect_same_fairing(const FairRegionOptions& a, const FairRegionOptions& b)
   EXPECT_EQ(a.harmonic_start_iterations, b.harmonic_start_iterations);
   EXPECT_EQ(a.linear_floor, b.linear_floor);
   EXPECT_EQ(a.held_out_rings, b.held_out_rings);
+  EXPECT_EQ(a.held_out_may_choose_linear, b.held_out_may_choose_linear);
+  EXPECT_EQ(a.max_border_angle_ratio, b.max_border_angle_ratio);
   EXPECT_EQ(a.held_out_two_ring_fits, b.held_out_two_ring_fits);
   EXPECT_EQ(a.flow.two_ring_boundary_fits, b.flow.two_ring_boundary_fits);
   EXPECT_EQ(a.harmonic_solver.ordering, b.harmonic_solver.ordering);
@@ -51,16 +53,21 @@ TEST(ApplicationOptions, BlendStartsFromThePlainFairingDefaults) {
 }
 
 // keep_settled_flow switches off the two checks that weigh a settled flow against its floor and
-// nothing else: the floor itself stays for a flow that does not settle.
-TEST(ApplicationOptions, KeepingTheSettledFlowSwitchesOffTheHeldOutRingsAndTheFoldCheckOnly) {
+// nothing else: the held-out rings still choose the flow's boundary fits, and the floor stays for a
+// flow that does not settle.
+TEST(ApplicationOptions, KeepingTheSettledFlowSwitchesOffTheLinearChoiceAndTheFoldCheckOnly) {
   FillOptions kept;
   keep_settled_flow(kept);
-  EXPECT_EQ(kept.held_out_rings, 0);
+  EXPECT_FALSE(kept.held_out_may_choose_linear);
   EXPECT_TRUE(std::isinf(kept.max_border_angle_ratio));
   EXPECT_TRUE(kept.linear_floor);
+  EXPECT_EQ(kept.held_out_rings, FillOptions{}.held_out_rings);
+  EXPECT_NE(kept.held_out_rings, 0);
+  EXPECT_TRUE(kept.held_out_two_ring_fits);
   FillOptions expected;
-  expected.held_out_rings = kept.held_out_rings;
+  expected.held_out_may_choose_linear = false;
   expected.max_border_angle_ratio = kept.max_border_angle_ratio;
   expect_same_fairing(kept, expected);
-  EXPECT_NE(FillOptions{}.held_out_rings, 0);  // so the test above changes something
+  EXPECT_TRUE(FillOptions{}.held_out_may_choose_linear);  // so the test above changes something
+  EXPECT_FALSE(std::isinf(FillOptions{}.max_border_angle_ratio));
 }

@@ -75,6 +75,10 @@ struct FairRegionOptions {
   /// hole's two fills apart, and such a tie goes to the G2 that was asked for; on marked regions it
   /// does not pay (docs/fill.md, "Ties go to the flow"). At least 1.
   double held_out_margin = 1.0;
+  /// With held_out_rings: whether they may choose a linear solution (the ∆^k floor, or fill's solve
+  /// from the patch before its membrane). false (keep_settled_flow): they only choose the flow's
+  /// boundary fits, 1-ring or 2-ring (held_out_two_ring_fits), and are not run without the choice.
+  bool held_out_may_choose_linear = true;
   /// With the linear floor: a flow whose steady state turns the normal across the region's border
   /// (ContinuityMeasure::max_normal_angle) by more than this many times the ∆^k solution it started
   /// from does, and by more than 5 degrees, folds against it: the linear solution is kept, reported
@@ -102,7 +106,8 @@ struct FairRegionOptions {
 };
 
 /// Keeps the flow wherever it settles: switches off the two checks that weigh a settled flow against
-/// its linear floor, the held-out rings (held_out_rings = 0) and the fold check
+/// its linear floor, the held-out rings' choice of a linear solution (held_out_may_choose_linear =
+/// false; they still choose the flow's 1-ring or 2-ring boundary fits) and the fold check
 /// (max_border_angle_ratio = ∞). The floor still takes a flow that throws or does not settle, and
 /// fill's fallbacks a patch that crosses the mesh. For a user who wants the G2 asked for over a C2
 /// result that may lie closer to the surface, which on real holes it often does (docs/fill.md,
