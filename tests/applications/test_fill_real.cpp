@@ -478,6 +478,36 @@ TEST(RealNoisyHole, TheHeldOutRingsChooseTwoRingBoundaryDataAndTheG2FillBeatsThe
   EXPECT_LT(r.distance, 0.7 * r.floor_distance);
 }
 
+// The same noisy hole with keep_settled_flow: the held-out rings no longer choose a linear solution,
+// but they still choose the flow's boundary data, and the 2-ring fits they prefer bring the kept flow
+// closer to the clean surface than the flow on 1-ring fits (the held-out rings off altogether, as
+// --keep-flow first did).
+TEST(RealNoisyHole, KeepingTheFlowStillTakesTheTwoRingBoundaryDataTheHeldOutRingsPrefer) {
+  const Mesh truth = read_mesh(test::data_path("blub.obj"));
+  const double h = test::mean_edge_length(truth);
+  Mesh cut = test::cut_ball(truth, {0.176282, 0.148983, -0.699856}, 4 * h);
+  test::add_normal_noise(cut, 0.1 * h, 2439);
+  FillOptions kept;
+  keep_settled_flow(kept);
+  FillOptions one_ring = kept;
+  one_ring.held_out_rings = 0;
+  Mesh a = cut, b = cut;
+  const FillReport ra = fill_holes(a, kept);
+  const FillReport rb = fill_holes(b, one_ring);
+  ASSERT_EQ(ra.holes.size(), 1u);
+  ASSERT_EQ(rb.holes.size(), 1u);
+  const HoleReport& hole = ra.holes.front();
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
+  EXPECT_EQ(delivered_label(rb.holes.front().supported, rb.holes.front().linear), "G2") << rb.holes.front().note;
+  EXPECT_TRUE(hole.two_ring_boundary_fits) << hole.note;
+  EXPECT_FALSE(rb.holes.front().two_ring_boundary_fits);
+  const double two_ring = mean_new_vertex_distance(a, cut.num_vertices(), truth) / h;
+  const double one_ring_distance = mean_new_vertex_distance(b, cut.num_vertices(), truth) / h;
+  std::printf("[noisy hole, keep flow] blub 4h, 0.1h noise: 2-ring fits %.3f h, 1-ring fits %.3f h\n", two_ring,
+              one_ring_distance);
+  EXPECT_LT(two_ring, 0.8 * one_ring_distance);  // 0.060 h against 0.088 h
+}
+
 // data/hemisphere.off (pmp-library) is the unit sphere above z ≈ 0.1, open along a 120-edge circle
 // that meets any flat lid at about a right angle. Its triangulation keeps that angle low with
 // slivers (177°) along the border; the refinement must flip them away (patch_refinement.h), or the
