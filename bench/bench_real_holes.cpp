@@ -663,7 +663,7 @@ int main(int argc, char** argv) {
     if (wanted("blend")) summaries.push_back(blend_section(meshes, ours.blend, args.quick, args.all_slabs));
     std::string overall;
     for (const auto& s : summaries) overall += (overall.empty() ? "" : " | ") + s;
-    std::printf("overall: %s\n", overall.c_str());
+    std::printf("overall%s: %s\n", args.keep_flow ? " (--keep-flow)" : "", overall.c_str());
     if (!args.csv.empty()) write_file_atomically(args.csv, csv_text, "bench_real_holes");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
