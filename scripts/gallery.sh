@@ -176,13 +176,13 @@ render_row "$images/fig6_willmore.png" "$range" "noisy torus, Willmore flow, six
 table "$work/clean.obj" clean input ${fig6[@]+"${fig6[@]}"}
 
 # --- Fig 5: hole filling on a real scan (fairsurf fill) --------------------------------------------
-begin_figure "Fig 5: filling the open base of a real scan" "$scan: its boundary loop filled with G2 data."
+begin_figure "Fig 5: filling the open base of a real scan" "$scan: its boundary loop filled with G2 data, once for each f. \`--keep-flow\` keeps the sixth-order flow wherever it settles, so the two f differ; without it the held-out rings may give the hole the linear ∆³ fill, the same for every f, as they do on the demosthenes base (docs/fill.md, 'Keeping the flow')."
 if has_command fill; then
   run clean "$fs" convert "$scan" -o "$work/input.obj" --force
   fills=()
   for f in H absHpH:0.5; do
     name=fill_${f//:/}
-    if run "$name" "$fs" fill "$work/input.obj" -o "$work/$name.obj" --functions "$f" --max-steps "$cap" --quiet; then
+    if run "$name" "$fs" fill "$work/input.obj" -o "$work/$name.obj" --functions "$f" --max-steps "$cap" --keep-flow --quiet; then
       curv "$name" && fills+=("$name")
       echo "    $(shown "$(cat "$work/$name.out")")" >>"$work/commands"
     else
