@@ -150,8 +150,7 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
   if (linear_method && !refined) return HeldOutChoice::linear;
   if (!linear_method && (!options.linear_floor || options.harmonic_start_iterations <= 0)) return HeldOutChoice::flow;
   const bool may_choose_linear = linear_method || options.held_out_may_choose_linear;
-  if (!may_choose_linear && !(options.held_out_two_ring_fits && !options.flow.two_ring_boundary_fits))
-    return HeldOutChoice::flow;
+  if (!may_choose_linear && !fair_detail::weighs_two_ring_fits(options)) return HeldOutChoice::flow;
   const fair_detail::HeldOutErrors errors = fair_detail::held_out_errors(
       sub, local, options.held_out_rings, options, may_choose_linear ? refined : nullptr, !linear_method);
   report.held_out_flow_error = errors.flow;

@@ -104,7 +104,7 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
                       std::back_inserter(held_out));
   HeldOutErrors errors;
   if (held_out.empty()) return errors;
-  const bool weigh_two_ring = fairing.held_out_two_ring_fits && !fairing.flow.two_ring_boundary_fits;
+  const bool weigh_two_ring = weighs_two_ring_fits(fairing);
   try {  // once for every trial, each fairing a copy of this mesh: a mesh that fails fails them all
     require_valid(validate(sub.mesh, topo), Requirements{}, "fair_region");
   } catch (const Error&) {

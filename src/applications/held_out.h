@@ -25,6 +25,12 @@ inline constexpr double kRefinedStartMargin = 2.0;
 /// the crawl (docs/fill.md, "The held-out trials' budget").
 inline constexpr int kHeldOutTrialSteps = 40;
 
+/// Whether the held-out rings weigh the flow on 2-ring boundary fits too: asked for
+/// (held_out_two_ring_fits) and not already the flow's own fits.
+inline bool weighs_two_ring_fits(const FairRegionOptions& fairing) {
+  return fairing.held_out_two_ring_fits && !fairing.flow.two_ring_boundary_fits;
+}
+
 /// Mean normal distance of the held-out input vertices from where each fairing puts them, in units
 /// of the mean edge length at those vertices. ∞ when that fairing failed.
 struct HeldOutErrors {
