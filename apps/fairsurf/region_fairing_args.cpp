@@ -17,7 +17,9 @@ void add_region_fairing_options(CLI::App* cmd, RegionFairingArgs& args) {
                   "flow (default: the geometric flow to a steady state) or harmonic (cotangent "
                   "Laplacian^(k+1) x = 0, the linear baseline)");
   add_solver_options(cmd, args.solver);
-  cmd->add_option("--max-steps", args.max_steps, "Stop the flow after this many accepted steps (default 200)")
+  cmd->add_option("--max-steps", args.max_steps,
+                  "Stop the flow after this many accepted steps (default: 500 for fair's energy descent from the "
+                  "Delta^k start, 200 for a time-stepped flow: fair --start flat, blend)")
       ->check(whole_number_at_least(1));
   cmd->add_option("--log", args.log, "Write a JSON report with every flow step here");
   cmd->add_flag("--quiet", args.quiet, "No progress line");
@@ -29,7 +31,7 @@ void apply_region_fairing_args(const RegionFairingArgs& args, FairRegionOptions&
   o.continuity = parse_continuity(args.continuity);
   o.method = parse_fair_method(args.method);
   o.flow.functions = args.functions;
-  o.flow.max_steps = args.max_steps;
+  if (args.max_steps) o.flow.max_steps = *args.max_steps;
   apply_solver_args(args.solver, o.flow.solver);
   apply_solver_args(args.solver, o.harmonic_solver);
 }
@@ -111,7 +113,8 @@ std::string summary(const FairRegionReport& r) {
   if (!r.note.empty()) out += "; " + r.note;
   if (!r.linear && r.flow.stop_reason != FlowStopReason::steady)
     out += "; NOT steady: " + unsettled_reason(r.flow) + "; the result is the flow's state after its last step" +
-           (r.flow.final_max_velocity > r.flow.initial_max_velocity
+           (r.flow.step_kind == FlowStepKind::energy_descent ? " (E was still falling: raise --max-steps)"
+            : r.flow.final_max_velocity > r.flow.initial_max_velocity
                 ? " (more steps drift further from a steady state: a lower --max-steps keeps an earlier "
                   "state; docs/blend.md, regions with no steady state)"
                 : " (max|V| was still falling: raise --max-steps)");

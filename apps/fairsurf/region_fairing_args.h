@@ -12,6 +12,7 @@
 #include "command.h"
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,7 @@ struct RegionFairingArgs {
   std::vector<std::string> functions{"H"};
   std::string method = "flow";
   SolverArgs solver;
-  int max_steps = FairRegionOptions::default_fair_flow_options().max_steps;
+  std::optional<int> max_steps;  ///< unset: the options' own limit (fair 500, blend 200)
   std::string log;
   bool force = false, quiet = false, repair = false;
 };

@@ -162,16 +162,16 @@ struct FairingArgs {
   std::string continuity;
   Functions functions;
   std::string method;
-  int max_steps;
+  std::optional<int> max_steps;  ///< unset: the options' own limit
 };
 
-// As apply_region_fairing_args in the CLI: continuity, method, f and the step limit on `o` (a
-// FairRegionOptions, or the BlendOptions that derive from it).
+// As apply_region_fairing_args in the CLI: continuity, method, f and the step limit, where given,
+// on `o` (a FairRegionOptions, or the BlendOptions that derive from it).
 void set_fairing(const FairingArgs& a, FairRegionOptions& o) {
   o.continuity = parse_continuity(a.continuity);
   o.method = parse_fair_method(a.method);
   o.flow.functions = a.functions;
-  o.flow.max_steps = a.max_steps;
+  if (a.max_steps) o.flow.max_steps = *a.max_steps;
 }
 
 py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handle& region, const FairingArgs& args,
@@ -216,7 +216,6 @@ py::tuple blend_binding(const py::handle& V, const py::handle& F, const std::opt
 }  // namespace
 
 void register_flow_functions(py::module_& m) {
-  const int fair_steps = FairRegionOptions::default_fair_flow_options().max_steps;
   // `functions` and `fixed_vertices` also answer to their aliases `f` and `fixed` (named_or_alias).
   m.def(
       "smooth",
@@ -251,25 +250,25 @@ void register_flow_functions(py::module_& m) {
   m.def(
       "fair",
       [](const py::handle& V, const py::handle& F, const py::handle& region, std::string continuity,
-         std::optional<Functions> functions, std::optional<Functions> f, std::string method, int max_steps,
-         std::string start, bool keep_flow, py::object progress) {
+         std::optional<Functions> functions, std::optional<Functions> f, std::string method,
+         std::optional<int> max_steps, std::string start, bool keep_flow, py::object progress) {
         return fair_binding(V, F, region, {continuity, functions_kwarg("fair", functions, f), method, max_steps},
                             start, keep_flow, std::move(progress));
       },
       "V"_a, "F"_a, "region"_a, py::kw_only(), "continuity"_a = "G2", "functions"_a = py::none(),
-      "f"_a = py::none(), "method"_a = "flow", "max_steps"_a = fair_steps, "start"_a = "harmonic",
+      "f"_a = py::none(), "method"_a = "flow", "max_steps"_a = py::none(), "start"_a = "harmonic",
       "keep_flow"_a = false, "progress"_a = py::none(),
       "Fairs a region (boolean mask or vertex indices), as `fairsurf fair`; returns (V, report).");
   m.def(
       "blend",
       [](const py::handle& V, const py::handle& F, std::optional<std::pair<int, int>> loops, std::string continuity,
-         std::optional<Functions> functions, std::optional<Functions> f, std::string method, int max_steps, bool relax,
+         std::optional<Functions> functions, std::optional<Functions> f, std::string method, std::optional<int> max_steps, bool relax,
          bool keep_flow, py::object progress) {
         return blend_binding(V, F, loops, {continuity, functions_kwarg("blend", functions, f), method, max_steps},
                              relax, keep_flow, std::move(progress));
       },
       "V"_a, "F"_a, py::kw_only(), "loops"_a = py::none(), "continuity"_a = "G2", "functions"_a = py::none(),
-      "f"_a = py::none(), "method"_a = "flow", "max_steps"_a = fair_steps, "relax"_a = true,
+      "f"_a = py::none(), "method"_a = "flow", "max_steps"_a = py::none(), "relax"_a = true,
       "keep_flow"_a = false, "progress"_a = py::none(),
       "Joins two boundary loops by a fair tube, as `fairsurf blend`; returns (V, F, report).");
 }

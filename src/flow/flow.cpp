@@ -181,6 +181,7 @@ void FlowRun::initialize() {
   }
   report_.curvature_scale = problem_.scale.curvature;
   report_.free_vertices = region_.num_free();
+  report_.step_kind = options_.step_kind;
   report_.supported = region_.supported;
   flow_detail::evaluate_flow_terms(problem_, state_);
   if (!std::isfinite(state_.energy) || !std::isfinite(state_.max_velocity))

@@ -181,3 +181,27 @@ TEST(SteadySmoothing, ANoisySphereEndsRoundWithTheEnergyFallingAtEveryStep) {
   EXPECT_LE(roundness, 1e-3);
   EXPECT_LT(roundness, 0.5 * before);
 }
+
+// An energy descent that stops at its step limit is told by its energy, which falls at every
+// accepted step, not by max|V|, which may rise on the way (a real region's descent ended with max|V|
+// above its start and was called "diverged" while E had fallen fourfold). The time-stepped flow's
+// report keeps max|V|.
+TEST(EnergyDescentReport, AnUnsettledDescentIsToldByItsEnergy) {
+  FlowReport report;
+  report.step_kind = FlowStepKind::energy_descent;
+  report.accepted_steps = 2;
+  report.initial_energy = 10;
+  report.final_energy = 6;
+  report.initial_max_velocity = 1;
+  report.final_max_velocity = 5;
+  for (const auto& [energy, accepted] : {std::pair(8.0, true), std::pair(9.0, false), std::pair(6.0, true)}) {
+    StepRecord r;
+    r.energy = energy;
+    r.accepted = accepted;
+    report.records.push_back(r);
+  }
+  EXPECT_EQ(unsettled_reason(report),
+            "did not settle (2 steps without a steady state, E 10 -> 6, the last step lowering it by 0.25 of itself)");
+  report.step_kind = FlowStepKind::implicit_flow;
+  EXPECT_EQ(unsettled_reason(report), "diverged (2 steps without a steady state, max|V| 1 -> 5)");
+}
