@@ -382,61 +382,108 @@ std::string loses_to_linear(const Mesh& mesh, const FairRegionReport& report, in
   return "";
 }
 
-// Fairs the tube as the options' FairRegionOptions base says (flow_tube); where the method is the
-// flow and the result crosses the mesh or is no gain over the linear ∆^k solution from the same
-// tube (loses_to_linear), that linear solution takes its place if it does not cross the mesh
-// (labelled linear, with the reason). Throws NumericalError where the tube delivered would still
-// cross the mesh (`mesh` then holds it).
+// The flow's tube in `mesh` (reported by `report`), which does not cross the mesh, against the linear
+// ∆^k tube from the same start `tube`: where the method is the flow and its tube is no gain over the
+// linear one (loses_to_linear), or did not settle after the descent fallback, the linear tube takes
+// its place if it does not cross the mesh (labelled linear, with the reason).
+FairRegionReport weigh_uncrossed_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free,
+                                      int first_tube_face, const Vertices& tube, LinearTubeOnce& linear_once,
+                                      const BlendOptions& options, FairRegionReport report) {
+  if (options.method != FairMethod::flow || report.linear) return report;
+  if (report.flow.stop_reason != FlowStopReason::steady) {
+    // The flow the user asked for is delivered as it stands, NOT steady (descent_fallback off, or
+    // the descent asked for as the step); where the descent fallback ran and no descent settled,
+    // the linear tube takes its place, as fill and fair_region keep their floor.
+    if (!descended(options)) return report;
+    std::optional<LinearTube>& linear = linear_once.get();
+    if (!linear || tube_crosses(linear->mesh, first_tube_face)) return report;
+    return keep_linear_tube(mesh, *linear, report, "did not settle");
+  }
+  if (!options.weigh_against_linear_tube) return report;
+  const int creases = tube_creases(mesh.V, mesh.F, topo, first_tube_face);
+  // Neither rule of loses_to_linear can hold, whatever the linear tube: no solve.
+  if (report.continuity.max_normal_angle <= detail::kSmallestFoldAngle && !creases_against(creases, 0))
+    return report;
+  std::optional<LinearTube>& linear = linear_once.get();
+  if (!linear) return report;
+  if (!tube_crosses(linear->mesh, first_tube_face)) {
+    const std::string reason = loses_to_linear(mesh, report, creases, *linear, topo, first_tube_face);
+    if (reason.empty()) return report;
+    FairRegionReport kept = keep_linear_tube(mesh, *linear, report, reason);
+    kept.checks_chose_linear = true;
+    return kept;
+  }
+  // The linear tube crosses the mesh: the flow's is weighed against the first lower one that does
+  // not, the floor blend_lower_linear_tube would deliver.
+  for (int c = static_cast<int>(linear->report.supported) - 1; c >= 0; --c) {
+    BlendOptions lower_options = options;
+    lower_options.continuity = static_cast<Continuity>(c);
+    std::optional<LinearTube> lower = linear_tube(mesh, topo, free, tube, lower_options);
+    if (!lower || tube_crosses(lower->mesh, first_tube_face)) continue;
+    const std::string reason = loses_to_linear(mesh, report, creases, *lower, topo, first_tube_face);
+    if (reason.empty()) return report;
+    FairRegionReport kept = keep_linear_tube(mesh, *lower, report, reason + " (the linear ∆" +
+                                                                      std::to_string(linear->order()) +
+                                                                      " tube crosses the mesh)");
+    kept.requested = options.continuity;
+    kept.crossing_fallback = true;
+    kept.checks_chose_linear = true;
+    return kept;
+  }
+  return report;
+}
+
+// Where the flow's tube crosses the mesh: the flow once more from the tube, its trial states relaxed
+// tangentially by options.crossing_retry_relaxation (fill's retry, docs/fill.md "A crossing flow,
+// relaxed"), whose result replaces the crossing one in `mesh` and `report` where it settles clear
+// of the mesh. Returns the crossings left.
+std::vector<FaceIntersection> retry_relaxed(Mesh& mesh, const Topology& topo, const std::vector<int>& free,
+                                            int first_tube_face, const Vertices& tube, LinearTubeOnce& linear_once,
+                                            const BlendOptions& options, const FlowObserver& observer,
+                                            FairRegionReport& report, std::vector<FaceIntersection> crossings) {
+  if (crossings.empty() || options.method != FairMethod::flow ||
+      !(options.flow.tangential_relaxation < options.crossing_retry_relaxation))
+    return crossings;
+  BlendOptions relaxed = options;
+  relaxed.flow.tangential_relaxation = options.crossing_retry_relaxation;
+  Mesh retried = mesh;
+  retried.V = tube;
+  FairRegionReport retried_report;
+  try {
+    retried_report = flow_tube(retried, topo, free, first_tube_face, tube, linear_once, relaxed, observer);
+  } catch (const NumericalError&) {
+    return crossings;
+  }
+  // Only a settled tube is a gain: an unsettled one, clear of the mesh, would be delivered NOT steady
+  // where descent_fallback is off, and otherwise give way to the linear tube all the same.
+  if (retried_report.linear || retried_report.flow.stop_reason != FlowStopReason::steady ||
+      tube_crosses(retried, first_tube_face))
+    return crossings;
+  mesh.V = std::move(retried.V);
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "the %s flow's tube crossed the mesh; flowed again with its trial states relaxed tangentially (%.2g)",
+                to_string(retried_report.flow_kind), options.crossing_retry_relaxation);
+  retried_report.note = text + (retried_report.note.empty() ? "" : "; " + retried_report.note);
+  report = std::move(retried_report);
+  return {};
+}
+
+// Fairs the tube as the options' FairRegionOptions base says (flow_tube), once more relaxed where
+// the flow's tube crosses the mesh (retry_relaxed); a tube clear of the mesh is weighed against the
+// linear ∆^k tube from the same start (weigh_uncrossed_tube); where the flow's tube still crosses
+// the mesh, that linear tube takes its place if it does not (labelled linear, with the reason).
+// Throws NumericalError where the tube delivered would still cross the mesh (`mesh` then holds it).
 FairRegionReport fair_tube(Mesh& mesh, const Topology& topo, const std::vector<int>& free, int first_tube_face,
                            const BlendOptions& options, const FlowObserver& observer) {
   const Vertices tube = mesh.V;
   LinearTubeOnce linear_once(mesh, topo, free, tube, options);
   FairRegionReport report = flow_tube(mesh, topo, free, first_tube_face, tube, linear_once, options, observer);
-  const std::vector<FaceIntersection> crossings = tube_crossings(mesh, first_tube_face);
-  if (crossings.empty()) {
-    if (options.method != FairMethod::flow || report.linear) return report;
-    if (report.flow.stop_reason != FlowStopReason::steady) {
-      // The flow the user asked for is delivered as it stands, NOT steady (descent_fallback off, or
-      // the descent asked for as the step); where the descent fallback ran and no descent settled,
-      // the linear tube takes its place, as fill and fair_region keep their floor.
-      if (!descended(options)) return report;
-      std::optional<LinearTube>& linear = linear_once.get();
-      if (!linear || tube_crosses(linear->mesh, first_tube_face)) return report;
-      return keep_linear_tube(mesh, *linear, report, "did not settle");
-    }
-    if (!options.weigh_against_linear_tube) return report;
-    const int creases = tube_creases(mesh.V, mesh.F, topo, first_tube_face);
-    // Neither rule of loses_to_linear can hold, whatever the linear tube: no solve.
-    if (report.continuity.max_normal_angle <= detail::kSmallestFoldAngle && !creases_against(creases, 0))
-      return report;
-    std::optional<LinearTube>& linear = linear_once.get();
-    if (!linear) return report;
-    if (!tube_crosses(linear->mesh, first_tube_face)) {
-      const std::string reason = loses_to_linear(mesh, report, creases, *linear, topo, first_tube_face);
-      if (reason.empty()) return report;
-      FairRegionReport kept = keep_linear_tube(mesh, *linear, report, reason);
-      kept.checks_chose_linear = true;
-      return kept;
-    }
-    // The linear tube crosses the mesh: the flow's is weighed against the first lower one that does
-    // not, the floor blend_lower_linear_tube would deliver.
-    for (int c = static_cast<int>(linear->report.supported) - 1; c >= 0; --c) {
-      BlendOptions lower_options = options;
-      lower_options.continuity = static_cast<Continuity>(c);
-      std::optional<LinearTube> lower = linear_tube(mesh, topo, free, tube, lower_options);
-      if (!lower || tube_crosses(lower->mesh, first_tube_face)) continue;
-      const std::string reason = loses_to_linear(mesh, report, creases, *lower, topo, first_tube_face);
-      if (reason.empty()) return report;
-      FairRegionReport kept = keep_linear_tube(mesh, *lower, report, reason + " (the linear ∆" +
-                                                                        std::to_string(linear->order()) +
-                                                                        " tube crosses the mesh)");
-      kept.requested = options.continuity;
-      kept.crossing_fallback = true;
-      kept.checks_chose_linear = true;
-      return kept;
-    }
-    return report;
-  }
+  const std::vector<FaceIntersection> crossings =
+      retry_relaxed(mesh, topo, free, first_tube_face, tube, linear_once, options, observer, report,
+                    tube_crossings(mesh, first_tube_face));
+  if (crossings.empty())
+    return weigh_uncrossed_tube(mesh, topo, free, first_tube_face, tube, linear_once, options, std::move(report));
   if (options.method != FairMethod::flow) throw TubeCrossing(crossing_message(crossings, first_tube_face, ""));
   std::optional<LinearTube>& linear = linear_once.get();
   if (linear && !tube_crosses(linear->mesh, first_tube_face))
@@ -586,6 +633,9 @@ ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector
 
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObserver& observer) {
   const auto start = detail::Clock::now();
+  if (!(options.crossing_retry_relaxation >= 0 && options.crossing_retry_relaxation <= 1))
+    throw InvalidArgument("blend_loops: crossing_retry_relaxation must lie in [0, 1], got " +
+                          std::to_string(options.crossing_retry_relaxation));
   const Topology topo = build_topology(mesh.F, mesh.num_vertices());
   const std::vector<std::vector<int>> loops = boundary_loops(mesh.F, topo);
   const LoopPair pair = chosen_pair(mesh.V, loops, options);

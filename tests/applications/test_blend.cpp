@@ -334,6 +334,16 @@ TEST(Blend, ClearErrors) {
   }
   o.loop_b = 0;
   EXPECT_THROW(blend_loops(fig4, o), InvalidArgument);
+  BlendOptions relaxed;
+  relaxed.crossing_retry_relaxation = 1.5;
+  const Mesh untouched = fig4;
+  try {
+    blend_loops(fig4, relaxed);
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "blend_loops: crossing_retry_relaxation must lie in [0, 1], got 1.500000");
+  }
+  EXPECT_EQ(fig4.V, untouched.V);
 
   // data/lagrange_prout.obj's closest loops pass through one vertex: a non-manifold vertex, which
   // repair splits (before, build_tube's InvalidArgument, exit 1 in the CLI, with no hint).
@@ -555,6 +565,39 @@ TEST(BlendReal, WhereEveryG2TubeCrossesTheFirstLowerLinearTubeThatDoesNotIsKept)
   EXPECT_NE(r.fair.note.find("built again with straight rings"), std::string::npos) << r.fair.note;
   EXPECT_NE(r.fair.note.find("tube, the first that does not cross"), std::string::npos) << r.fair.note;
   expect_band_closed(m, b);
+}
+
+// A band 4 h wide across the raw hammer scan (bench_real_holes' hammer 14000 z): every G2 tube from
+// Hermite rings crosses the mesh, and so does the flow's tube from straight rings, a few of its
+// triangles sheared over next to a notch of a loop. Flowed once more with its trial states relaxed
+// tangentially (crossing_retry_relaxation, as fill's retry) it settles clear of the mesh, and
+// --keep-flow delivers that G2 tube (0.015 h from the scan, the linear ∆³ tube 0.012 h); without the
+// retry the linear tube takes its place.
+TEST(BlendReal, AFlowWhoseTubeCrossesTheMeshIsRelaxedAndTriedAgain) {
+  const Band b = band_across("hammer_rawscan.obj", {0.160535, -0.177527, 1.188496}, Eigen::Vector3d::UnitZ());
+  ASSERT_EQ(loop_count(b.cut), 2);
+  BlendOptions options;
+  keep_settled_flow(options);
+  Mesh m = b.cut;
+  const BlendReport r = blend_loops(m, options);
+  print("hammer band, kept flow", r);
+  EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "G2") << r.fair.note;
+  EXPECT_EQ(r.fair.flow.stop_reason, FlowStopReason::steady);
+  EXPECT_NE(r.fair.note.find("tube crossed the mesh; flowed again with its trial states relaxed tangentially (0.5)"),
+            std::string::npos)
+      << r.fair.note;
+  expect_band_closed(m, b);
+
+  options.crossing_retry_relaxation = 0;
+  Mesh unrelaxed = b.cut;
+  const BlendReport u = blend_loops(unrelaxed, options);
+  EXPECT_TRUE(u.fair.linear);
+  EXPECT_NE(u.fair.note.find("flow's tube crosses the mesh; kept the linear ∆3 tube"), std::string::npos)
+      << u.fair.note;
+  expect_band_closed(unrelaxed, b);
+  std::printf("[blend] hammer band: G2 tube %.4f h, linear tube %.4f h from the scan\n",
+              tube_distance(m, b.cut.num_vertices(), b.uncut, b.h),
+              tube_distance(unrelaxed, b.cut.num_vertices(), b.uncut, b.h));
 }
 
 // An oblique slab across the remeshed bunny (bench_stress's blend draws): the time-stepped flow

@@ -64,6 +64,12 @@ struct BlendOptions : FairRegionOptions {
   /// linear one", "Creased tubes"). false: keep the flow's tube wherever it settles clear of the
   /// mesh (keep_settled_flow).
   bool weigh_against_linear_tube = true;
+  /// Where the flow's tube crosses the mesh, the flow is tried once more from the tube before the
+  /// linear tube takes its place, each of its trial states relaxed tangentially by this fraction
+  /// (FlowOptions::tangential_relaxation), as FillOptions::crossing_retry_relaxation does for a
+  /// hole's patch: a crossing of a few tube triangles sheared over at a notch of a loop (the raw
+  /// hammer scan's band, docs/blend.md). 0: no second try.
+  double crossing_retry_relaxation = 0.5;
 };
 
 /// keep_settled_flow for a blend: the base's checks off (fair_region.h) and the flow's settled tube
