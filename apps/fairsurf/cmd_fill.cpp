@@ -126,14 +126,16 @@ nlohmann::json hole_json(const HoleReport& r) {
   return j;
 }
 
-// When every hole failed and one loop is at least three times longer than any other, that loop is
-// most likely the outer border of an open surface (a scan, a terrain), which is not a hole.
+// When the longest loop failed and is at least three times longer than any other, it is most likely
+// the outer border of an open surface (a scan, a terrain), which is not a hole.
 std::string open_surface_hint(const FillReport& report, const FillArgs& args) {
-  if (report.filled > 0 || args.skip_largest || report.holes.size() < 2) return "";
-  std::vector<int> lengths;
-  for (const auto& hole : report.holes) lengths.push_back(hole.border_edges);
-  std::sort(lengths.begin(), lengths.end(), std::greater<>());
-  if (lengths[0] < 3 * lengths[1]) return "";
+  if (args.skip_largest || report.holes.size() < 2) return "";
+  std::vector<const HoleReport*> by_length;
+  for (const auto& hole : report.holes) by_length.push_back(&hole);
+  std::sort(by_length.begin(), by_length.end(),
+            [](const HoleReport* a, const HoleReport* b) { return a->border_edges > b->border_edges; });
+  if (by_length[0]->status != HoleStatus::failed || by_length[0]->border_edges < 3 * by_length[1]->border_edges)
+    return "";
   return "; the largest loop looks like the outer border of an open surface: use --skip-largest";
 }
 

@@ -615,6 +615,42 @@ void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector
           fallback_note(options, first_failure, start, fairing, relaxed_retry, previous_start_failure, reports[h]);
 }
 
+// "holes 3, 5 and 7"
+std::string hole_list(const std::vector<int>& holes) {
+  std::string text = holes.size() == 1 ? "hole " : "holes ";
+  for (std::size_t i = 0; i < holes.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == holes.size() ? " and " : ", ") + std::to_string(holes[i]);
+  return text;
+}
+
+// A joint group that failed as a whole (fill_group_falling_back): each hole again alone, in order,
+// the others open or as filled before it, so that one hole no fairing can close (the outer border of
+// an open surface) does not keep the holes whose rings overlap its own open. A hole filled alone
+// says that the joint fill failed; one that fails alone keeps its own reason, with the joint one.
+void fill_failed_group_one_by_one(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                                  const std::vector<int>& group, const FillOptions& options,
+                                  const FillObserver& observer, std::vector<HoleReport>& reports,
+                                  std::optional<Topology>& filled) {
+  const std::string joint_failure = reports[group.front()].reason;
+  for (int h : group) {
+    HoleReport& r = reports[h];
+    const std::string joint = "the joint fill with " + hole_list(r.filled_with) + " failed (" + joint_failure + ")";
+    r.filled_with.clear();
+    std::vector<std::vector<int>> patch_loops{loops[h]};
+    try {
+      patch_loops = detail::relink_pinched_loops(mesh.V, mesh.F, topo, patch_loops);
+    } catch (const Error& e) {
+      r.reason = std::string(e.what()) + "; " + joint;
+      continue;
+    }
+    fill_group_falling_back(mesh, topo, loops, {h}, patch_loops, options, observer, reports, filled);
+    if (r.status == HoleStatus::filled)
+      r.note = joint + "; filled alone" + (r.note.empty() ? "" : "; " + r.note);
+    else
+      r.reason += "; " + joint;
+  }
+}
+
 }  // namespace
 
 const char* to_string(HoleStatus status) {
@@ -672,6 +708,8 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
         if (other != h) report.holes[h].filled_with.push_back(other);
     const auto group_start = Clock::now();
     fill_group_falling_back(mesh, topo, loops, group, patch_loops, options, observer, report.holes, filled);
+    if (group.size() > 1 && report.holes[group.front()].status == HoleStatus::failed)
+      fill_failed_group_one_by_one(mesh, topo, loops, group, options, observer, report.holes, filled);
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
   }
   for (const auto& r : report.holes) {

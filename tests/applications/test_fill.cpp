@@ -657,6 +657,40 @@ TEST(FillFailures, AFlowWithoutSteadyStateKeepsTheLinearFloorAndSaysSo) {
   EXPECT_TRUE(filled.F == floor.F);
 }
 
+// A sheet bent into an S with a small hole near its edge (test::s_sheet_with_hole): the two are
+// filled jointly, and every patch of the outer border crosses the sheet. The joint group fails; each hole is then filled alone, so the small hole is
+// closed and only the outer border fails, both saying why (lagrange_prout.obj's 9 small holes were
+// left open with its outer border before).
+TEST(FillFailures, AHoleOfAJointGroupThatFailedIsFilledAlone) {
+  const Mesh holed = test::s_sheet_with_hole();
+  const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  ASSERT_EQ(loops.size(), 2u);
+  const int outer = loops[0].size() > loops[1].size() ? 0 : 1, inner = 1 - outer;
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled);
+  EXPECT_EQ(r.filled, 1);
+  EXPECT_EQ(r.failed, 1);
+  const HoleReport& small = r.holes[inner];
+  const HoleReport& border = r.holes[outer];
+  EXPECT_EQ(small.status, HoleStatus::filled);
+  EXPECT_TRUE(small.filled_with.empty());
+  EXPECT_NE(small.note.find("the joint fill with hole " + std::to_string(outer) + " failed ("), std::string::npos)
+      << small.note;
+  EXPECT_NE(small.note.find("); filled alone"), std::string::npos) << small.note;
+  EXPECT_GT(small.faces_added, 0);
+  EXPECT_EQ(border.status, HoleStatus::failed);
+  EXPECT_NE(border.reason.find("crosses the mesh"), std::string::npos) << border.reason;
+  EXPECT_NE(border.reason.find("the joint fill with hole " + std::to_string(inner) + " failed ("), std::string::npos)
+      << border.reason;
+  // Only the outer border is left open, and the patch crosses nothing.
+  const auto left = boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices()));
+  ASSERT_EQ(left.size(), 1u);
+  EXPECT_EQ(left[0].size(), loops[outer].size());
+  std::vector<int> new_faces(filled.num_faces() - holed.num_faces());
+  std::iota(new_faces.begin(), new_faces.end(), holed.num_faces());
+  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces).empty());
+}
+
 // Without the floor, a flow that stops at its step limit fails the hole and leaves the mesh as it was.
 TEST(FillFailures, AFlowWithoutSteadyStateAndWithoutFloorIsNotAFill) {
   const Mesh holed = test::cut_hole(test::icosphere(3), [](const Vec3& p) { return p.z() > 0.5; });

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "hole_meshes.h"
 #include "scratch_dir.h"
 #include "test_support.h"
 
@@ -180,4 +181,23 @@ TEST_F(CliFill, SomeHolesFailingExitsFourAndKeepsTheFilledOnes) {
   EXPECT_NE(run.out.find("still holds the 1 holes that were filled"), std::string::npos) << run.out;
   const Mesh out = read_mesh(path("out.obj"));
   EXPECT_GT(out.num_faces(), holed.num_faces());
+}
+
+// The outer border of an S-bent sheet cannot be filled (test::s_sheet_with_hole), the small hole
+// beside it can, alone: exit 4, the small hole written, and the hint that the failed loop, three
+// times longer than the other, is the outer border of an open surface; with --skip-largest, exit 0.
+TEST_F(CliFill, AFailedOuterBorderIsNamedAsSuchWhereTheHoleBesideItIsFilled) {
+  write_mesh(path("sheet.obj"), test::s_sheet_with_hole());
+  const auto run = test::run_cli("fill " + quoted(path("sheet.obj")) + " -o " + quoted(path("out.obj")));
+  EXPECT_EQ(run.exit_code, 4) << run.out;
+  EXPECT_NE(run.out.find("filled alone"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("still holds the 1 holes that were filled; the largest loop looks like the outer border of "
+                         "an open surface: use --skip-largest"),
+            std::string::npos)
+      << run.out;
+  EXPECT_EQ(loop_count(read_mesh(path("out.obj"))), 1);
+  const auto skipped = test::run_cli("fill " + quoted(path("sheet.obj")) + " -o " + quoted(path("skipped.obj")) +
+                                     " --skip-largest --quiet");
+  EXPECT_EQ(skipped.exit_code, 0) << skipped.out;
+  EXPECT_EQ(loop_count(read_mesh(path("skipped.obj"))), 1);
 }

@@ -1,11 +1,14 @@
 #include "hole_meshes.h"
 
+#include "analytic_meshes.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -53,6 +56,13 @@ Mesh cut_ball(const Mesh& mesh, const Vec3& centre, double radius) {
       if ((mesh.V.row(mesh.F(f, k)).transpose() - centre).norm() > radius) return true;
     return false;
   });
+}
+
+Mesh s_sheet_with_hole() {
+  Mesh sheet = saddle_patch(12, 1.0);
+  for (int v = 0; v < sheet.num_vertices(); ++v) sheet.V(v, 2) = 0.5 * std::sin(std::numbers::pi * sheet.V(v, 0));
+  const Vec3 centre(0.5, 0.35, 0.5 * std::sin(0.5 * std::numbers::pi));
+  return cut_hole(sheet, [&](const Vec3& p) { return (p - centre).norm() < 0.22; });
 }
 
 Mesh cut_slab(const Mesh& mesh, const Vec3& point, const Vec3& axis, double half_width) {

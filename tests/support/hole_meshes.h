@@ -22,6 +22,12 @@ Mesh cut_ball(const Mesh& mesh, const Eigen::Vector3d& centre, double radius);
 /// `point` (the vertices left keep their order): the cut of bench_real_holes' blend rows.
 Mesh cut_slab(const Mesh& mesh, const Eigen::Vector3d& point, const Eigen::Vector3d& axis, double half_width);
 
+/// A sheet bent into an S, z = 0.5 sin(πx) over [-1, 1]² (12 × 12 squares), with a small hole near
+/// its edge: the rings of the hole and of the sheet's outer border overlap, so fill takes them as
+/// one group, and every patch of the outer border crosses the sheet where it passes through the
+/// border's plane. The outer border is the longer of its two loops.
+Mesh s_sheet_with_hole();
+
 /// Moves every vertex of `mesh` along its area-weighted normal by a normal deviate of standard
 /// deviation `sigma` (a scan's noise; the same `seed` gives the same draw).
 void add_normal_noise(Mesh& mesh, double sigma, unsigned seed);
