@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <limits>
 #include <numbers>
 #include <numeric>
@@ -418,22 +419,58 @@ enum class PatchCrossing { none, flow, other };
 // resort.
 enum class PatchStart { membrane, refined, unfaired };
 
-// Fills the holes `group` jointly on `mesh` (`topo`: its connectivity); on success replaces mesh,
-// moves the filled mesh's connectivity into `filled` (after the last use of `topo`, which may be
-// the old value) and fills the reports; on failure throws (mesh untouched) or returns the reason
-// the patch was rejected. `patch_loops` are the group's loops as they are triangulated (relinked at
-// pinches). `crossed` says whether the rejected patch crosses the mesh, and whether it was a flow's.
-// `start`: where the fairing starts (PatchStart).
-std::string fill_group(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
-                       const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
-                       const FillOptions& options, const FairRegionOptions& fairing_options, PatchStart start,
-                       const FillObserver& observer, std::vector<HoleReport>& reports,
+// A group's patch, built once for each kind of start (relaxed into its membrane or not) and handed
+// to every attempt of the fallback chain, which fairs the same triangulation and refinement again
+// and again: a hole whose chain runs to its end built it up to eleven times, each triangulation
+// with up to max_crossing_rounds rounds where the loop's faces cross the mesh. A build that threw
+// throws the same again at each attempt. Valid while the mesh and its connectivity are those it was
+// built on.
+class GroupPatches {
+ public:
+  GroupPatches(const Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+               const PatchOptions& options)
+      : mesh_(mesh), topo_(topo), loops_(loops), options_(options) {}
+
+  const InitialPatch& get(PatchStart start) {
+    const bool relax = start == PatchStart::membrane && options_.relax;
+    Built& built = relax ? relaxed_ : unrelaxed_;
+    if (!built.patch && !built.error) {
+      PatchOptions options = options_;
+      options.relax = relax;
+      try {
+        built.patch = hole_patch(mesh_, topo_, loops_, options);
+      } catch (...) {
+        built.error = std::current_exception();
+      }
+    }
+    if (built.error) std::rethrow_exception(built.error);
+    return *built.patch;
+  }
+
+ private:
+  struct Built {
+    std::optional<InitialPatch> patch;
+    std::exception_ptr error;
+  };
+  const Mesh& mesh_;
+  const Topology& topo_;
+  const std::vector<std::vector<int>>& loops_;
+  const PatchOptions& options_;
+  Built relaxed_, unrelaxed_;
+};
+
+// Fills the holes `group` jointly on `mesh` from the group's patch for `start` (PatchStart; built on
+// `mesh` and its connectivity by `patches`); on success replaces mesh, moves the filled mesh's
+// connectivity into `filled` (which `patches` may read: it is not used after this) and fills the
+// reports; on failure throws (mesh untouched) or returns the reason the patch was rejected.
+// `crossed` says whether the rejected patch crosses the mesh, and whether it was a flow's.
+std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, const std::vector<int>& group,
+                       GroupPatches& patches, const FillOptions& options, const FairRegionOptions& fairing_options,
+                       PatchStart start, const FillObserver& observer, std::vector<HoleReport>& reports,
                        std::optional<Topology>& filled, PatchCrossing& crossed) {
   crossed = PatchCrossing::none;
   const bool unfaired = start == PatchStart::unfaired;
-  PatchOptions patch_options = options.patch;
-  if (start != PatchStart::membrane) patch_options.relax = false;
-  InitialPatch patch = hole_patch(mesh, topo, patch_loops, patch_options);
+  InitialPatch patch = patches.get(start);  // a copy: the fairing moves its vertices
   const std::string non_manifold = detail::patch_non_manifold(patch.mesh.F, patch.topology, patch.first_patch_face);
   if (!non_manifold.empty()) return non_manifold;
 
@@ -577,14 +614,14 @@ void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector
                              const FillOptions& options, const FillObserver& observer,
                              std::vector<HoleReport>& reports, std::optional<Topology>& filled) {
   FairRegionOptions fairing = options;  // the fairing part of the options (sliced on purpose)
+  GroupPatches patches(mesh, filled ? *filled : topo, patch_loops, options.patch);
   PatchStart start = PatchStart::membrane;
   std::string reason, first_failure, previous_start_failure;
   bool relaxed_retry = false;
   for (;;) {
     PatchCrossing crossed = PatchCrossing::none;
     try {
-      reason = fill_group(mesh, filled ? *filled : topo, loops, group, patch_loops, options, fairing, start, observer,
-                          reports, filled, crossed);
+      reason = fill_group(mesh, loops, group, patches, options, fairing, start, observer, reports, filled, crossed);
     } catch (const Error& e) {
       reason = e.what();
     }
