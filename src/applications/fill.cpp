@@ -532,8 +532,13 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
     }
   }
   if (group.size() > 1 && !unfaired && fairing.linear && !fairing.held_out_linear &&
-      fairing_options.method == FairMethod::flow)
-    refair_each_hole(patch, group, hole_free, hole_faces, fairing_options, options, step_observer, reports);
+      fairing_options.method == FairMethod::flow) {
+    // Each hole's own first try: the tangential relaxation is the group's answer to its own patch
+    // crossing the mesh (crossing_retry_relaxation), not a default for a hole faired alone.
+    FairRegionOptions alone = fairing_options;
+    alone.flow.tangential_relaxation = options.flow.tangential_relaxation;
+    refair_each_hole(patch, group, hole_free, hole_faces, alone, options, step_observer, reports);
+  }
   mesh.V = std::move(patch.mesh.V);
   mesh.F = std::move(patch.mesh.F);
   mesh.vertex_scalars.clear();

@@ -173,6 +173,33 @@ TEST(RealHoleJointGroup, EachHoleOfAJointGroupGetsItsOwnChoice) {
   EXPECT_LT(g2, joint);  // the windows whose own flow folds or predicts worse keep the floor
 }
 
+// Two holes 8 h across blub's tail (bench_real_holes' blub 1626 8h, loops of 37 and 26 edges),
+// filled jointly: the group's flow settles into a patch that crosses the mesh, and flowed again with
+// its trials relaxed tangentially it folds, so the group keeps its linear floor. Faired again alone,
+// the 26-edge hole's own flow is G2 and clear of the mesh, but only without that relaxation, the
+// group's answer to its own crossing: relaxed, the hole's flow crosses the mesh too.
+TEST(RealHoleJointGroup, AHoleFairedAgainAloneIsNotRelaxedForTheGroupsCrossing) {
+  const Mesh blub = read_mesh(test::data_path("blub.obj"));
+  const double h = test::mean_edge_length(blub);
+  const Mesh cut = test::cut_ball(blub, blub.V.row(1626).transpose(), 8 * h);
+  const auto loops = boundary_loops(cut.F, build_topology(cut.F, cut.num_vertices()));
+  ASSERT_EQ(loops.size(), 2u);
+  const int small = loops[0].size() < loops[1].size() ? 0 : 1;
+  ASSERT_EQ(loops[small].size(), 26u);
+  Mesh filled = cut;
+  const FillReport report = fill_holes(filled);
+  ASSERT_EQ(report.filled, 2);
+  const HoleReport& hole = report.holes[small];
+  std::printf("[joint] blub 1626 8h, 26-edge hole: %s, %s\n", delivered_label(hole.supported, hole.linear).c_str(),
+              hole.note.c_str());
+  EXPECT_NE(hole.note.find("flowed again with its trial states relaxed tangentially"), std::string::npos) << hole.note;
+  EXPECT_NE(hole.note.find("faired again alone"), std::string::npos) << hole.note;
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
+  std::vector<int> new_faces(filled.num_faces() - cut.num_faces());
+  std::iota(new_faces.begin(), new_faces.end(), cut.num_faces());
+  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces).empty());
+}
+
 // blub's 90-edge hole across the edge of its tail fin (bench_real_holes' worst clean row, 6.7× CGAL's
 // distance): the membrane flattens the patch against the fin's two sheets, and both the ∆³ solution
 // re-evaluated from it and the flow stay far from the fin's edge. One ∆³ solve from the patch as
