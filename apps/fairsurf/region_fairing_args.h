@@ -23,7 +23,7 @@ struct RegionFairingArgs {
   std::vector<std::string> functions{"H"};
   std::string method = "flow";
   SolverArgs solver;
-  std::optional<int> max_steps;  ///< unset: the options' own limit (fair 500, blend 200)
+  std::optional<int> max_steps;  ///< unset: the options' own (500 for fair from its harmonic start, else 200)
   std::string log;
   bool force = false, quiet = false, repair = false;
 };
