@@ -187,19 +187,7 @@ TEST(SteadySmoothing, ANoisySphereEndsRoundWithTheEnergyFallingAtEveryStep) {
 // with noise: max|V| rose from 9.9e15 to 1.7e16 over 200 steps, and the run was called "diverged"
 // while E fell at every one). The time-stepped flow's report keeps max|V|.
 TEST(EnergyDescentReport, AnUnsettledDescentIsToldByItsEnergy) {
-  FlowReport report;
-  report.step_kind = FlowStepKind::energy_descent;
-  report.accepted_steps = 2;
-  report.initial_energy = 10;
-  report.final_energy = 6;
-  report.initial_max_velocity = 1;
-  report.final_max_velocity = 5;
-  for (const auto& [energy, accepted] : {std::pair(8.0, true), std::pair(9.0, false), std::pair(6.0, true)}) {
-    StepRecord r;
-    r.energy = energy;
-    r.accepted = accepted;
-    report.records.push_back(r);
-  }
+  FlowReport report = test::unsettled_flow_report(FlowStepKind::energy_descent);
   EXPECT_EQ(unsettled_reason(report),
             "did not settle (2 steps without a steady state, E 10 -> 6, the last step lowering it by 0.25 of itself)");
   report.step_kind = FlowStepKind::implicit_flow;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
 
 namespace fairsurf::test {
 
@@ -68,6 +69,24 @@ double enclosed_volume(const Vertices& V, const Faces& F) {
     six_volume += a.dot(b.cross(c));
   }
   return six_volume / 6.0;
+}
+
+FlowReport unsettled_flow_report(FlowStepKind kind) {
+  FlowReport report;
+  report.step_kind = kind;
+  report.stop_reason = FlowStopReason::max_steps;
+  report.accepted_steps = 2;
+  report.initial_energy = 10;
+  report.final_energy = 6;
+  report.initial_max_velocity = 1;
+  report.final_max_velocity = 5;
+  for (const auto& [energy, accepted] : {std::pair(8.0, true), std::pair(9.0, false), std::pair(6.0, true)}) {
+    StepRecord step;
+    step.energy = energy;
+    step.accepted = accepted;
+    report.records.push_back(step);
+  }
+  return report;
 }
 
 }  // namespace fairsurf::test

@@ -1,9 +1,10 @@
 // Noisy and jittered analytic meshes, and distances to the analytic surfaces, for the flow tests
-// (method.md §8.3–§8.5).
+// (method.md §8.3–§8.5); and a flow report to describe.
 #pragma once
 
 #include "analytic_meshes.h"
 
+#include <fairsurf/flow/flow.h>
 #include <fairsurf/mesh/mesh.h>
 
 namespace fairsurf::test {
@@ -31,5 +32,10 @@ Eigen::VectorXd axis_distances(const Vertices& V);
 
 /// Volume enclosed by a closed, outward-oriented mesh.
 double enclosed_volume(const Vertices& V, const Faces& F);
+
+/// The report of a `kind` run stopped at its step limit after two accepted steps (E 10 -> 8 -> 6,
+/// one rejected trial at 9 between them), its max|V| risen from 1 to 5: what unsettled_reason and
+/// the CLI's summary describe.
+FlowReport unsettled_flow_report(FlowStepKind kind);
 
 }  // namespace fairsurf::test
