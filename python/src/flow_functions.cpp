@@ -262,8 +262,8 @@ void register_flow_functions(py::module_& m) {
   m.def(
       "blend",
       [](const py::handle& V, const py::handle& F, std::optional<std::pair<int, int>> loops, std::string continuity,
-         std::optional<Functions> functions, std::optional<Functions> f, std::string method, std::optional<int> max_steps, bool relax,
-         bool keep_flow, py::object progress) {
+         std::optional<Functions> functions, std::optional<Functions> f, std::string method,
+         std::optional<int> max_steps, bool relax, bool keep_flow, py::object progress) {
         return blend_binding(V, F, loops, {continuity, functions_kwarg("blend", functions, f), method, max_steps},
                              relax, keep_flow, std::move(progress));
       },
