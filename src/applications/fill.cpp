@@ -419,12 +419,12 @@ enum class PatchCrossing { none, flow, other };
 // resort.
 enum class PatchStart { membrane, refined, unfaired };
 
-// A group's patch, built once for each kind of start (relaxed into its membrane or not) and handed
-// to every attempt of the fallback chain, which fairs the same triangulation and refinement again
-// and again: a hole whose chain runs to its end built it up to eleven times, each triangulation
-// with up to max_crossing_rounds rounds where the loop's faces cross the mesh. A build that threw
-// throws the same again at each attempt. Valid while the mesh and its connectivity are those it was
-// built on.
+// A group's patch, built once and handed to every attempt of the fallback chain, which fairs the
+// same triangulation and refinement again and again: a hole whose chain runs to its end built it up
+// to eleven times, each triangulation with up to max_crossing_rounds rounds where the loop's faces
+// cross the mesh. The start without the membrane is the membrane's patch with its free vertices put
+// back (without_membrane), not a second triangulation. A build that threw throws the same again at
+// each attempt. Valid while the mesh and its connectivity are those it was built on.
 class GroupPatches {
  public:
   GroupPatches(const Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
@@ -435,10 +435,8 @@ class GroupPatches {
     const bool relax = start == PatchStart::membrane && options_.relax;
     Built& built = relax ? relaxed_ : unrelaxed_;
     if (!built.patch && !built.error) {
-      PatchOptions options = options_;
-      options.relax = relax;
       try {
-        built.patch = hole_patch(mesh_, topo_, loops_, options);
+        built.patch = relax ? hole_patch(mesh_, topo_, loops_, options_) : unrelaxed();
       } catch (...) {
         built.error = std::current_exception();
       }
@@ -452,6 +450,12 @@ class GroupPatches {
     std::optional<InitialPatch> patch;
     std::exception_ptr error;
   };
+  InitialPatch unrelaxed() {
+    if (options_.relax && relaxed_.patch) return without_membrane(*relaxed_.patch);
+    PatchOptions options = options_;
+    options.relax = false;
+    return hole_patch(mesh_, topo_, loops_, options);
+  }
   const Mesh& mesh_;
   const Topology& topo_;
   const std::vector<std::vector<int>>& loops_;

@@ -85,6 +85,16 @@ InitialPatch hole_patch(const Mesh& mesh, const Topology& topo, const std::vecto
   return out;
 }
 
+InitialPatch without_membrane(InitialPatch patch) {
+  if (patch.refined_free.rows() == 0) return patch;
+  for (std::size_t k = 0; k < patch.free_vertices.size(); ++k)
+    patch.mesh.V.row(patch.free_vertices[k]) = patch.refined_free.row(static_cast<Eigen::Index>(k));
+  patch.refined_free.resize(0, 3);
+  patch.membrane = {};
+  patch.border_dihedral_angle = border_dihedral_angle(patch.mesh, patch.topology, patch.first_patch_face);
+  return patch;
+}
+
 InitialPatch tube_patch(const Mesh& mesh, std::span<const int> loop_a, std::span<const int> loop_b,
                         const PatchOptions& options) {
   return tube_patch(mesh, build_topology(mesh.F, mesh.num_vertices()), loop_a, loop_b, options);

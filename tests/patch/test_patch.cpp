@@ -559,6 +559,7 @@ Mesh concatenate(const Mesh& a, const Mesh& b) {
 // face within 46° and 84° of the mesh face across; Delaunay flips during refinement used to turn
 // border triangles over (93.8° and 95.2°), the crease the flow then starts from. The refinement now
 // refuses such flips; the membrane can still fold the border, and border_dihedral_angle says so.
+// without_membrane takes the membrane back: the refined patch, as built without it.
 TEST(PatchFolds, RefinementNeverFoldsABorderTriangleOfARealHole) {
   const Mesh holed = test::cut_ball(read_mesh(test::data_path("blub.obj")), Vec3(0.00697216, -0.181279, -1.03702),
                                     0.307912);
@@ -578,6 +579,14 @@ TEST(PatchFolds, RefinementNeverFoldsABorderTriangleOfARealHole) {
     EXPECT_GT(refined.refinement.splits, 20);
     EXPECT_LT(refined.border_dihedral_angle, std::numbers::pi / 2) << loop.size() << " edges";
     EXPECT_GT(relaxed.border_dihedral_angle, 0.0);
+    // The membrane's patch with its free vertices put back is the patch built without it.
+    const InitialPatch restored = without_membrane(relaxed);
+    EXPECT_TRUE(restored.mesh.V == refined.mesh.V);
+    EXPECT_TRUE(restored.mesh.F == refined.mesh.F);
+    EXPECT_EQ(restored.free_vertices, refined.free_vertices);
+    EXPECT_EQ(restored.refined_free.rows(), 0);
+    EXPECT_EQ(restored.border_dihedral_angle, refined.border_dihedral_angle);
+    EXPECT_FALSE(relaxed.mesh.V == refined.mesh.V);
     std::cout << loop.size() << "-edge loop: border dihedral " << coarse.border_dihedral_angle * 180 / std::numbers::pi
               << "° triangulated, " << refined.border_dihedral_angle * 180 / std::numbers::pi << "° refined, "
               << relaxed.border_dihedral_angle * 180 / std::numbers::pi << "° after the membrane\n";

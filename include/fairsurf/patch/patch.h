@@ -60,6 +60,12 @@ InitialPatch hole_patch(const Mesh& mesh, const std::vector<std::vector<int>>& l
 InitialPatch hole_patch(const Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                         const PatchOptions& options = {});
 
+/// `patch` as it was before its membrane: the free vertices back where refinement left them
+/// (refined_free), no membrane report, the border dihedral angle of those positions. The same patch
+/// hole_patch builds with relax = false, without triangulating and refining again. A patch that was
+/// not relaxed is returned as it is.
+InitialPatch without_membrane(InitialPatch patch);
+
 /// Joins the loops `loop_a` and `loop_b` of `mesh` by a tube. Throws what build_tube,
 /// refine_patch and relax_membrane throw.
 InitialPatch tube_patch(const Mesh& mesh, std::span<const int> loop_a, std::span<const int> loop_b,
