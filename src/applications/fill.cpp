@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <limits>
 #include <numbers>
@@ -463,15 +464,22 @@ class GroupPatches {
   Built relaxed_, unrelaxed_;
 };
 
+// A group's filled mesh (the input's vertices and faces first, then the patch) and its connectivity,
+// not yet committed to the input: another start's fill may still take its place.
+struct FilledMesh {
+  Vertices V;
+  Faces F;
+  Topology topology;
+};
+
 // Fills the holes `group` jointly on `mesh` from the group's patch for `start` (PatchStart; built on
-// `mesh` and its connectivity by `patches`); on success replaces mesh, moves the filled mesh's
-// connectivity into `filled` (which `patches` may read: it is not used after this) and fills the
-// reports; on failure throws (mesh untouched) or returns the reason the patch was rejected.
-// `crossed` says whether the rejected patch crosses the mesh, and whether it was a flow's.
-std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, const std::vector<int>& group,
+// `mesh` and its connectivity by `patches`); on success moves the filled mesh into `out` and fills
+// the reports; on failure throws or returns the reason the patch was rejected. `crossed` says
+// whether the rejected patch crosses the mesh, and whether it was a flow's.
+std::string fill_group(const Mesh& mesh, const std::vector<std::vector<int>>& loops, const std::vector<int>& group,
                        GroupPatches& patches, const FillOptions& options, const FairRegionOptions& fairing_options,
                        PatchStart start, const FillObserver& observer, std::vector<HoleReport>& reports,
-                       std::optional<Topology>& filled, PatchCrossing& crossed) {
+                       FilledMesh& out, PatchCrossing& crossed) {
   crossed = PatchCrossing::none;
   const bool unfaired = start == PatchStart::unfaired;
   InitialPatch patch = patches.get(start);  // a copy: the fairing moves its vertices
@@ -543,13 +551,19 @@ std::string fill_group(Mesh& mesh, const std::vector<std::vector<int>>& loops, c
     alone.flow.tangential_relaxation = options.flow.tangential_relaxation;
     refair_each_hole(patch, group, hole_free, hole_faces, alone, options, step_observer, reports);
   }
-  mesh.V = std::move(patch.mesh.V);
-  mesh.F = std::move(patch.mesh.F);
+  out = {std::move(patch.mesh.V), std::move(patch.mesh.F), std::move(patch.topology)};
+  return "";
+}
+
+// Replaces `mesh` by the filled one and `filled` by its connectivity (the group's GroupPatches, which
+// may read the old one, is not used after this).
+void commit(FilledMesh& out, Mesh& mesh, std::optional<Topology>& filled) {
+  mesh.V = std::move(out.V);
+  mesh.F = std::move(out.F);
   mesh.vertex_scalars.clear();
   mesh.vertex_colors.resize(0, 3);
   pad_face_attributes(mesh);  // the input's faces keep theirs; the patch's have none
-  filled = std::move(patch.topology);  // `topo` is not read after this
-  return "";
+  filled = std::move(out.topology);
 }
 
 void mark(std::vector<HoleReport>& reports, const std::vector<int>& group, HoleStatus status,
@@ -601,7 +615,7 @@ std::string fallback_note(const FillOptions& options, const std::string& first_f
   if (start == PatchStart::unfaired)
     return failed + "; so did every fairing from the membrane and from the refined triangulation (the last: " +
            previous_start_failure + "): the refined triangulation is delivered unfaired, continuous in position only";
-  const std::string from = start == PatchStart::refined
+  const std::string from = start == PatchStart::refined && !previous_start_failure.empty()
                                ? "; every fairing from the membrane failed (the last: " + previous_start_failure +
                                      "); faired from the refined triangulation instead"
                                : "";
@@ -612,53 +626,119 @@ std::string fallback_note(const FillOptions& options, const std::string& first_f
   return failed + from + "; filled with " + delivered_label(fairing.continuity, r.linear);
 }
 
-// Fills `group` (fill_group), and with FillOptions::fallback_on_failure tries on where it fails:
-// the flow again with its trials relaxed tangentially where its patch crossed the mesh
+// Where a run of the fallback chain ended: filled (`reason` empty, the filled mesh in `filled`) or
+// failed, from which start, with which fairing, and what failed on the way.
+struct ChainOutcome {
+  std::string reason, first_failure, previous_start_failure;
+  PatchStart start = PatchStart::membrane;
+  FairRegionOptions fairing;
+  bool relaxed_retry = false;
+  FilledMesh filled;
+};
+
+// Fills `group` (fill_group) from `start`, and with FillOptions::fallback_on_failure tries on where
+// it fails: the flow again with its trials relaxed tangentially where its patch crossed the mesh
 // (crossing_retry_relaxation), then the linear ∆^k solutions from the requested continuity down
 // (never a flow the user did not ask for); all that again from the refined triangulation instead of
 // its membrane; last, that triangulation unfaired: where a loop bites deep into a thin part, every
 // fairing from the membrane may cross the mesh while the refined patch does not. Marks the reports.
+ChainOutcome run_fallback_chain(const Mesh& mesh, const std::vector<std::vector<int>>& loops,
+                                const std::vector<int>& group, GroupPatches& patches, const FillOptions& options,
+                                const FillObserver& observer, std::vector<HoleReport>& reports, PatchStart start) {
+  ChainOutcome c;
+  c.start = start;
+  c.fairing = options;  // the fairing part of the options (sliced on purpose)
+  for (;;) {
+    PatchCrossing crossed = PatchCrossing::none;
+    try {
+      c.reason = fill_group(mesh, loops, group, patches, options, c.fairing, c.start, observer, reports, c.filled,
+                            crossed);
+    } catch (const Error& e) {
+      c.reason = e.what();
+    }
+    if (c.start == PatchStart::unfaired && !c.reason.empty())
+      c.reason = c.previous_start_failure + (crossed == PatchCrossing::none
+                                                 ? "; the refined triangulation, unfaired, failed too: " + c.reason
+                                                 : "; the refined triangulation, unfaired, crosses the mesh");
+    if (c.reason.empty() || !options.fallback_on_failure || c.start == PatchStart::unfaired) break;
+    if (c.first_failure.empty()) c.first_failure = c.reason;
+    if (crossed == PatchCrossing::flow && c.fairing.flow.tangential_relaxation < options.crossing_retry_relaxation) {
+      c.fairing.flow.tangential_relaxation = options.crossing_retry_relaxation;
+      c.relaxed_retry = true;
+    } else if (c.fairing.method == FairMethod::flow || c.fairing.continuity != Continuity::G0) {
+      if (c.fairing.method == FairMethod::harmonic)
+        c.fairing.continuity = static_cast<Continuity>(static_cast<int>(c.fairing.continuity) - 1);
+      c.fairing.method = FairMethod::harmonic;
+    } else {  // the C0 (linear) solution failed too: the next start
+      c.previous_start_failure = c.reason;
+      c.start = c.start == PatchStart::membrane && options.patch.relax ? PatchStart::refined : PatchStart::unfaired;
+      c.fairing = options;
+      c.relaxed_retry = false;
+    }
+  }
+  mark(reports, group, c.reason.empty() ? HoleStatus::filled : HoleStatus::failed, c.reason);
+  if (c.reason.empty() && !c.first_failure.empty())
+    for (int h : group)
+      reports[h].note = fallback_note(options, c.first_failure, c.start, c.fairing, c.relaxed_retry,
+                                      c.previous_start_failure, reports[h]);
+  return c;
+}
+
+// The largest normal angle across the borders of the group's holes (radians).
+double largest_border_angle(const std::vector<HoleReport>& reports, const std::vector<int>& group) {
+  double angle = 0.0;
+  for (int h : group) angle = std::max(angle, reports[h].continuity.max_normal_angle);
+  return angle;
+}
+
+// A group filled from the membrane whose patch folds back against the surface (folds_back): the
+// membrane can crease a patch against its border (a loop round a corner), and every fairing started
+// there keeps the crease. The chain runs again from the refined triangulation, and its fill takes
+// the first one's place where it turns the normal across the border less; the note says so
+// (FillOptions::refill_folded_back; docs/fill.md, "A fill that folds back").
+// `unfilled`: the group's reports before the first fill.
+void refill_if_folded_back(const Mesh& mesh, const std::vector<std::vector<int>>& loops,
+                           const std::vector<int>& group, GroupPatches& patches, const FillOptions& options,
+                           const FillObserver& observer, const std::vector<HoleReport>& unfilled,
+                           std::vector<HoleReport>& reports, ChainOutcome& outcome) {
+  if (std::none_of(group.begin(), group.end(), [&](int h) { return folds_back(reports[h]); })) return;
+  const double folded = largest_border_angle(reports, group);
+  std::vector<HoleReport> kept;
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    kept.push_back(std::move(reports[group[k]]));
+    reports[group[k]] = unfilled[k];
+  }
+  ChainOutcome refined = run_fallback_chain(mesh, loops, group, patches, options, observer, reports,
+                                            PatchStart::refined);
+  const double angle = largest_border_angle(reports, group);
+  if (refined.reason.empty() && refined.start == PatchStart::refined && angle < folded) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "the fill from the membrane folds back (it turns the normal across the border by %.1f deg); "
+                  "filled from the refined triangulation instead, which turns it by %.1f deg",
+                  folded * 180 / std::numbers::pi, angle * 180 / std::numbers::pi);
+    for (int h : group) reports[h].note = std::string(text) + (reports[h].note.empty() ? "" : ": " + reports[h].note);
+    outcome = std::move(refined);
+    return;
+  }
+  for (std::size_t k = 0; k < group.size(); ++k) reports[group[k]] = std::move(kept[k]);
+}
+
+// Fills `group` through the fallback chain (run_fallback_chain) from the membrane, again from the
+// refined triangulation where that fill folds back (refill_if_folded_back), and commits the fill.
 void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                              const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
                              const FillOptions& options, const FillObserver& observer,
                              std::vector<HoleReport>& reports, std::optional<Topology>& filled) {
-  FairRegionOptions fairing = options;  // the fairing part of the options (sliced on purpose)
   GroupPatches patches(mesh, filled ? *filled : topo, patch_loops, options.patch);
-  PatchStart start = PatchStart::membrane;
-  std::string reason, first_failure, previous_start_failure;
-  bool relaxed_retry = false;
-  for (;;) {
-    PatchCrossing crossed = PatchCrossing::none;
-    try {
-      reason = fill_group(mesh, loops, group, patches, options, fairing, start, observer, reports, filled, crossed);
-    } catch (const Error& e) {
-      reason = e.what();
-    }
-    if (start == PatchStart::unfaired && !reason.empty())
-      reason = previous_start_failure + (crossed == PatchCrossing::none
-                                                ? "; the refined triangulation, unfaired, failed too: " + reason
-                                                : "; the refined triangulation, unfaired, crosses the mesh");
-    if (reason.empty() || !options.fallback_on_failure || start == PatchStart::unfaired) break;
-    if (first_failure.empty()) first_failure = reason;
-    if (crossed == PatchCrossing::flow && fairing.flow.tangential_relaxation < options.crossing_retry_relaxation) {
-      fairing.flow.tangential_relaxation = options.crossing_retry_relaxation;
-      relaxed_retry = true;
-    } else if (fairing.method == FairMethod::flow || fairing.continuity != Continuity::G0) {
-      if (fairing.method == FairMethod::harmonic)
-        fairing.continuity = static_cast<Continuity>(static_cast<int>(fairing.continuity) - 1);
-      fairing.method = FairMethod::harmonic;
-    } else {  // the C0 (linear) solution failed too: the next start
-      previous_start_failure = reason;
-      start = start == PatchStart::membrane && options.patch.relax ? PatchStart::refined : PatchStart::unfaired;
-      fairing = options;
-      relaxed_retry = false;
-    }
-  }
-  mark(reports, group, reason.empty() ? HoleStatus::filled : HoleStatus::failed, reason);
-  if (reason.empty() && !first_failure.empty())
-    for (int h : group)
-      reports[h].note =
-          fallback_note(options, first_failure, start, fairing, relaxed_retry, previous_start_failure, reports[h]);
+  std::vector<HoleReport> unfilled;
+  for (int h : group) unfilled.push_back(reports[h]);
+  ChainOutcome outcome =
+      run_fallback_chain(mesh, loops, group, patches, options, observer, reports, PatchStart::membrane);
+  if (outcome.reason.empty() && outcome.start == PatchStart::membrane && options.patch.relax &&
+      options.refill_folded_back)
+    refill_if_folded_back(mesh, loops, group, patches, options, observer, unfilled, reports, outcome);
+  if (outcome.reason.empty()) commit(outcome.filled, mesh, filled);
 }
 
 // "holes 3, 5 and 7"

@@ -30,7 +30,9 @@
 // that is not filled ("non-manifold border"), a triangulation or refinement that throws, a patch
 // that would make an edge or vertex non-manifold, or a patch whose faces cross the mesh
 // (face_intersection.h) however it is faired, even not at all (FillOptions::fallback_on_failure).
-// The other holes are still filled.
+// The other holes are still filled. A fill that folds back against the surface (folds_back) where
+// it was faired from the membrane is made again from the refined triangulation, and the one that
+// turns the normal across the border less is delivered (FillOptions::refill_folded_back).
 #pragma once
 
 #include <fairsurf/applications/fair_region.h>
@@ -86,6 +88,12 @@ struct FillOptions : FairRegionOptions {
   /// over where the border has a notch; relaxed, they stay well shaped while the surface they
   /// carry is the same (docs/fill.md, "A crossing flow, relaxed"). 0: no second try.
   double crossing_retry_relaxation = 0.5;
+  /// Where a fill started from the membrane folds back against the surface (folds_back: the
+  /// membrane creased the patch against its border, and every fairing from there keeps the
+  /// crease), the same chain runs again from the refined triangulation, and that fill is delivered
+  /// where it turns the normal across the border less; the note gives both angles (docs/fill.md, "A
+  /// fill that folds back"). Needs patch.relax.
+  bool refill_folded_back = true;
 };
 
 enum class HoleStatus { filled, skipped, failed };
