@@ -41,7 +41,9 @@ void add_keep_flow_flag(CLI::App* cmd, bool& keep_flow) {
                 "Keep the flow wherever it settles, even where its linear Delta^k floor re-predicts the held-out "
                 "rings better or the flow turns the border more than the floor (blend: turns the normal across "
                 "the loops more or creases against the linear tube): G2 over a C2 result that may lie closer to "
-                "the surface; the floor still takes a flow that does not settle or crosses the mesh");
+                "the surface; the floor still takes a flow that does not settle, crosses the mesh, or (fill, "
+                "fair) folds back (turns the normal across the border by more than a right angle) where the "
+                "floor does not");
 }
 
 void note_keep_flow(const std::string& what) {
@@ -76,6 +78,7 @@ nlohmann::json to_json(const FairRegionReport& r) {
     j["held_out_two_ring_flow_error"] = r.held_out_two_ring_flow_error;
     j["two_ring_boundary_fits"] = r.two_ring_boundary_fits;
     j["checks_chose_linear"] = r.checks_chose_linear;
+    j["flow_folded_back"] = r.flow_folded_back;
   }
   for (const FairRegionReport& part : r.parts) j["parts"].push_back(to_json(part));
   if (r.has_flow_report()) {

@@ -63,6 +63,7 @@ py::dict to_dict(const FairRegionReport& r) {
     d["held_out_two_ring_flow_error"] = r.held_out_two_ring_flow_error;
     d["two_ring_boundary_fits"] = r.two_ring_boundary_fits;
     d["checks_chose_linear"] = r.checks_chose_linear;
+    d["flow_folded_back"] = r.flow_folded_back;
   }
   if (!r.parts.empty()) {
     py::list parts;
@@ -99,6 +100,7 @@ py::dict hole_dict(const HoleReport& r) {
                   "held_out_two_ring_flow_error"_a = r.held_out_two_ring_flow_error,
                   "held_out_refined_linear_error"_a = r.held_out_refined_linear_error,
                   "refined_start"_a = r.refined_start, "checks_chose_linear"_a = r.checks_chose_linear,
+                  "flow_folded_back"_a = r.flow_folded_back,
                   "two_ring_boundary_fits"_a = r.two_ring_boundary_fits, "note"_a = r.note, "steps"_a = r.steps,
                   "harmonic_solves"_a = r.harmonic_solves, "seconds"_a = r.seconds,
                   "final_max_velocity"_a = r.final_max_velocity,

@@ -83,13 +83,18 @@ namespace {
 // Empty, or why the flow's steady state folds against the ∆^k solution `start` it started from:
 // its max normal angle across the region's border exceeds both
 // FairRegionOptions::max_border_angle_ratio times the linear solution's and kSmallestFoldAngle
-// (border_fold.h).
+// (border_fold.h; `by_ratio` says so), or it folds back (more than a right angle) where the linear
+// solution does not (FairRegionOptions::refuse_folding_back; `back` says so).
 std::string border_fold_reason(const Submesh& sub, const Topology& local, const Vertices& start,
-                               const FairRegionOptions& options) {
-  if (std::isinf(options.max_border_angle_ratio)) return "";
+                               const FairRegionOptions& options, bool& by_ratio, bool& back) {
+  by_ratio = back = false;
+  if (std::isinf(options.max_border_angle_ratio) && !options.refuse_folding_back) return "";
   const double flowed = measure_continuity(sub.mesh.V, sub.mesh.F, local, sub.free_local).max_normal_angle;
   const double linear = measure_continuity(start, sub.mesh.F, local, sub.free_local).max_normal_angle;
-  if (!detail::folds_against(flowed, linear, options.max_border_angle_ratio)) return "";
+  constexpr double kRightAngle = std::numbers::pi / 2;
+  by_ratio = detail::folds_against(flowed, linear, options.max_border_angle_ratio);
+  back = options.refuse_folding_back && flowed > kRightAngle && linear <= kRightAngle;
+  if (!by_ratio && !back) return "";
   constexpr double kDegrees = 180 / std::numbers::pi;
   char text[200];
   std::snprintf(text, sizeof text,
@@ -109,13 +114,12 @@ void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& regi
   const bool floor = options.linear_floor && options.harmonic_start_iterations > 0;
   const Vertices start = floor ? sub.mesh.V : Vertices();
   std::string failure;
-  bool folded = false;
+  bool folded = false, folded_back = false;
   try {
     report.flow = run_flow(sub.mesh.V, sub.mesh.F, local, region, flow, observer);
     if (report.flow.stop_reason != FlowStopReason::steady) failure = unsettled_reason(report.flow);
     else if (floor) {
-      failure = border_fold_reason(sub, local, start, options);
-      folded = !failure.empty();
+      failure = border_fold_reason(sub, local, start, options, folded, folded_back);
     }
   } catch (const NumericalError& e) {
     if (const auto* failure = dynamic_cast<const flow_detail::FlowFailure*>(&e))
@@ -130,6 +134,7 @@ void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& regi
   sub.mesh.V = start;
   report.linear = true;
   report.checks_chose_linear = folded;
+  report.flow_folded_back = folded_back;
   report.note = std::string("the ") + to_string(report.flow_kind) + " flow " + failure +
                 "; kept the linear ∆" + std::to_string(static_cast<int>(region.supported) + 1) +
                 " solution it started from";

@@ -82,6 +82,7 @@ FairRegionReport combined_report(std::vector<FairRegionReport> parts, const Fair
     whole.supported = std::min(whole.supported, part.supported);
     whole.linear = whole.linear || part.linear;
     whole.checks_chose_linear = whole.checks_chose_linear || part.checks_chose_linear;
+    whole.flow_folded_back = whole.flow_folded_back || part.flow_folded_back;
     whole.crossing_fallback = whole.crossing_fallback || part.crossing_fallback;
     whole.harmonic.free_vertices += part.harmonic.free_vertices;
     whole.harmonic.iterations += part.harmonic.iterations;

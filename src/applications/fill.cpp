@@ -340,6 +340,7 @@ void report_fairing(const FairRegionReport& fairing, bool flowed, HoleReport& r)
   r.held_out_refined_linear_error = fairing.held_out_refined_linear_error;
   r.refined_start = fairing.refined_start;
   r.checks_chose_linear = fairing.checks_chose_linear;
+  r.flow_folded_back = fairing.flow_folded_back;
   r.two_ring_boundary_fits = flowed && fairing.two_ring_boundary_fits;
   r.steps = flowed ? fairing.flow.accepted_steps : 0;
   r.harmonic_solves = fairing.harmonic.iterations;
@@ -691,17 +692,23 @@ double largest_border_angle(const std::vector<HoleReport>& reports, const std::v
   return angle;
 }
 
-// A group filled from the membrane whose patch folds back against the surface (folds_back): the
-// membrane can crease a patch against its border (a loop round a corner), and every fairing started
-// there keeps the crease. The chain runs again from the refined triangulation, and its fill takes
-// the first one's place where it turns the normal across the border less; the note says so
-// (FillOptions::refill_folded_back; docs/fill.md, "A fill that folds back").
+// A group filled from the membrane whose patch folds back against the surface (folds_back), or
+// whose flow folded back and gave way to its linear floor (flow_folded_back): the membrane can
+// crease a patch against its border (a loop round a corner), and every fairing started there keeps
+// the crease. The chain runs again from the refined triangulation, and its fill takes the first
+// one's place where it turns the normal across the border less than a fill that folds back, or, in
+// place of a floor kept for a flow that folded back, where it is the flow's and does not fold back;
+// the note says so (FillOptions::refill_folded_back; docs/fill.md, "A fill that folds back").
 // `unfilled`: the group's reports before the first fill.
 void refill_if_folded_back(const Mesh& mesh, const std::vector<std::vector<int>>& loops,
                            const std::vector<int>& group, GroupPatches& patches, const FillOptions& options,
                            const FillObserver& observer, const std::vector<HoleReport>& unfilled,
                            std::vector<HoleReport>& reports, ChainOutcome& outcome) {
-  if (std::none_of(group.begin(), group.end(), [&](int h) { return folds_back(reports[h]); })) return;
+  const auto any = [&](auto&& predicate) {
+    return std::any_of(group.begin(), group.end(), [&](int h) { return predicate(reports[h]); });
+  };
+  const bool fill_folded = any([](const HoleReport& r) { return folds_back(r); });
+  if (!fill_folded && !any([](const HoleReport& r) { return r.flow_folded_back; })) return;
   const double folded = largest_border_angle(reports, group);
   std::vector<HoleReport> kept;
   for (std::size_t k = 0; k < group.size(); ++k) {
@@ -711,12 +718,21 @@ void refill_if_folded_back(const Mesh& mesh, const std::vector<std::vector<int>>
   ChainOutcome refined = run_fallback_chain(mesh, loops, group, patches, options, observer, reports,
                                             PatchStart::refined);
   const double angle = largest_border_angle(reports, group);
-  if (refined.reason.empty() && refined.start == PatchStart::refined && angle < folded) {
+  const bool better = fill_folded ? angle < folded
+                                  : !any([](const HoleReport& r) { return r.linear || folds_back(r); });
+  if (refined.reason.empty() && refined.start == PatchStart::refined && better) {
+    constexpr double kDegrees = 180 / std::numbers::pi;
     char text[256];
-    std::snprintf(text, sizeof text,
-                  "the fill from the membrane folds back (it turns the normal across the border by %.1f deg); "
-                  "filled from the refined triangulation instead, which turns it by %.1f deg",
-                  folded * 180 / std::numbers::pi, angle * 180 / std::numbers::pi);
+    if (fill_folded)
+      std::snprintf(text, sizeof text,
+                    "the fill from the membrane folds back (it turns the normal across the border by %.1f deg); "
+                    "filled from the refined triangulation instead, which turns it by %.1f deg",
+                    folded * kDegrees, angle * kDegrees);
+    else
+      std::snprintf(text, sizeof text,
+                    "the flow from the membrane folds back where its linear floor does not; filled from the "
+                    "refined triangulation instead, whose flow turns the normal across the border by %.1f deg",
+                    angle * kDegrees);
     for (int h : group) reports[h].note = std::string(text) + (reports[h].note.empty() ? "" : ": " + reports[h].note);
     outcome = std::move(refined);
     return;

@@ -421,6 +421,85 @@ TEST(RealHoleKeepFlow, TheSettledFlowIsDeliveredWhereTheHeldOutRingsChoseALinear
   EXPECT_LT(distance, 0.5);
 }
 
+// A 4 h ball round the same corner of the hammer scan's head (bench_real_holes' hammer 25395 4h).
+// Kept, the settled flow folds back: it turns the normal across the border by 105° where the ∆³
+// solution it started from turns it by 48°, and lies 0.76 h from the scan against ∆³'s 0.16 h.
+// --keep-flow keeps a flow the fold check would refuse, not one that folds back where the floor
+// does not (FairRegionOptions::refuse_folding_back): the floor is kept, flow_folded_back says why
+// (not checks_chose_linear: --keep-flow does not lift this check), and the refined triangulation's
+// flow, which folds back too, is not taken.
+TEST(RealHoleKeepFlow, AFlowThatFoldsBackWhereTheFloorDoesNotIsNotKept) {
+  const Mesh truth = read_mesh(test::data_path("hammer_rawscan.obj"));
+  const double h = test::mean_edge_length(truth);
+  const Mesh cut = test::cut_ball(truth, {1.466169, 0.268313, 3.855077}, 4 * h);
+  FillOptions options;
+  keep_settled_flow(options);
+
+  Mesh kept = cut;
+  const FillReport report = fill_holes(kept, options);
+  ASSERT_EQ(report.holes.size(), 1u);
+  const HoleReport& hole = report.holes.front();
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "C2 (linear)") << hole.note;
+  EXPECT_TRUE(hole.flow_folded_back) << hole.note;
+  EXPECT_FALSE(hole.checks_chose_linear) << hole.note;
+  EXPECT_FALSE(folds_back(hole)) << hole.note;
+  EXPECT_NE(hole.note.find("settled, but turns the normal across the border by"), std::string::npos) << hole.note;
+
+  Mesh folded = cut;
+  FillOptions anyway = options;
+  anyway.refuse_folding_back = false;
+  const FillReport folded_report = fill_holes(folded, anyway);
+  const HoleReport& folded_hole = folded_report.holes.front();
+  ASSERT_EQ(folded_hole.status, HoleStatus::filled) << folded_hole.reason;
+  EXPECT_EQ(delivered_label(folded_hole.supported, folded_hole.linear), "G2") << folded_hole.note;
+  EXPECT_FALSE(folded_hole.flow_folded_back);
+  EXPECT_TRUE(folds_back(folded_hole)) << folded_hole.note;
+  const double distance = mean_new_vertex_distance(kept, cut.num_vertices(), truth) / h;
+  const double folded_distance = mean_new_vertex_distance(folded, cut.num_vertices(), truth) / h;
+  std::printf("[keep flow, fold back] hammer head corner 4h: the flow %.1f° %.3f h, the floor kept %.1f° %.3f h\n",
+              folded_hole.continuity.max_normal_angle * 180 / std::numbers::pi, folded_distance,
+              hole.continuity.max_normal_angle * 180 / std::numbers::pi, distance);
+  EXPECT_LT(2 * distance, folded_distance);
+}
+
+// An 8 h ball on the closed bunny with 0.1 h of normal noise (bench_real_holes' random centre
+// 15596): from the membrane the G2 flow settles folded back (more than a right angle across the
+// border) where its ∆³ floor does not, so the floor is kept (refuse_folding_back). From the refined
+// triangulation the flow does not fold back, and that G2 fill is delivered.
+TEST(RealHoleFoldBack, AFlowThatFoldsBackFromTheMembraneIsTriedFromTheRefinedTriangulation) {
+  const Mesh truth = read_mesh(test::data_path("stanford_bunny_remesh_closed.obj"));
+  const double h = test::mean_edge_length(truth);
+  Mesh cut = test::cut_ball(truth, {-0.506184, -0.764796, 0.011432}, 8 * h);
+  test::add_normal_noise(cut, 0.1 * h, 9);
+
+  Mesh filled = cut;
+  const FillReport report = fill_holes(filled, FillOptions{});
+  ASSERT_EQ(report.holes.size(), 1u);
+  const HoleReport& hole = report.holes.front();
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
+  EXPECT_FALSE(folds_back(hole)) << hole.note;
+  EXPECT_NE(hole.note.find("the flow from the membrane folds back where its linear floor does not"), std::string::npos)
+      << hole.note;
+
+  Mesh floor = cut;
+  FillOptions membrane_only;
+  membrane_only.refill_folded_back = false;
+  const FillReport floor_report = fill_holes(floor, membrane_only);
+  const HoleReport& floor_hole = floor_report.holes.front();
+  ASSERT_EQ(floor_hole.status, HoleStatus::filled) << floor_hole.reason;
+  EXPECT_EQ(delivered_label(floor_hole.supported, floor_hole.linear), "C2 (linear)") << floor_hole.note;
+  EXPECT_TRUE(floor_hole.flow_folded_back) << floor_hole.note;
+  const double distance = mean_new_vertex_distance(filled, cut.num_vertices(), truth) / h;
+  const double floor_distance = mean_new_vertex_distance(floor, cut.num_vertices(), truth) / h;
+  std::printf("[fold back] bunny 8h, 0.1 h noise: G2 from the refined triangulation %.1f° %.3f h, the floor kept "
+              "from the membrane %.1f° %.3f h\n",
+              hole.continuity.max_normal_angle * 180 / std::numbers::pi, distance,
+              floor_hole.continuity.max_normal_angle * 180 / std::numbers::pi, floor_distance);
+  EXPECT_LT(distance, floor_distance);
+}
+
 // Two balls of 16 h and 17 h cut off the end of the hammer's handle and bite into its side: a
 // 197-edge loop round a thin part. Its membrane folds against the border (177°), and every fairing
 // started there (the flow, then ∆³, ∆², ∆¹ re-evaluated from it) crosses the handle's far side. The

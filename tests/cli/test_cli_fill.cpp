@@ -126,6 +126,7 @@ TEST_F(CliFill, KeepFlowDeliversTheSettledFlowWhereTheHeldOutRingsChoseTheFloor)
   for (const auto& hole : log["holes"]) {
     EXPECT_EQ(hole["delivered"], "G2") << hole.dump();
     EXPECT_FALSE(hole["checks_chose_linear"].get<bool>()) << hole.dump();
+    EXPECT_FALSE(hole["flow_folded_back"].get<bool>()) << hole.dump();  // kept: none folds back
     // The held-out rings still weigh the flow's 1-ring and 2-ring boundary fits.
     EXPECT_TRUE(hole["held_out_flow_error"].is_number()) << hole.dump();
     EXPECT_TRUE(hole["held_out_two_ring_flow_error"].is_number()) << hole.dump();

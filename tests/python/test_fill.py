@@ -70,6 +70,7 @@ def test_keep_flow_delivers_g2_where_the_held_out_rings_chose_the_floor(data_dir
     assert [h["delivered"] for h in kept["holes"]] == ["G2"] * 5
     # The held-out rings only chose between the flow's 1-ring and 2-ring boundary fits.
     assert not any(h["checks_chose_linear"] for h in kept["holes"])
+    assert not any(h["flow_folded_back"] for h in kept["holes"])
     assert all(np.isfinite(h["held_out_two_ring_flow_error"]) for h in kept["holes"])
     assert fairsurf.info(V2, F2)["boundary_loops"] == []
     with pytest.raises(fairsurf.InvalidArgument, match="keep_flow"):

@@ -86,6 +86,12 @@ struct FairRegionOptions {
   /// is labelled, and on real holes it lands farther from the surface than the floor more often than
   /// not (docs/fill.md, "A flow that folds against its start"). Infinity: off.
   double max_border_angle_ratio = std::numeric_limits<double>::infinity();
+  /// With the linear floor: a flow whose steady state folds back across the region's border (turns
+  /// the normal by more than a right angle) where the ∆^k solution it started from does not is not
+  /// delivered either, whatever max_border_angle_ratio says; keep_settled_flow keeps this check. The
+  /// linear solution is kept, with both angles in the note, and FairRegionReport::flow_folded_back
+  /// set (fill then tries the refined triangulation: docs/fill.md, "A fill that folds back").
+  bool refuse_folding_back = true;
 
   static FlowOptions default_fair_flow_options();
   /// The options that settle a disk-like region (a hole's patch, a marked region) in a few steps:
@@ -108,10 +114,10 @@ struct FairRegionOptions {
 /// Keeps the flow wherever it settles: switches off the two checks that weigh a settled flow against
 /// its linear floor, the held-out rings' choice of a linear solution (held_out_may_choose_linear =
 /// false; they still choose the flow's 1-ring or 2-ring boundary fits) and the fold check
-/// (max_border_angle_ratio = ∞). The floor still takes a flow that throws or does not settle, and
-/// fill's fallbacks a patch that crosses the mesh. For a user who wants the G2 asked for over a C2
-/// result that may lie closer to the surface, which on real holes it often does (docs/fill.md,
-/// "Keeping the flow").
+/// (max_border_angle_ratio = ∞). The floor still takes a flow that throws, does not settle, or folds
+/// back where the floor does not (refuse_folding_back), and fill's fallbacks a patch that crosses
+/// the mesh. For a user who wants the G2 asked for over a C2 result that may lie closer to the
+/// surface, which on real holes it often does (docs/fill.md, "Keeping the flow").
 void keep_settled_flow(FairRegionOptions& options);
 
 struct FairRegionReport {
@@ -153,6 +159,10 @@ struct FairRegionReport {
   /// its start); blend: the angle or crease rule against the linear tube. Not where the flow did not
   /// settle, threw or crossed the mesh. For a region in parts, set where any part's is.
   bool checks_chose_linear = false;
+  /// The flow settled but folded back where the linear solution it started from does not, and the
+  /// linear solution was kept (FairRegionOptions::refuse_folding_back). For a region in parts, set
+  /// where any part's is.
+  bool flow_folded_back = false;
   /// The fairing first reached crossed the mesh, and the linear solution delivered is the first
   /// that does not, possibly at a lower continuity than the rings support (`supported` is then
   /// that lower one; `note` says so).

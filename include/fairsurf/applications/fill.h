@@ -30,9 +30,9 @@
 // that is not filled ("non-manifold border"), a triangulation or refinement that throws, a patch
 // that would make an edge or vertex non-manifold, or a patch whose faces cross the mesh
 // (face_intersection.h) however it is faired, even not at all (FillOptions::fallback_on_failure).
-// The other holes are still filled. A fill that folds back against the surface (folds_back) where
-// it was faired from the membrane is made again from the refined triangulation, and the one that
-// turns the normal across the border less is delivered (FillOptions::refill_folded_back).
+// The other holes are still filled. A fill from the membrane that folds back against the surface
+// (folds_back), or whose flow did, is made again from the refined triangulation, which is delivered
+// where it does not fold back or folds less (FillOptions::refill_folded_back).
 #pragma once
 
 #include <fairsurf/applications/fair_region.h>
@@ -88,11 +88,13 @@ struct FillOptions : FairRegionOptions {
   /// over where the border has a notch; relaxed, they stay well shaped while the surface they
   /// carry is the same (docs/fill.md, "A crossing flow, relaxed"). 0: no second try.
   double crossing_retry_relaxation = 0.5;
-  /// Where a fill started from the membrane folds back against the surface (folds_back: the
-  /// membrane creased the patch against its border, and every fairing from there keeps the
-  /// crease), the same chain runs again from the refined triangulation, and that fill is delivered
-  /// where it turns the normal across the border less; the note gives both angles (docs/fill.md, "A
-  /// fill that folds back"). Needs patch.relax.
+  /// Where a fill started from the membrane folds back against the surface (folds_back), or its
+  /// flow folded back and gave way to the linear floor (HoleReport::flow_folded_back), the same
+  /// chain runs again from the refined triangulation: the membrane may have creased the patch
+  /// against its border, and every fairing from there keeps the crease. That fill is delivered
+  /// where it turns the normal across the border less than the fill that folds back, or, in place
+  /// of the floor, where it is the flow's and does not fold back; the note gives the angles
+  /// (docs/fill.md, "A fill that folds back"). Needs patch.relax.
   bool refill_folded_back = true;
 };
 
@@ -135,6 +137,9 @@ struct HoleReport {
   /// The linear solution was delivered over the flow by the held-out rings or the fold check, the
   /// checks keep_settled_flow switches off (FairRegionReport's).
   bool checks_chose_linear = false;
+  /// The flow settled but folded back where its linear floor does not, and the floor was kept
+  /// (FairRegionReport's); fill then tries the refined triangulation (refill_folded_back).
+  bool flow_folded_back = false;
   /// Why `supported` is below `requested` (too few complete rings around the hole, or a failed
   /// attempt at a higher continuity — a throw, no steady state, a crossing: FillOptions::
   /// fallback_on_failure). Empty otherwise.
