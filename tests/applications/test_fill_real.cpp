@@ -71,6 +71,17 @@ FilledTwice fill_twice(const Mesh& cut, const Mesh& truth) {
   return r;
 }
 
+// `cut` (one hole) filled with the defaults but without the second chain from the refined
+// triangulation (FillOptions::refill_folded_back = false): what the start from the membrane gives.
+HoleReport fill_from_membrane_only(const Mesh& cut, Mesh& filled) {
+  filled = cut;
+  FillOptions membrane_only;
+  membrane_only.refill_folded_back = false;
+  const FillReport report = fill_holes(filled, membrane_only);
+  EXPECT_EQ(report.holes.size(), 1u);
+  return report.holes.front();
+}
+
 // data/`mesh` cut by a ball of `radius` mean edge lengths around `centre`, filled twice (fill_twice).
 struct BallHole {
   Mesh truth, cut;
@@ -483,11 +494,8 @@ TEST(RealHoleFoldBack, AFlowThatFoldsBackFromTheMembraneIsTriedFromTheRefinedTri
   EXPECT_NE(hole.note.find("the flow from the membrane folds back where its linear floor does not"), std::string::npos)
       << hole.note;
 
-  Mesh floor = cut;
-  FillOptions membrane_only;
-  membrane_only.refill_folded_back = false;
-  const FillReport floor_report = fill_holes(floor, membrane_only);
-  const HoleReport& floor_hole = floor_report.holes.front();
+  Mesh floor;
+  const HoleReport floor_hole = fill_from_membrane_only(cut, floor);
   ASSERT_EQ(floor_hole.status, HoleStatus::filled) << floor_hole.reason;
   EXPECT_EQ(delivered_label(floor_hole.supported, floor_hole.linear), "C2 (linear)") << floor_hole.note;
   EXPECT_TRUE(floor_hole.flow_folded_back) << floor_hole.note;
@@ -585,11 +593,8 @@ TEST(RealHoleFoldBack, AFillFromTheMembraneThatFoldsBackIsReplacedByOneFromTheRe
   EXPECT_TRUE(validate(filled).manifold());
   EXPECT_TRUE(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).empty());
 
-  Mesh folded = cut;
-  FillOptions membrane_only;
-  membrane_only.refill_folded_back = false;
-  const FillReport folded_report = fill_holes(folded, membrane_only);
-  const HoleReport& folded_hole = folded_report.holes.front();
+  Mesh folded;
+  const HoleReport folded_hole = fill_from_membrane_only(cut, folded);
   ASSERT_EQ(folded_hole.status, HoleStatus::filled) << folded_hole.reason;
   EXPECT_TRUE(folds_back(folded_hole)) << folded_hole.note;
   EXPECT_LT(hole.continuity.max_normal_angle, folded_hole.continuity.max_normal_angle / 2);
