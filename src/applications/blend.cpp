@@ -623,7 +623,8 @@ void blend_from_pinched_membrane(Mesh& mesh, const Mesh& input, const Topology& 
 }  // namespace
 
 bool folds_back(const BlendLoop& loop) {
-  return loop.border.max_normal_angle > std::max(std::numbers::pi / 2, 2 * loop.reference.max_normal_angle);
+  return detail::turns_back(loop.border.max_normal_angle) &&
+         loop.border.max_normal_angle > 2 * loop.reference.max_normal_angle;
 }
 
 ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,

@@ -91,9 +91,8 @@ std::string border_fold_reason(const Submesh& sub, const Topology& local, const 
   if (std::isinf(options.max_border_angle_ratio) && !options.refuse_folding_back) return "";
   const double flowed = measure_continuity(sub.mesh.V, sub.mesh.F, local, sub.free_local).max_normal_angle;
   const double linear = measure_continuity(start, sub.mesh.F, local, sub.free_local).max_normal_angle;
-  constexpr double kRightAngle = std::numbers::pi / 2;
   by_ratio = detail::folds_against(flowed, linear, options.max_border_angle_ratio);
-  back = options.refuse_folding_back && flowed > kRightAngle && linear <= kRightAngle;
+  back = options.refuse_folding_back && detail::turns_back(flowed) && !detail::turns_back(linear);
   if (!by_ratio && !back) return "";
   constexpr double kDegrees = 180 / std::numbers::pi;
   char text[200];

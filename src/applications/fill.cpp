@@ -7,6 +7,7 @@
 #include <fairsurf/mesh/topology.h>
 #include <fairsurf/mesh/validate.h>
 
+#include "border_fold.h"
 #include "held_out.h"
 #include "mesh/crossing_count.h"
 #include "mesh/validated.h"
@@ -814,7 +815,7 @@ FillOptions::FillOptions() : FairRegionOptions(harmonic_started()) {
 }
 
 bool folds_back(const HoleReport& hole) {
-  return hole.status == HoleStatus::filled && hole.continuity.max_normal_angle > std::numbers::pi / 2;
+  return hole.status == HoleStatus::filled && detail::turns_back(hole.continuity.max_normal_angle);
 }
 
 FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver& observer) {
