@@ -185,7 +185,7 @@ void fill_ours(const Mesh& cut, const FillOptions& options, const Truth& truth, 
     row.status = report.failed > 0 ? "failed" : "ok";
     row.angle = max_border_angle(report);
     for (const HoleReport& r : report.holes) {
-      row.steps += r.steps;
+      if (r.patch_shared_with < 0) row.steps += r.steps;  // a patch two loops share counts once
       if (r.status == HoleStatus::filled)
         add_choice(row, r);
       if (r.status == HoleStatus::failed) add_note(row, r.reason);

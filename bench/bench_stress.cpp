@@ -156,7 +156,7 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, FillTally& tally) {
     const bool refined = !unfaired && noted(r.note, "faired from the refined triangulation instead");
     tally.unfaired += unfaired;
     tally.refined += refined;
-    if (folds_back(r)) {
+    if (folds_back(r) && r.patch_shared_with < 0) {  // a patch two loops share counts once
       const double uncut = uncut_angle(m, balls, loops[static_cast<std::size_t>(r.index)]);
       ++tally.folded;
       tally.folded_against_uncut += disks && uncut < 90;

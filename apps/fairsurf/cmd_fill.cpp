@@ -103,6 +103,7 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"filled_with", r.filled_with},
                    {"vertices_added", r.vertices_added},
                    {"faces_added", r.faces_added},
+                   {"patch_shared_with", r.patch_shared_with},
                    {"requested_continuity", to_string(r.requested)},
                    {"supported_continuity", to_string(r.supported)},
                    {"delivered", delivered_label(r.supported, r.linear)},
@@ -140,9 +141,10 @@ std::string open_surface_hint(const FillReport& report, const FillArgs& args) {
   return "; the largest loop looks like the outer border of an open surface: use --skip-largest";
 }
 
-// A patch that folds back at its hole's border (fill.h's folds_back) is written; the user is told.
+// A patch that folds back at its hole's border (fill.h's folds_back) is written; the user is told,
+// once for a patch two loops share (HoleReport::patch_shared_with).
 void warn_if_folded_back(const HoleReport& hole) {
-  if (!folds_back(hole)) return;
+  if (!folds_back(hole) || hole.patch_shared_with >= 0) return;
   std::fprintf(stderr,
                "fairsurf: warning: hole %d's patch folds back: it turns the normal across the hole's border by "
                "%.3g°, more than a right angle; the loop may not be a hole (the edge of a fin) or the hole may cut "

@@ -92,7 +92,8 @@ py::dict loop_dict(const BlendLoop& loop) {
 py::dict hole_dict(const HoleReport& r) {
   return py::dict("index"_a = r.index, "border_edges"_a = r.border_edges, "status"_a = to_string(r.status),
                   "reason"_a = r.reason, "filled_with"_a = r.filled_with, "vertices_added"_a = r.vertices_added,
-                  "faces_added"_a = r.faces_added, "requested_continuity"_a = to_string(r.requested),
+                  "faces_added"_a = r.faces_added, "patch_shared_with"_a = r.patch_shared_with,
+                  "requested_continuity"_a = to_string(r.requested),
                   "supported_continuity"_a = to_string(r.supported),
                   "delivered"_a = delivered_label(r.supported, r.linear), "linear"_a = r.linear,
                   "held_out_flow_error"_a = r.held_out_flow_error,

@@ -206,10 +206,13 @@ std::vector<std::vector<int>> overlapping_groups(const Topology& topo, const std
 
 // The hole each new vertex and face of `patch` belongs to. Patches of different loops share no
 // edge (at a pinch they share the vertex only), so the new faces fall into one edge-connected piece
-// per patch, found from the face across each loop edge.
+// per patch, found from the face across each loop edge. Where relinking at a pinch made one loop of
+// two holes (two loops that meet at a vertex, as a figure eight), their one piece goes to the later
+// hole, and `patch_hole` says so for the earlier.
 struct PatchOwnership {
   std::vector<int> vertex_hole;  ///< per new vertex (index − first new vertex)
   std::vector<int> face_hole;    ///< per new face
+  std::vector<int> patch_hole;   ///< per hole of the group: the hole its loop's patch is counted for
 };
 
 PatchOwnership patch_ownership(const InitialPatch& patch, int input_vertices,
@@ -235,6 +238,15 @@ PatchOwnership patch_ownership(const InitialPatch& patch, int input_vertices,
       if (across != face_of.end()) hole_of_root[find_root(parent, across->second)] = h;
     }
   PatchOwnership own;
+  for (int h : holes) {
+    const auto& loop = loops[h];
+    own.patch_hole.push_back(h);
+    for (std::size_t t = 0; t < loop.size(); ++t)
+      if (const auto across = face_of.find(key(loop[(t + 1) % loop.size()], loop[t])); across != face_of.end()) {
+        own.patch_hole.back() = hole_of_root[find_root(parent, across->second)];
+        break;
+      }
+  }
   own.vertex_hole.assign(patch.mesh.num_vertices() - input_vertices, -1);
   for (int f = 0; f < count; ++f) {
     own.face_hole.push_back(hole_of_root[find_root(parent, f)]);
@@ -413,6 +425,28 @@ void refair_each_hole(InitialPatch& patch, const std::vector<int>& group, const 
   }
 }
 
+// A hole whose loop was joined to another's at a pinch of the border (PatchOwnership::patch_hole)
+// has no patch of its own: it gets the report of the hole its patch is counted for (the same
+// fairing and labels, and the border measure, which covers both loops), no vertex or face of its
+// own, and a note naming that hole.
+void report_shared_patches(const std::vector<int>& patch_hole, const std::vector<int>& group,
+                           std::vector<HoleReport>& reports) {
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    const int h = group[k], owner = patch_hole[k];
+    if (owner == h) continue;
+    HoleReport shared = reports[owner];
+    shared.index = h;
+    shared.border_edges = reports[h].border_edges;
+    shared.filled_with = reports[h].filled_with;
+    shared.vertices_added = shared.faces_added = 0;
+    shared.patch_shared_with = owner;
+    shared.note = "filled in one patch with hole " + std::to_string(owner) +
+                  ", whose loop meets this one at a pinch of the border; the patch's vertices and faces are "
+                  "counted there" + (shared.note.empty() ? "" : ": " + shared.note);
+    reports[h] = std::move(shared);
+  }
+}
+
 // Whether a rejected patch crosses the mesh, and if so whether a flow's result does.
 enum class PatchCrossing { none, flow, other };
 
@@ -553,6 +587,7 @@ std::string fill_group(const Mesh& mesh, const std::vector<std::vector<int>>& lo
     alone.flow.tangential_relaxation = options.flow.tangential_relaxation;
     refair_each_hole(patch, group, hole_free, hole_faces, alone, options, step_observer, reports);
   }
+  report_shared_patches(own.patch_hole, group, reports);
   out = {std::move(patch.mesh.V), std::move(patch.mesh.F), std::move(patch.topology)};
   return "";
 }

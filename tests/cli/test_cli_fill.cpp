@@ -77,6 +77,7 @@ TEST_F(CliFill, SelectedHolesAreFilledOneLineEachWithALog) {
   EXPECT_EQ(hole["two_ring_boundary_fits"], flow_wins && two_ring < one_ring) << hole.dump();
   EXPECT_EQ(hole.contains("steps_log"), flow_wins);
   EXPECT_GE(hole["harmonic_solves"].get<int>(), 1);  // the flow's ∆³ start, or the floor itself
+  EXPECT_EQ(hole["patch_shared_with"], -1);            // its own patch: no pinch joins it to another loop
   EXPECT_EQ(log["filled"], 2);
 }
 

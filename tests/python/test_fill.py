@@ -23,6 +23,7 @@ def test_fill_closes_the_hole_like_the_cli(tmp_path, cli, data_dir, hand):
     cli_report = json.loads(log.read_text())
     assert report["holes"][0]["delivered"] == cli_report["holes"][0]["delivered"]
     assert report["holes"][0]["vertices_added"] == len(V2) - len(V)
+    assert report["holes"][0]["patch_shared_with"] == cli_report["holes"][0]["patch_shared_with"] == -1
 
 
 def test_selected_holes_only(hand):

@@ -111,6 +111,11 @@ struct HoleReport {
   std::vector<int> filled_with;  ///< other holes filled jointly with it (overlapping rings)
   int vertices_added = 0;        ///< this hole's new vertices
   int faces_added = 0;           ///< this hole's new faces
+  /// Where relinking at a pinch of the border made one loop of this hole and another (two loops
+  /// that meet at a vertex, as a figure eight), the hole whose report counts their one patch: this
+  /// report then has no vertex or face added and repeats that hole's labels, fairing figures and
+  /// border measure (which covers both loops). −1 otherwise.
+  int patch_shared_with = -1;
   Continuity requested = Continuity::G2;
   Continuity supported = Continuity::G2;  ///< the continuity the fairing used
   /// The patch is the linear ∆^k solution (k = supported + 1): C(k−1), not G(k−1) — the harmonic
