@@ -113,13 +113,15 @@ void run_blend(const BlendArgs& args) {
               {"membrane_quality", report.membrane_quality},
               {"relaxed", report.relaxed},
               {"straight_rings", report.straight_rings},
+              {"rebuilt_without_membrane", report.rebuilt_without_membrane},
               {"fair", to_json(report.fair)},
               {"seconds", report.seconds}});
   const std::string rings = report.straight_rings ? "the tube of straight rings (the Hermite tube crossed the mesh)"
                                                    : "the Hermite tube";
   const std::string start = report.relaxed ? "from the membrane" + std::string(report.straight_rings ? " of " + rings : "")
                             : args.no_relax ? "from " + rings
-                                            : "from " + rings + " (the membrane pinched off)";
+                            : report.rebuilt_without_membrane ? "from " + rings + " (the membrane's tube folded back)"
+                                                              : "from " + rings + " (the membrane pinched off)";
   std::printf("blended loops %d and %d of %d%s: tube of %d vertices, %d faces, %s; %s\n  %s\n  %s\n%.2f s; wrote %s\n",
               report.a.index, report.b.index, report.loops_found, report.automatic ? " (closest pair)" : "",
               report.tube_vertices, report.tube_faces, start.c_str(), summary(report.fair).c_str(),

@@ -119,6 +119,7 @@ py::dict to_dict(const BlendReport& r) {
                   "tube_rings"_a = r.tube_rings, "hermite_quality"_a = r.hermite_quality,
                   "membrane_quality"_a = r.membrane_quality, "relaxed"_a = r.relaxed,
                   "straight_rings"_a = r.straight_rings,
+                  "rebuilt_without_membrane"_a = r.rebuilt_without_membrane,
                   "fair"_a = to_dict(r.fair), "seconds"_a = r.seconds);
 }
 

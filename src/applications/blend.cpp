@@ -620,6 +620,41 @@ void blend_from_pinched_membrane(Mesh& mesh, const Mesh& input, const Topology& 
                      "); started from the membrane" + (report.fair.note.empty() ? "" : "; " + report.fair.note);
 }
 
+// The larger of the two loops' normal angles across the tube's border (radians).
+double largest_loop_angle(const BlendReport& report) {
+  return std::max(report.a.border.max_normal_angle, report.b.border.max_normal_angle);
+}
+
+// A delivered tube from the membrane that folds back at a loop (BlendOptions::rebuild_folded_back):
+// the blend again from the Hermite tube, which replaces `mesh` and `report` where it turns the
+// normal across the loops less.
+void rebuild_without_membrane(Mesh& mesh, const Mesh& input, const Topology& topo, const std::vector<int>& loop_a,
+                              const std::vector<int>& loop_b, const BlendOptions& options,
+                              const FlowObserver& observer, BlendReport& report) {
+  BlendOptions hermite = options;
+  hermite.patch.relax = false;
+  Mesh again = input;
+  BlendReport other = report;
+  other.straight_rings = false;
+  try {
+    blend_any_tube(again, input, topo, loop_a, loop_b, hermite, observer, other);
+  } catch (const TubeCrossing&) {
+    return;
+  }
+  const double folded = largest_loop_angle(report), angle = largest_loop_angle(other);
+  if (!(angle < folded)) return;
+  constexpr double kDegrees = 180 / std::numbers::pi;
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "the tube from the G0 membrane folds back (it turns the normal across the loops by %.1f deg); "
+                "built again from the Hermite tube, which turns it by %.1f deg",
+                folded * kDegrees, angle * kDegrees);
+  other.rebuilt_without_membrane = true;
+  other.fair.note = text + (other.fair.note.empty() ? "" : "; " + other.fair.note);
+  mesh = std::move(again);
+  report = std::move(other);
+}
+
 }  // namespace
 
 bool folds_back(const BlendLoop& loop) {
@@ -658,12 +693,17 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
     report.b.reference = reference_at_loop(mesh, topo, loop_b, options.reference_ring, options.measure_rings);
   }
   const Mesh input = mesh;  // for another tube
+  bool pinched_start = false;
   try {
     blend_any_tube(mesh, input, topo, loop_a, loop_b, options, observer, report);
   } catch (const TubeCrossing& e) {
     if (!membrane_pinches(input, topo, loop_a, loop_b, options)) throw;
     blend_from_pinched_membrane(mesh, input, topo, loop_a, loop_b, options, observer, report, e.what());
+    pinched_start = true;  // every tube without the membrane crossed the mesh: none to build again
   }
+  if (options.rebuild_folded_back && report.relaxed && !pinched_start &&
+      (folds_back(report.a) || folds_back(report.b)))
+    rebuild_without_membrane(mesh, input, topo, loop_a, loop_b, options, observer, report);
   report.seconds = detail::seconds_since(start);
   return report;
 }

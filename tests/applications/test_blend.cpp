@@ -424,6 +424,39 @@ TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
   EXPECT_EQ(r.fair.continuity.max_normal_angle, l.fair.continuity.max_normal_angle);
 }
 
+// A band across blub's tail fin (bench_real_holes --all-slabs' blub 1097 z): the G0 membrane lies
+// against one side of the fin, and the tube from it folds back at a loop (103° across it where the
+// untouched input reads 6°), 0.21 h from blub. Built again from the Hermite tube (what
+// rebuild_folded_back does) it turns the normal by 65° and lies 0.053 h from blub.
+TEST(BlendReal, ATubeFromTheMembraneThatFoldsBackIsBuiltAgainFromTheHermiteTube) {
+  const Mesh blub = read_mesh(test::data_path("blub.obj"));
+  const Band b = band_across("blub.obj", blub.V.row(1097).transpose(), Eigen::Vector3d::UnitZ());
+  ASSERT_EQ(loop_count(b.cut), 2);
+  BlendOptions once;
+  once.rebuild_folded_back = false;
+  Mesh folded = b.cut;
+  const BlendReport f = blend_loops(folded, once);
+  ASSERT_TRUE(f.relaxed);
+  ASSERT_TRUE(folds_back(f.a) || folds_back(f.b));
+
+  Mesh m = b.cut;
+  const BlendReport r = blend_loops(m, BlendOptions{});
+  print("blub fin band", r);
+  EXPECT_TRUE(r.rebuilt_without_membrane);
+  EXPECT_FALSE(r.relaxed);
+  EXPECT_FALSE(folds_back(r.a) || folds_back(r.b));
+  const auto largest = [](const BlendReport& x) {
+    return std::max(x.a.border.max_normal_angle, x.b.border.max_normal_angle);
+  };
+  EXPECT_LT(largest(r), largest(f));
+  EXPECT_EQ(r.fair.note.rfind("the tube from the G0 membrane folds back", 0), 0u) << r.fair.note;
+  expect_band_closed(m, b);
+  const double rebuilt = tube_distance(m, b.cut.num_vertices(), b.uncut, b.h);
+  const double membrane = tube_distance(folded, b.cut.num_vertices(), b.uncut, b.h);
+  std::printf("[blend] blub fin band: %.3f h from blub rebuilt, %.3f h from the membrane\n", rebuilt, membrane);
+  EXPECT_LT(rebuilt, 0.5 * membrane);
+}
+
 // A band across spot's body (bench_real_holes' spot 2099 y): the time-stepped flow does not settle
 // (it diverged before the flow limited the term of unresolved curvature; now its max|V| falls over
 // its 200 steps). The energy descent from its last state turns the normal across the loops by 12.3°

@@ -70,6 +70,13 @@ struct BlendOptions : FairRegionOptions {
   /// hole's patch: a crossing of a few tube triangles sheared over at a notch of a loop (the raw
   /// hammer scan's band, docs/blend.md). 0: no second try.
   double crossing_retry_relaxation = 0.5;
+  /// Where the tube started from the G0 membrane folds back at a loop (folds_back), the blend runs
+  /// again from the Hermite tube (patch.relax off): between loops cut across a thin part the
+  /// membrane can lie flat against one side and crease the tube at a loop, and every fairing from it
+  /// keeps the crease. The tube that turns the normal across the loops less (the larger of the two
+  /// loops' angles) is delivered, and fair.note gives both angles (docs/blend.md, "A tube that folds
+  /// back").
+  bool rebuild_folded_back = true;
 };
 
 /// keep_settled_flow for a blend: the base's checks off (fair_region.h) and the flow's settled tube
@@ -106,6 +113,9 @@ struct BlendReport {
   /// refined Hermite tube, and of the membrane (0 when not relaxed).
   double hermite_quality = 0, membrane_quality = 0;
   bool relaxed = false;       ///< the flow started from the membrane (false: not asked, or it pinched)
+  /// The tube from the membrane folded back and the one from the Hermite tube, which turns the
+  /// normal across the loops less, was delivered instead (rebuild_folded_back).
+  bool rebuilt_without_membrane = false;
   /// The tube from Hermite rings crossed the mesh after fairing, even linear, and was built again
   /// with straight rings (TubeOptions::hermite = false); the qualities, sizes and `relaxed` are then
   /// that second tube's, and fair.note says why.
