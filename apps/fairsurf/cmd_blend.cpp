@@ -120,7 +120,7 @@ void run_blend(const BlendArgs& args) {
                                                    : "the Hermite tube";
   const std::string start = report.relaxed ? "from the membrane" + std::string(report.straight_rings ? " of " + rings : "")
                             : args.no_relax ? "from " + rings
-                            : report.rebuilt_without_membrane ? "from " + rings + " (the membrane's tube folded back)"
+                            : report.rebuilt_without_membrane ? "from " + rings + " (built again without the membrane)"
                                                               : "from " + rings + " (the membrane pinched off)";
   std::printf("blended loops %d and %d of %d%s: tube of %d vertices, %d faces, %s; %s\n  %s\n  %s\n%.2f s; wrote %s\n",
               report.a.index, report.b.index, report.loops_found, report.automatic ? " (closest pair)" : "",

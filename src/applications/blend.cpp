@@ -625,12 +625,42 @@ double largest_loop_angle(const BlendReport& report) {
   return std::max(report.a.border.max_normal_angle, report.b.border.max_normal_angle);
 }
 
-// A delivered tube from the membrane that folds back at a loop (BlendOptions::rebuild_folded_back):
-// the blend again from the Hermite tube, which replaces `mesh` and `report` where it turns the
-// normal across the loops less.
-void rebuild_without_membrane(Mesh& mesh, const Mesh& input, const Topology& topo, const std::vector<int>& loop_a,
-                              const std::vector<int>& loop_b, const BlendOptions& options,
-                              const FlowObserver& observer, BlendReport& report) {
+// Whether the tube in `report` folds back at either loop.
+bool tube_folds_back(const BlendReport& report) { return folds_back(report.a) || folds_back(report.b); }
+
+// Why the blend from the Hermite tube (`other`) replaces the delivered one from the membrane
+// (`report`), or empty where it does not: where the membrane's tube folds back, the tube that turns
+// the normal across the loops less; where the membrane's fell to a lower linear tube because the
+// tubes above it crossed the mesh (crossing_fallback), one of a higher continuity that does not fold
+// back.
+std::string rebuilt_tube_gain(const BlendReport& report, const BlendReport& other) {
+  constexpr double kDegrees = 180 / std::numbers::pi;
+  const double folded = largest_loop_angle(report), angle = largest_loop_angle(other);
+  char text[320];
+  if (tube_folds_back(report)) {
+    if (!(angle < folded)) return "";
+    std::snprintf(text, sizeof text,
+                  "the tube from the G0 membrane folds back (it turns the normal across the loops by %.1f deg); "
+                  "built again from the Hermite tube, which turns it by %.1f deg",
+                  folded * kDegrees, angle * kDegrees);
+    return text;
+  }
+  if (!(other.fair.supported > report.fair.supported) || tube_folds_back(other)) return "";
+  std::snprintf(text, sizeof text,
+                "from the G0 membrane the tube fell to %s, the first lower linear tube that does not cross the "
+                "mesh; built again from the Hermite tube, which gives %s",
+                delivered_label(report.fair.supported, report.fair.linear).c_str(),
+                delivered_label(other.fair.supported, other.fair.linear).c_str());
+  return text;
+}
+
+// A delivered tube from the membrane that folds back at a loop, or that fell below the requested
+// continuity because every tube above crossed the mesh (BlendOptions::rebuild_without_membrane):
+// the blend again from the Hermite tube, which replaces `mesh` and `report` where it is the gain
+// rebuilt_tube_gain names.
+void blend_again_without_membrane(Mesh& mesh, const Mesh& input, const Topology& topo,
+                                  const std::vector<int>& loop_a, const std::vector<int>& loop_b,
+                                  const BlendOptions& options, const FlowObserver& observer, BlendReport& report) {
   BlendOptions hermite = options;
   hermite.patch.relax = false;
   Mesh again = input;
@@ -641,16 +671,10 @@ void rebuild_without_membrane(Mesh& mesh, const Mesh& input, const Topology& top
   } catch (const TubeCrossing&) {
     return;
   }
-  const double folded = largest_loop_angle(report), angle = largest_loop_angle(other);
-  if (!(angle < folded)) return;
-  constexpr double kDegrees = 180 / std::numbers::pi;
-  char text[200];
-  std::snprintf(text, sizeof text,
-                "the tube from the G0 membrane folds back (it turns the normal across the loops by %.1f deg); "
-                "built again from the Hermite tube, which turns it by %.1f deg",
-                folded * kDegrees, angle * kDegrees);
+  const std::string gain = rebuilt_tube_gain(report, other);
+  if (gain.empty()) return;
   other.rebuilt_without_membrane = true;
-  other.fair.note = text + (other.fair.note.empty() ? "" : "; " + other.fair.note);
+  other.fair.note = gain + (other.fair.note.empty() ? "" : "; " + other.fair.note);
   mesh = std::move(again);
   report = std::move(other);
 }
@@ -701,9 +725,9 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
     blend_from_pinched_membrane(mesh, input, topo, loop_a, loop_b, options, observer, report, e.what());
     pinched_start = true;  // every tube without the membrane crossed the mesh: none to build again
   }
-  if (options.rebuild_folded_back && report.relaxed && !pinched_start &&
-      (folds_back(report.a) || folds_back(report.b)))
-    rebuild_without_membrane(mesh, input, topo, loop_a, loop_b, options, observer, report);
+  if (options.rebuild_without_membrane && report.relaxed && !pinched_start &&
+      (tube_folds_back(report) || report.fair.crossing_fallback))
+    blend_again_without_membrane(mesh, input, topo, loop_a, loop_b, options, observer, report);
   report.seconds = detail::seconds_since(start);
   return report;
 }

@@ -70,13 +70,15 @@ struct BlendOptions : FairRegionOptions {
   /// hole's patch: a crossing of a few tube triangles sheared over at a notch of a loop (the raw
   /// hammer scan's band, docs/blend.md). 0: no second try.
   double crossing_retry_relaxation = 0.5;
-  /// Where the tube started from the G0 membrane folds back at a loop (folds_back), the blend runs
-  /// again from the Hermite tube (patch.relax off): between loops cut across a thin part the
-  /// membrane can lie flat against one side and crease the tube at a loop, and every fairing from it
-  /// keeps the crease. The tube that turns the normal across the loops less (the larger of the two
-  /// loops' angles) is delivered, and fair.note gives both angles (docs/blend.md, "A tube that folds
-  /// back").
-  bool rebuild_folded_back = true;
+  /// Where the tube started from the G0 membrane folds back at a loop (folds_back), or fell below
+  /// the requested continuity because every tube above it crossed the mesh (crossing_fallback), the
+  /// blend runs again from the Hermite tube (patch.relax off): between loops cut across a thin part
+  /// the membrane can lie flat against one side and crease the tube at a loop, and every fairing
+  /// from it keeps the crease. That tube is delivered where it turns the normal across the loops
+  /// less (the larger of the two loops' angles), or, in place of a lower continuity, where it
+  /// reaches a higher one and does not fold back; fair.note says which (docs/blend.md, "Built again
+  /// from the Hermite tube").
+  bool rebuild_without_membrane = true;
 };
 
 /// keep_settled_flow for a blend: the base's checks off (fair_region.h) and the flow's settled tube
@@ -113,8 +115,8 @@ struct BlendReport {
   /// refined Hermite tube, and of the membrane (0 when not relaxed).
   double hermite_quality = 0, membrane_quality = 0;
   bool relaxed = false;       ///< the flow started from the membrane (false: not asked, or it pinched)
-  /// The tube from the membrane folded back and the one from the Hermite tube, which turns the
-  /// normal across the loops less, was delivered instead (rebuild_folded_back).
+  /// The tube from the membrane folded back or fell below the requested continuity, and the one
+  /// from the Hermite tube was delivered instead (BlendOptions::rebuild_without_membrane).
   bool rebuilt_without_membrane = false;
   /// The tube from Hermite rings crossed the mesh after fairing, even linear, and was built again
   /// with straight rings (TubeOptions::hermite = false); the qualities, sizes and `relaxed` are then
