@@ -53,7 +53,7 @@ std::string border_text(const char* name, const BlendLoop& loop) {
   return text;
 }
 
-// A tube that folds back at a loop (blend.h's folds_back; spot's ear: 128° against 8.8°) is
+// A tube that folds back at a loop (blend.h's folds_back; spot 1519 z: 147° against 12.5°) is
 // written; the user is told.
 void warn_if_folded_back(const char* name, const BlendLoop& loop) {
   if (!folds_back(loop)) return;
@@ -137,8 +137,10 @@ void setup_blend(CLI::App& app) {
               "more than the linear ∆³ tube or creases against it, the linear tube is written instead, labelled C2 "
               "(linear) with the reason; where that crosses too, the first lower linear tube (C1, C0) that does not; "
               "where every one crosses and the G0 membrane was dropped as pinched, all of this again from it. "
-              "A tube that folds back at a loop (turns the normal there by more than 90° and by more than twice the "
-              "input's reading) is written with a warning (docs/blend.md).");
+              "A tube from the membrane that folds back at a loop (turns the normal there by more than 90° and by "
+              "more than twice the input's reading) or falls to a lower linear tube is built again from the Hermite "
+              "tube, which is written where it turns the normal less or reaches a higher continuity; a tube that "
+              "still folds back is written with a warning (docs/blend.md).");
   cmd->add_option("inputs", args->inputs, "One mesh, or two meshes to join (the second is appended)")
       ->required()
       ->expected(1, 2);
