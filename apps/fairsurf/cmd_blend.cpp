@@ -64,6 +64,17 @@ void warn_if_folded_back(const char* name, const BlendLoop& loop) {
                name, loop.index, loop.border.max_normal_angle * kDegrees, loop.reference.max_normal_angle * kDegrees);
 }
 
+// "from the membrane", "from the Hermite tube (the membrane pinched off)", ...: what the tube
+// written started from, and why not from the membrane where it could have.
+std::string tube_start(const BlendReport& report, bool no_relax) {
+  const std::string rings = report.straight_rings ? "the tube of straight rings (the Hermite tube crossed the mesh)"
+                                                   : "the Hermite tube";
+  if (report.relaxed) return "from the membrane" + (report.straight_rings ? " of " + rings : std::string());
+  if (no_relax) return "from " + rings;
+  if (report.rebuilt_without_membrane) return "from " + rings + " (built again without the membrane)";
+  return "from " + rings + " (the membrane pinched off)";
+}
+
 nlohmann::json loop_json(const BlendLoop& loop) {
   return {{"index", loop.index},
           {"length", loop.length},
@@ -116,12 +127,7 @@ void run_blend(const BlendArgs& args) {
               {"rebuilt_without_membrane", report.rebuilt_without_membrane},
               {"fair", to_json(report.fair)},
               {"seconds", report.seconds}});
-  const std::string rings = report.straight_rings ? "the tube of straight rings (the Hermite tube crossed the mesh)"
-                                                   : "the Hermite tube";
-  const std::string start = report.relaxed ? "from the membrane" + std::string(report.straight_rings ? " of " + rings : "")
-                            : args.no_relax ? "from " + rings
-                            : report.rebuilt_without_membrane ? "from " + rings + " (built again without the membrane)"
-                                                              : "from " + rings + " (the membrane pinched off)";
+  const std::string start = tube_start(report, args.no_relax);
   std::printf("blended loops %d and %d of %d%s: tube of %d vertices, %d faces, %s; %s\n  %s\n  %s\n%.2f s; wrote %s\n",
               report.a.index, report.b.index, report.loops_found, report.automatic ? " (closest pair)" : "",
               report.tube_vertices, report.tube_faces, start.c_str(), summary(report.fair).c_str(),

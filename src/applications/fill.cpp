@@ -231,22 +231,17 @@ PatchOwnership patch_ownership(const InitialPatch& patch, int input_vertices,
     const auto twin = face_of.find((edge << 32) | (edge >> 32));
     if (twin != face_of.end()) parent[find_root(parent, f)] = find_root(parent, twin->second);
   }
-  std::vector<int> hole_of_root(count, -1);
-  for (int h : holes)
+  std::vector<int> hole_of_root(count, -1), loop_root;  // loop_root: per hole, its patch's piece
+  for (int h : holes) {
+    loop_root.push_back(-1);
     for (std::size_t t = 0; t < loops[h].size(); ++t) {
       const auto across = face_of.find(key(loops[h][(t + 1) % loops[h].size()], loops[h][t]));
-      if (across != face_of.end()) hole_of_root[find_root(parent, across->second)] = h;
+      if (across != face_of.end()) hole_of_root[loop_root.back() = find_root(parent, across->second)] = h;
     }
-  PatchOwnership own;
-  for (int h : holes) {
-    const auto& loop = loops[h];
-    own.patch_hole.push_back(h);
-    for (std::size_t t = 0; t < loop.size(); ++t)
-      if (const auto across = face_of.find(key(loop[(t + 1) % loop.size()], loop[t])); across != face_of.end()) {
-        own.patch_hole.back() = hole_of_root[find_root(parent, across->second)];
-        break;
-      }
   }
+  PatchOwnership own;
+  for (std::size_t k = 0; k < holes.size(); ++k)
+    own.patch_hole.push_back(loop_root[k] < 0 ? holes[k] : hole_of_root[loop_root[k]]);
   own.vertex_hole.assign(patch.mesh.num_vertices() - input_vertices, -1);
   for (int f = 0; f < count; ++f) {
     own.face_hole.push_back(hole_of_root[find_root(parent, f)]);
