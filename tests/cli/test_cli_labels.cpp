@@ -201,6 +201,22 @@ TEST_F(CliLabels, BlendWarnsWhereTheTubeFoldsBack) {
   EXPECT_EQ(facing.out.find("folds back"), std::string::npos) << facing.out;
 }
 
+// A band across blub's tail fin (bench_real_holes --all-slabs' blub 1097 z): the tube from the
+// membrane folds back (103°), and blend builds it again from the Hermite tube (65°). The line says
+// where the tube written started and why, the log flags it, and no warning is left.
+TEST_F(CliLabels, BlendSaysWhereItBuiltTheTubeAgainWithoutTheMembrane) {
+  const Mesh blub = read_mesh(test::data_path("blub.obj"));
+  const double h = test::mean_edge_length(blub);
+  write_mesh(file("fin.obj"), test::cut_slab(blub, blub.V.row(1097).transpose(), Eigen::Vector3d::UnitZ(), 2 * h));
+  const auto run = test::run_cli("blend " + path("fin.obj") + " -o " + path("b.obj") + " --log " + path("b.json"));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("from the Hermite tube (built again without the membrane)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("the tube from the G0 membrane folds back"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("warning: the tube folds back"), std::string::npos) << run.out;
+  std::ifstream log_file(file("b.json"));
+  EXPECT_EQ(nlohmann::json::parse(log_file)["rebuilt_without_membrane"], true);
+}
+
 // data/triple_vierbein.obj, repaired: its loops are the edges of fins, not holes, and the two that
 // are filled fold back (179° and 153° across their borders): fill warns, and still writes them.
 // blub's one hole (12° there) gets no warning.
