@@ -516,6 +516,10 @@ std::string fill_group(const Mesh& mesh, const std::vector<std::vector<int>>& lo
   InitialPatch patch = patches.get(start);  // a copy: the fairing moves its vertices
   const std::string non_manifold = detail::patch_non_manifold(patch.mesh.F, patch.topology, patch.first_patch_face);
   if (!non_manifold.empty()) return non_manifold;
+  // Checked before the fairing, which would refuse the mesh: such a triangle has its corners on the
+  // border (a loop through both copies of a split vertex), where no fairing moves them.
+  const std::string zero_area = detail::patch_zero_area_face(patch.mesh.V, patch.mesh.F, patch.first_patch_face);
+  if (!zero_area.empty()) return zero_area;
 
   Submesh sub;
   Topology local;
@@ -689,9 +693,10 @@ ChainOutcome run_fallback_chain(const Mesh& mesh, const std::vector<std::vector<
       c.reason = e.what();
     }
     if (c.start == PatchStart::unfaired && !c.reason.empty())
-      c.reason = c.previous_start_failure + (crossed == PatchCrossing::none
-                                                 ? "; the refined triangulation, unfaired, failed too: " + c.reason
-                                                 : "; the refined triangulation, unfaired, crosses the mesh");
+      c.reason = c.previous_start_failure + (crossed != PatchCrossing::none ? "; the refined triangulation, unfaired, crosses the mesh"
+                                             : c.reason == c.previous_start_failure
+                                                 ? "; the refined triangulation, unfaired, failed too, for the same reason"
+                                                 : "; the refined triangulation, unfaired, failed too: " + c.reason);
     if (c.reason.empty() || !options.fallback_on_failure || c.start == PatchStart::unfaired) break;
     if (c.first_failure.empty()) c.first_failure = c.reason;
     if (crossed == PatchCrossing::flow && c.fairing.flow.tangential_relaxation < options.crossing_retry_relaxation) {
@@ -807,7 +812,8 @@ void fill_failed_group_one_by_one(Mesh& mesh, const Topology& topo, const std::v
   const std::string joint_failure = reports[group.front()].reason;
   for (int h : group) {
     HoleReport& r = reports[h];
-    const std::string joint = "the joint fill with " + hole_list(r.filled_with) + " failed (" + joint_failure + ")";
+    const std::string joint_fill = "the joint fill with " + hole_list(r.filled_with);
+    const std::string joint = joint_fill + " failed (" + joint_failure + ")";
     r.filled_with.clear();
     std::vector<std::vector<int>> patch_loops{loops[h]};
     try {
@@ -820,7 +826,7 @@ void fill_failed_group_one_by_one(Mesh& mesh, const Topology& topo, const std::v
     if (r.status == HoleStatus::filled)
       r.note = joint + "; filled alone" + (r.note.empty() ? "" : "; " + r.note);
     else
-      r.reason += "; " + joint;
+      r.reason += r.reason == joint_failure ? "; " + joint_fill + " failed too, for the same reason" : "; " + joint;
   }
 }
 

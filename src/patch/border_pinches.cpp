@@ -140,4 +140,22 @@ std::string patch_non_manifold(const Faces& F, const Topology& topo, int first_f
   return "";
 }
 
+std::string patch_zero_area_face(const Vertices& V, const Faces& F, int first_face) {
+  for (int f = first_face; f < F.rows(); ++f) {
+    const Vec3 a = V.row(F(f, 0)).transpose(), b = V.row(F(f, 1)).transpose(), c = V.row(F(f, 2)).transpose();
+    if (!(b - a).cross(c - a).isZero(0.0)) continue;
+    const std::string face = "the patch has a zero-area triangle, new face " + std::to_string(f);
+    for (int k = 0; k < 3; ++k) {
+      const int u = F(f, k), w = F(f, (k + 1) % 3);
+      if (V.row(u) == V.row(w))
+        return face + ", whose vertices " + std::to_string(std::min(u, w)) + " and " +
+               std::to_string(std::max(u, w)) +
+               " lie at one position: the hole's border passes twice through a vertex split in two (as "
+               "repair splits a non-manifold vertex or edge), and no patch there has room for a triangle";
+    }
+    return face;
+  }
+  return "";
+}
+
 }  // namespace fairsurf::detail

@@ -9,6 +9,10 @@
 // followed by the outgoing edge of another wedge; following it by its own wedge's outgoing edge would
 // close that wedge into a cone touching the others at p. boundary_loops follows whichever border
 // edge it meets first, so at a pinch its loops may do either.
+//
+// A loop may also pass twice through one position without a pinch: through the copies of a vertex
+// that `repair` split in two. Its triangulation then holds a triangle with two corners at that
+// position, which patch_zero_area_face finds.
 #pragma once
 
 #include <fairsurf/mesh/mesh.h>
@@ -32,5 +36,10 @@ std::vector<std::vector<int>> relink_pinched_loops(const Vertices& V, const Face
 /// Why the faces [first_face, #F) make the mesh (F, its topology `topo`) non-manifold at one of
 /// their edges (more than two faces) or vertices (more than one fan of faces), or "" if they do not.
 std::string patch_non_manifold(const Faces& F, const Topology& topo, int first_face);
+
+/// Why one of the faces [first_face, #F) of (V, F) has zero area (validate's degenerate face: its
+/// edge vectors' cross product is exactly zero), naming the two distinct corners at one position if
+/// it has them, or "" if none has.
+std::string patch_zero_area_face(const Vertices& V, const Faces& F, int first_face);
 
 }  // namespace fairsurf::detail

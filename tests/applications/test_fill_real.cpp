@@ -729,6 +729,33 @@ TEST(RealHoleParts, AHoleThroughAVertexThatRepairSplitSaysSo) {
   EXPECT_TRUE(checked.orientable());
 }
 
+// On data/lagrange_prout.obj (a flat sheet), repair splits the vertices of a fin in two, and two holes
+// pass through both copies of a split vertex. Their triangulations hold a triangle with two corners at
+// one position, which the sheet's crossing test cannot see; such a patch is refused with the reason
+// (every start shares the triangulation), and the mesh written keeps no zero-area triangle.
+TEST(RealHoleParts, AHoleThroughBothCopiesOfASplitVertexFailsRatherThanGetAZeroAreaTriangle) {
+  Mesh mesh = read_mesh(test::data_path("lagrange_prout.obj"));
+  repair(mesh);
+  ASSERT_EQ(validate(mesh).degenerate_faces.count, 0);
+  FillOptions options;
+  options.skip_largest = true;
+  const FillReport report = fill_holes(mesh, options);
+  int refused = 0;
+  for (const HoleReport& hole : report.holes) {
+    if (hole.status != HoleStatus::failed) continue;
+    SCOPED_TRACE(hole.reason);
+    EXPECT_NE(hole.reason.find("the patch has a zero-area triangle"), std::string::npos);
+    EXPECT_NE(hole.reason.find("lie at one position"), std::string::npos);
+    EXPECT_NE(hole.reason.find("failed too, for the same reason"), std::string::npos);
+    ++refused;
+  }
+  EXPECT_GE(refused, 1);
+  EXPECT_GE(report.filled, 1);
+  const ValidationReport checked = validate(mesh);
+  EXPECT_EQ(checked.degenerate_faces.count, 0);
+  EXPECT_TRUE(checked.manifold());
+}
+
 // data/cgal_blobby_3cc.off is three parts whose openings face each other across narrow gaps: capping
 // one opening runs into the next part. The fill says so and names the command that joins them.
 TEST(RealHoleParts, ACrossingWithAnotherPartPointsToBlend) {
