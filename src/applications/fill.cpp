@@ -776,20 +776,78 @@ void refill_if_folded_back(const Mesh& mesh, const std::vector<std::vector<int>>
   for (std::size_t k = 0; k < group.size(); ++k) reports[group[k]] = std::move(kept[k]);
 }
 
-// Fills `group` through the fallback chain (run_fallback_chain) from the membrane, again from the
-// refined triangulation where that fill folds back (refill_if_folded_back), and commits the fill.
-void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
-                             const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
-                             const FillOptions& options, const FillObserver& observer,
-                             std::vector<HoleReport>& reports, std::optional<Topology>& filled) {
-  GroupPatches patches(mesh, filled ? *filled : topo, patch_loops, options.patch);
-  std::vector<HoleReport> unfilled;
-  for (int h : group) unfilled.push_back(reports[h]);
+// The fallback chain (run_fallback_chain) from the membrane of `patches`, and again from their refined
+// triangulation where that fill folds back (refill_if_folded_back).
+ChainOutcome fill_from_membrane(const Mesh& mesh, const std::vector<std::vector<int>>& loops,
+                                const std::vector<int>& group, GroupPatches& patches, const FillOptions& options,
+                                const FillObserver& observer, const std::vector<HoleReport>& unfilled,
+                                std::vector<HoleReport>& reports) {
   ChainOutcome outcome =
       run_fallback_chain(mesh, loops, group, patches, options, observer, reports, PatchStart::membrane);
   if (outcome.reason.empty() && outcome.start == PatchStart::membrane && options.patch.relax &&
       options.refill_folded_back)
     refill_if_folded_back(mesh, loops, group, patches, options, observer, unfilled, reports, outcome);
+  return outcome;
+}
+
+// Where the fill `outcome` still folds back, the group is triangulated again with the lightest of the
+// triangulation's starts (HoleTriangulationOptions::start_margin 0) and filled from there. The first
+// start's triangulation is kept unless another is lighter by the margin, since a few degrees lighter
+// is no better a patch in general; but a fill that folds back is no patch at all, and the starts'
+// largest angles may differ by a few degrees where their shapes differ wholly (bench_real_holes
+// --random 10 --seed 2, airplane 5947 4h: a loop round the edge of a thin plate, bridged through the
+// plate from the first start, at 110°, and laid along both its sides from the lightest, at 25°). That
+// fill is delivered where it turns the normal across the border by at most half as much
+// (kRetriangulatedAngleRatio): a few degrees less on a folded patch, mostly noise in the border's
+// fits, gave fills farther from the surface as often as closer (docs/fill.md, "Triangulated again").
+constexpr double kRetriangulatedAngleRatio = 0.5;
+void retriangulate_if_folded_back(const Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                                  const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
+                                  const FillOptions& options, const FillObserver& observer,
+                                  const std::vector<HoleReport>& unfilled, std::vector<HoleReport>& reports,
+                                  ChainOutcome& outcome) {
+  const HoleTriangulationOptions& triangulation = options.patch.triangulation;
+  if (!options.refill_folded_back || triangulation.start_vertices <= 1 || triangulation.start_margin <= 0) return;
+  if (std::none_of(group.begin(), group.end(), [&](int h) { return folds_back(reports[h]); })) return;
+  const double folded = largest_border_angle(reports, group);
+  std::vector<HoleReport> kept;
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    kept.push_back(std::move(reports[group[k]]));
+    reports[group[k]] = unfilled[k];
+  }
+  FillOptions lightest = options;
+  lightest.patch.triangulation.start_margin = 0;
+  GroupPatches patches(mesh, topo, patch_loops, lightest.patch);
+  ChainOutcome retried = fill_from_membrane(mesh, loops, group, patches, lightest, observer, unfilled, reports);
+  const double angle = largest_border_angle(reports, group);
+  if (retried.reason.empty() && angle <= kRetriangulatedAngleRatio * folded) {
+    constexpr double kDegrees = 180 / std::numbers::pi;
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "the fill folds back (it turns the normal across the border by %.1f deg); triangulated again from "
+                  "the lightest of %d starts, whose fill turns it by %.1f deg",
+                  folded * kDegrees, triangulation.start_vertices, angle * kDegrees);
+    for (int h : group) reports[h].note = std::string(text) + (reports[h].note.empty() ? "" : ": " + reports[h].note);
+    outcome = std::move(retried);
+    return;
+  }
+  for (std::size_t k = 0; k < group.size(); ++k) reports[group[k]] = std::move(kept[k]);
+}
+
+// Fills `group` from the membrane and the refined triangulation (fill_from_membrane), triangulated
+// again where that fill folds back (retriangulate_if_folded_back), and commits the fill.
+void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                             const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
+                             const FillOptions& options, const FillObserver& observer,
+                             std::vector<HoleReport>& reports, std::optional<Topology>& filled) {
+  const Topology& current = filled ? *filled : topo;
+  GroupPatches patches(mesh, current, patch_loops, options.patch);
+  std::vector<HoleReport> unfilled;
+  for (int h : group) unfilled.push_back(reports[h]);
+  ChainOutcome outcome = fill_from_membrane(mesh, loops, group, patches, options, observer, unfilled, reports);
+  if (outcome.reason.empty())
+    retriangulate_if_folded_back(mesh, current, loops, group, patch_loops, options, observer, unfilled, reports,
+                                 outcome);
   if (outcome.reason.empty()) commit(outcome.filled, mesh, filled);
 }
 

@@ -307,6 +307,46 @@ TEST(RealHoleConcaveCorner, AnotherStartOfTheTriangulationFollowsTheCorner) {
   EXPECT_GT(webbed_distance, 3 * ball.r.distance);
 }
 
+// A 4 h ball at the edge of one of data/airplane.obj's thin plates (bench_real_holes --random 10 --seed 2,
+// centre 5947): the 34-edge loop runs along both sides of the plate and round its edge. The first
+// start's triangulation bridges it through the plate and every fill from it folds back (110–117°,
+// 0.5–0.6 h from the plate; CGAL 5.5: 0.06 h). The lightest of the 8 starts, 2.6° lighter, lays the patch along
+// both sides; the fill is triangulated again from there and lands within a tenth of an edge, as the
+// linear method's does.
+TEST(RealHoleThinPlate, AFillThatFoldsBackIsTriangulatedAgainFromTheLightestStart) {
+  const Mesh truth = read_mesh(test::data_path("airplane.obj"));
+  const double h = test::mean_edge_length(truth);
+  const Mesh cut = test::cut_ball(truth, truth.V.row(5947).transpose(), 4 * h);
+  const FilledTwice r = fill_twice(cut, truth);
+  ASSERT_EQ(r.report.holes.size(), 1u);
+  const HoleReport& hole = r.hole();
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_NE(hole.note.find("the fill folds back (it turns the normal across the border by "), std::string::npos)
+      << hole.note;
+  EXPECT_NE(hole.note.find("triangulated again from the lightest of 8 starts"), std::string::npos) << hole.note;
+  EXPECT_FALSE(folds_back(hole));
+  EXPECT_LT(hole.continuity.max_normal_angle, 45 * kDegree);
+
+  Mesh folded;
+  const HoleReport first = fill_from_membrane_only(cut, folded);
+  EXPECT_TRUE(folds_back(first));
+  const double folded_distance = mean_new_vertex_distance(folded, cut.num_vertices(), truth) / h;
+  std::printf("[thin plate] airplane 4h: %.1f° and %.3f h triangulated again, %.1f° and %.3f h from the first "
+              "start\n",
+              hole.continuity.max_normal_angle / kDegree, r.distance, first.continuity.max_normal_angle / kDegree,
+              folded_distance);
+  EXPECT_LT(r.distance, 0.1);
+  EXPECT_GT(folded_distance, 3 * r.distance);
+
+  Mesh linear = cut;
+  FillOptions options;
+  options.method = FairMethod::harmonic;
+  const HoleReport baseline = fill_holes(linear, options).holes.front();
+  EXPECT_NE(baseline.note.find("triangulated again from the lightest of 8 starts"), std::string::npos)
+      << baseline.note;
+  EXPECT_LT(mean_new_vertex_distance(linear, cut.num_vertices(), truth) / h, 0.1);
+}
+
 // Another 4 h ball cut from the raw scan: within 3 rings of its 37-edge loop, 3 corners are slivers
 // (|cot| above kMaxCotangent, up to 92: a 0.6° corner), and ∆³ = L(M⁻¹L)² carries their weights
 // three times over. Unbounded, the ∆³ floor rose in a ridge 0.90 h off the scan and the delivered

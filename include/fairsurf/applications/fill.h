@@ -32,7 +32,8 @@
 // (face_intersection.h) however it is faired, even not at all (FillOptions::fallback_on_failure).
 // The other holes are still filled. A fill from the membrane that folds back against the surface
 // (folds_back), or whose flow did, is made again from the refined triangulation, which is delivered
-// where it does not fold back or folds less (FillOptions::refill_folded_back).
+// where it does not fold back or folds less, and one that still folds back from another
+// triangulation of its loop (FillOptions::refill_folded_back).
 #pragma once
 
 #include <fairsurf/applications/fair_region.h>
@@ -94,7 +95,11 @@ struct FillOptions : FairRegionOptions {
   /// against its border, and every fairing from there keeps the crease. That fill is delivered
   /// where it turns the normal across the border less than the fill that folds back, or, in place
   /// of the floor, where it is the flow's and does not fold back; the note gives the angles
-  /// (docs/fill.md, "A fill that folds back"). Needs patch.relax.
+  /// (docs/fill.md, "A fill that folds back"). Needs patch.relax. Where the fill still folds
+  /// back, the group is triangulated again from the lightest of the triangulation's starts
+  /// (patch.triangulation.start_margin 0) and filled from there (both chains); that fill is
+  /// delivered where it turns the normal by at most half as much (docs/fill.md, "Triangulated
+  /// again").
   bool refill_folded_back = true;
 };
 
