@@ -728,6 +728,30 @@ double largest_border_angle(const std::vector<HoleReport>& reports, const std::v
   return angle;
 }
 
+// Fills `group` again with `again` (which returns the chain's outcome, its reports in `reports`),
+// from the group's reports before any fill (`unfilled`), and keeps that fill in place of `outcome`
+// where `gain` (given the new outcome) says why it is better: that reason then leads each report's
+// note. Where the fill failed or `gain` returns "", `outcome` and its reports stay.
+template <class Again, class Gain>
+void fill_again_where_better(const std::vector<int>& group, const std::vector<HoleReport>& unfilled,
+                             std::vector<HoleReport>& reports, ChainOutcome& outcome, Again again, Gain gain) {
+  std::vector<HoleReport> kept;
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    kept.push_back(std::move(reports[group[k]]));
+    reports[group[k]] = unfilled[k];
+  }
+  ChainOutcome retried = again();
+  const std::string why = retried.reason.empty() ? gain(retried) : std::string();
+  if (why.empty()) {
+    for (std::size_t k = 0; k < group.size(); ++k) reports[group[k]] = std::move(kept[k]);
+    return;
+  }
+  for (int h : group) reports[h].note = why + (reports[h].note.empty() ? "" : ": " + reports[h].note);
+  outcome = std::move(retried);
+}
+
+constexpr double kDegrees = 180 / std::numbers::pi;
+
 // A group filled from the membrane whose patch folds back against the surface (folds_back), or
 // whose flow folded back and gave way to its linear floor (flow_folded_back): the membrane can
 // crease a patch against its border (a loop round a corner), and every fairing started there keeps
@@ -746,34 +770,29 @@ void refill_if_folded_back(const Mesh& mesh, const std::vector<std::vector<int>>
   const bool fill_folded = any([](const HoleReport& r) { return folds_back(r); });
   if (!fill_folded && !any([](const HoleReport& r) { return r.flow_folded_back; })) return;
   const double folded = largest_border_angle(reports, group);
-  std::vector<HoleReport> kept;
-  for (std::size_t k = 0; k < group.size(); ++k) {
-    kept.push_back(std::move(reports[group[k]]));
-    reports[group[k]] = unfilled[k];
-  }
-  ChainOutcome refined = run_fallback_chain(mesh, loops, group, patches, options, observer, reports,
-                                            PatchStart::refined);
-  const double angle = largest_border_angle(reports, group);
-  const bool better = fill_folded ? angle < folded
-                                  : !any([](const HoleReport& r) { return r.linear || folds_back(r); });
-  if (refined.reason.empty() && refined.start == PatchStart::refined && better) {
-    constexpr double kDegrees = 180 / std::numbers::pi;
+  const auto from_refined = [&] {
+    return run_fallback_chain(mesh, loops, group, patches, options, observer, reports, PatchStart::refined);
+  };
+  const auto gain = [&](const ChainOutcome& refined) -> std::string {
+    if (refined.start != PatchStart::refined) return "";
+    const double angle = largest_border_angle(reports, group);
     char text[256];
-    if (fill_folded)
+    if (fill_folded) {
+      if (!(angle < folded)) return "";
       std::snprintf(text, sizeof text,
                     "the fill from the membrane folds back (it turns the normal across the border by %.1f deg); "
                     "filled from the refined triangulation instead, which turns it by %.1f deg",
                     folded * kDegrees, angle * kDegrees);
-    else
+    } else {
+      if (any([](const HoleReport& r) { return r.linear || folds_back(r); })) return "";
       std::snprintf(text, sizeof text,
                     "the flow from the membrane folds back where its linear floor does not; filled from the "
                     "refined triangulation instead, whose flow turns the normal across the border by %.1f deg",
                     angle * kDegrees);
-    for (int h : group) reports[h].note = std::string(text) + (reports[h].note.empty() ? "" : ": " + reports[h].note);
-    outcome = std::move(refined);
-    return;
-  }
-  for (std::size_t k = 0; k < group.size(); ++k) reports[group[k]] = std::move(kept[k]);
+    }
+    return text;
+  };
+  fill_again_where_better(group, unfilled, reports, outcome, from_refined, gain);
 }
 
 // The fallback chain (run_fallback_chain) from the membrane of `patches`, and again from their refined
@@ -790,6 +809,19 @@ ChainOutcome fill_from_membrane(const Mesh& mesh, const std::vector<std::vector<
   return outcome;
 }
 
+// Whether the patches `a` and `b` triangulate each loop alike (false where either cannot be built).
+bool same_triangulations(GroupPatches& a, GroupPatches& b) {
+  try {
+    const std::vector<HoleTriangulation>& x = a.get(PatchStart::membrane).holes;
+    const std::vector<HoleTriangulation>& y = b.get(PatchStart::membrane).holes;
+    return std::equal(x.begin(), x.end(), y.begin(), y.end(), [](const HoleTriangulation& s, const HoleTriangulation& t) {
+      return s.faces.rows() == t.faces.rows() && s.faces == t.faces;
+    });
+  } catch (const Error&) {
+    return false;
+  }
+}
+
 // Where the fill `outcome` still folds back, the group is triangulated again with the lightest of the
 // triangulation's starts (HoleTriangulationOptions::start_margin 0) and filled from there. The first
 // start's triangulation is kept unless another is lighter by the margin, since a few degrees lighter
@@ -803,35 +835,32 @@ ChainOutcome fill_from_membrane(const Mesh& mesh, const std::vector<std::vector<
 constexpr double kRetriangulatedAngleRatio = 0.5;
 void retriangulate_if_folded_back(const Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                                   const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
-                                  const FillOptions& options, const FillObserver& observer,
-                                  const std::vector<HoleReport>& unfilled, std::vector<HoleReport>& reports,
-                                  ChainOutcome& outcome) {
+                                  GroupPatches& first_patches, const FillOptions& options,
+                                  const FillObserver& observer, const std::vector<HoleReport>& unfilled,
+                                  std::vector<HoleReport>& reports, ChainOutcome& outcome) {
   const HoleTriangulationOptions& triangulation = options.patch.triangulation;
   if (!options.refill_folded_back || triangulation.start_vertices <= 1 || triangulation.start_margin <= 0) return;
   if (std::none_of(group.begin(), group.end(), [&](int h) { return folds_back(reports[h]); })) return;
-  const double folded = largest_border_angle(reports, group);
-  std::vector<HoleReport> kept;
-  for (std::size_t k = 0; k < group.size(); ++k) {
-    kept.push_back(std::move(reports[group[k]]));
-    reports[group[k]] = unfilled[k];
-  }
   FillOptions lightest = options;
   lightest.patch.triangulation.start_margin = 0;
   GroupPatches patches(mesh, topo, patch_loops, lightest.patch);
-  ChainOutcome retried = fill_from_membrane(mesh, loops, group, patches, lightest, observer, unfilled, reports);
-  const double angle = largest_border_angle(reports, group);
-  if (retried.reason.empty() && angle <= kRetriangulatedAngleRatio * folded) {
-    constexpr double kDegrees = 180 / std::numbers::pi;
+  // The first start is the lightest: the same chains would give the same fill.
+  if (same_triangulations(first_patches, patches)) return;
+  const double folded = largest_border_angle(reports, group);
+  const auto from_lightest = [&] {
+    return fill_from_membrane(mesh, loops, group, patches, lightest, observer, unfilled, reports);
+  };
+  const auto gain = [&](const ChainOutcome&) -> std::string {
+    const double angle = largest_border_angle(reports, group);
+    if (!(angle <= kRetriangulatedAngleRatio * folded)) return "";
     char text[256];
     std::snprintf(text, sizeof text,
                   "the fill folds back (it turns the normal across the border by %.1f deg); triangulated again from "
                   "the lightest of %d starts, whose fill turns it by %.1f deg",
                   folded * kDegrees, triangulation.start_vertices, angle * kDegrees);
-    for (int h : group) reports[h].note = std::string(text) + (reports[h].note.empty() ? "" : ": " + reports[h].note);
-    outcome = std::move(retried);
-    return;
-  }
-  for (std::size_t k = 0; k < group.size(); ++k) reports[group[k]] = std::move(kept[k]);
+    return text;
+  };
+  fill_again_where_better(group, unfilled, reports, outcome, from_lightest, gain);
 }
 
 // Fills `group` from the membrane and the refined triangulation (fill_from_membrane), triangulated
@@ -846,8 +875,8 @@ void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector
   for (int h : group) unfilled.push_back(reports[h]);
   ChainOutcome outcome = fill_from_membrane(mesh, loops, group, patches, options, observer, unfilled, reports);
   if (outcome.reason.empty())
-    retriangulate_if_folded_back(mesh, current, loops, group, patch_loops, options, observer, unfilled, reports,
-                                 outcome);
+    retriangulate_if_folded_back(mesh, current, loops, group, patch_loops, patches, options, observer, unfilled,
+                                 reports, outcome);
   if (outcome.reason.empty()) commit(outcome.filled, mesh, filled);
 }
 
