@@ -404,23 +404,58 @@ std::vector<char> crossed_faces(const Mesh& mesh, const std::vector<int>& faces)
   return crossed;
 }
 
+// Where the flow's result crosses the mesh (`crossings`, with `report`): the fairing once more from
+// the `given` positions, each flow trial that crosses the mesh rejected
+// (FairRegionOptions::retry_rejecting_crossings), whose result replaces the crossing one in `mesh`
+// and `report` where it settles as a flow clear of the mesh. Returns whether it did.
+template <class Fair>
+bool retry_rejecting_crossings(Mesh& mesh, const Vertices& given, const std::vector<int>& faces,
+                               const std::vector<char>& given_crossed, const FairRegionOptions& options, Fair& fair,
+                               const std::vector<FaceIntersection>& crossings, FairRegionReport& report) {
+  if (!options.retry_rejecting_crossings || report.linear || options.method != FairMethod::flow ||
+      options.flow.reject_crossings)
+    return false;
+  FairRegionOptions rejecting = options;
+  rejecting.flow.reject_crossings = true;
+  Mesh retried = mesh;
+  retried.V = given;
+  FairRegionReport retried_report;
+  try {
+    retried_report = fair(retried, rejecting);
+  } catch (const NumericalError&) {
+    return false;
+  }
+  if (retried_report.linear || retried_report.flow.stop_reason != FlowStopReason::steady ||
+      !new_crossings(retried.V, retried.F, faces, given_crossed).empty())
+    return false;
+  retried_report.note = "the " + std::string(to_string(report.flow_kind)) + " flow's result crossed the mesh (" +
+                        crossing_text(crossings) + "); flowed again, each trial that crosses the mesh rejected" +
+                        (retried_report.note.empty() ? "" : "; " + retried_report.note);
+  retried_report.seconds += report.seconds;  // the crossing fairing's too
+  mesh.V = std::move(retried.V);
+  report = std::move(retried_report);
+  return true;
+}
+
 // With the linear floor, a faired region that crosses the mesh where the given one did not
-// (new_crossings) is replaced by the first linear solution from the given positions that does not,
-// at the continuity reached and then at each lower one (as fill's fallback: C2 → C1 → C0), reported
+// (new_crossings) is flowed again (retry_rejecting_crossings), and where that does not settle clear of
+// the mesh, replaced by the first linear solution from the given positions that does not, at the
+// continuity reached and then at each lower one (as fill's fallback: C2 → C1 → C0), reported
 // linear with the reason; otherwise NumericalError, with mesh.V at the crossing result.
-// `fair`: the fairing itself, on `mesh`.
+// `fair(mesh, options)`: the fairing itself.
 template <class Fair>
 FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                                 const FairRegionOptions& options, Fair&& fair) {
   const bool floor = options.linear_floor && options.harmonic_start_iterations > 0;
-  if (!floor) return fair();
+  if (!floor) return fair(mesh, options);
   const std::vector<int> faces = region_faces(mesh, free_vertices);
   const std::vector<char> given_crossed = crossed_faces(mesh, faces);
   const auto start = detail::Clock::now();
   const Vertices given = mesh.V;
-  FairRegionReport report = fair();
+  FairRegionReport report = fair(mesh, options);
   const std::vector<FaceIntersection> crossings = new_crossings(mesh.V, mesh.F, faces, given_crossed);
-  if (crossings.empty()) return report;
+  if (crossings.empty() || retry_rejecting_crossings(mesh, given, faces, given_crossed, options, fair, crossings, report))
+    return report;
   const int order = static_cast<int>(report.supported) + 1;
   const std::string what = report.linear ? "the linear ∆" + std::to_string(order) + " solution"
                                          : std::string("the ") + to_string(report.flow_kind) + " flow's result";
@@ -456,8 +491,9 @@ namespace {
 FairRegionReport fair_validated(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                                 const FairRegionOptions& options, const FlowObserver& observer) {
   return fair_detail::fair_in_parts(mesh, topo, free_vertices, options, [&](std::span<const int> part) {
-    return fair_uncrossed(mesh, topo, part, options,
-                          [&] { return fair_detail::fair_valid_mesh(mesh, topo, part, options, observer); });
+    return fair_uncrossed(mesh, topo, part, options, [&](Mesh& faired, const FairRegionOptions& o) {
+      return fair_detail::fair_valid_mesh(faired, topo, part, o, observer);
+    });
   });
 }
 

@@ -92,6 +92,15 @@ struct FairRegionOptions {
   /// linear solution is kept, with both angles in the note, and FairRegionReport::flow_folded_back
   /// set (fill then tries the refined triangulation: docs/fill.md, "A fill that folds back").
   bool refuse_folding_back = true;
+  /// With the linear floor: where the flow's result crosses the mesh where the given region did
+  /// not, the flow runs once more from the same start, each trial that crosses the mesh rejected
+  /// (FlowOptions::reject_crossings), so that it stops short of the contact instead of passing
+  /// through it; its result is delivered where it settles as a flow clear of the mesh, before a
+  /// linear solution takes the crossing result's place. A region over a thin part (a wing's edge, a
+  /// fin) otherwise lost its G2 to a few triangles pushed through the other sheet (docs/blend.md,
+  /// "Region fairing"). Fill and blend do not fair through this step: they have their own retries
+  /// (crossing_retry_relaxation). false: straight to the linear solutions.
+  bool retry_rejecting_crossings = true;
 
   static FlowOptions default_fair_flow_options();
   /// The options that settle a disk-like region (a hole's patch, a marked region) in a few steps:
