@@ -222,13 +222,14 @@ void setup_fill(CLI::App& app) {
   auto args = std::make_shared<FillArgs>();
   CLI::App* cmd = app.add_subcommand("fill", "Fill the holes of a mesh with G2 (or G1, G0) boundary data");
   cmd->footer("Where a hole's fill fails (its patch crosses the mesh or its fairing throws), the flow is tried once "
-              "more with its trial states relaxed tangentially where it crossed, then the linear ∆³, ∆², ∆ "
-              "solutions, then all that again from the refined triangulation instead of its membrane, then that "
-              "triangulation unfaired, C0 (linear); each hole's line says which and why. A hole is left open only "
-              "where even that crosses the mesh, or where its patch has a zero-area triangle (a loop through both "
-              "copies of a vertex that repair split). A fill that folds back (turns the normal across its border "
-              "by more than 90°) is made again from the refined triangulation, then from the lightest of the "
-              "triangulation's starts, and written with a warning if it still folds back (docs/fill.md).");
+              "more with its trial states relaxed tangentially where it crossed, and once more rejecting each trial "
+              "that crosses the mesh, then the linear ∆³, ∆², ∆ solutions, then all that again from the refined "
+              "triangulation instead of its membrane, then that triangulation unfaired, C0 (linear); each hole's "
+              "line says which and why. A hole is left open only where even that crosses the mesh, or where its "
+              "patch has a zero-area triangle (a loop through both copies of a vertex that repair split). A fill "
+              "that folds back (turns the normal across its border by more than 90°) is made again from the refined "
+              "triangulation, then from the lightest of the triangulation's starts, and written with a warning if "
+              "it still folds back (docs/fill.md).");
   cmd->add_option("input", args->input, "Input mesh (.obj, .off, .ply, .stl)")->required();
   cmd->add_option("-o,--output", args->output, "Output mesh")->required();
   cmd->add_option("--continuity", args->continuity,

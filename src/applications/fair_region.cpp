@@ -404,10 +404,11 @@ std::vector<char> crossed_faces(const Mesh& mesh, const std::vector<int>& faces)
   return crossed;
 }
 
-// Where the flow's result crosses the mesh (`crossings`, with `report`): the fairing once more from
-// the `given` positions, each flow trial that crosses the mesh rejected
-// (FairRegionOptions::retry_rejecting_crossings), whose result replaces the crossing one in `mesh`
-// and `report` where it settles as a flow clear of the mesh. Returns whether it did.
+// Where the flow's result crossed the mesh (`crossings`, with `report`) and its linear floor does
+// not: the fairing once more from the `given` positions, each flow trial that crosses the mesh
+// rejected (FairRegionOptions::retry_rejecting_crossings), whose result replaces the crossing one in
+// `mesh` and `report` where it settles as a flow clear of the mesh. Returns whether it did. (The flow
+// starts from that floor; a start that crosses would turn the rejection off.)
 template <class Fair>
 bool retry_rejecting_crossings(Mesh& mesh, const Vertices& given, const std::vector<int>& faces,
                                const std::vector<char>& given_crossed, const FairRegionOptions& options, Fair& fair,
@@ -431,18 +432,17 @@ bool retry_rejecting_crossings(Mesh& mesh, const Vertices& given, const std::vec
   retried_report.note = "the " + std::string(to_string(report.flow_kind)) + " flow's result crossed the mesh (" +
                         crossing_text(crossings) + "); flowed again, each trial that crosses the mesh rejected" +
                         (retried_report.note.empty() ? "" : "; " + retried_report.note);
-  retried_report.seconds += report.seconds;  // the crossing fairing's too
   mesh.V = std::move(retried.V);
   report = std::move(retried_report);
   return true;
 }
 
 // With the linear floor, a faired region that crosses the mesh where the given one did not
-// (new_crossings) is flowed again (retry_rejecting_crossings), and where that does not settle clear of
-// the mesh, replaced by the first linear solution from the given positions that does not, at the
-// continuity reached and then at each lower one (as fill's fallback: C2 → C1 → C0), reported
-// linear with the reason; otherwise NumericalError, with mesh.V at the crossing result.
-// `fair(mesh, options)`: the fairing itself.
+// (new_crossings) is replaced by the first linear solution from the given positions that does not,
+// at the continuity reached and then at each lower one (as fill's fallback: C2 → C1 → C0), reported
+// linear with the reason; otherwise NumericalError, with mesh.V at the crossing result. Where that
+// solution is the crossing flow's own floor, the flow is first tried again from it
+// (retry_rejecting_crossings). `fair(mesh, options)`: the fairing itself.
 template <class Fair>
 FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                                 const FairRegionOptions& options, Fair&& fair) {
@@ -454,8 +454,7 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
   const Vertices given = mesh.V;
   FairRegionReport report = fair(mesh, options);
   const std::vector<FaceIntersection> crossings = new_crossings(mesh.V, mesh.F, faces, given_crossed);
-  if (crossings.empty() || retry_rejecting_crossings(mesh, given, faces, given_crossed, options, fair, crossings, report))
-    return report;
+  if (crossings.empty()) return report;
   const int order = static_cast<int>(report.supported) + 1;
   const std::string what = report.linear ? "the linear ∆" + std::to_string(order) + " solution"
                                          : std::string("the ") + to_string(report.flow_kind) + " flow's result";
@@ -469,6 +468,11 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
     try {
       FairRegionReport floor_report = fair_detail::fair_valid_mesh(linear, topo, free_vertices, harmonic, {});
       if (!new_crossings(linear.V, linear.F, faces, given_crossed).empty()) continue;
+      if (c == static_cast<int>(report.supported) &&
+          retry_rejecting_crossings(mesh, given, faces, given_crossed, options, fair, crossings, report)) {
+        report.seconds = detail::seconds_since(start);  // the crossing fairing's and the floor's too
+        return report;
+      }
       floor_report.requested = report.requested;
       floor_report.crossing_fallback = true;
       floor_report.seconds = detail::seconds_since(start);  // the crossing fairing's too

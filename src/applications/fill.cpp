@@ -645,7 +645,7 @@ std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topolog
 
 // The note of a hole filled after `first_failure`: what was delivered instead, and from where.
 std::string fallback_note(const FillOptions& options, const std::string& first_failure, PatchStart start,
-                          const FairRegionOptions& fairing, bool relaxed_retry,
+                          const FairRegionOptions& fairing, bool relaxed_retry, bool rejecting_retry,
                           const std::string& previous_start_failure, const HoleReport& r) {
   const std::string failed = "the " + std::string(to_string(options.continuity)) + " fill failed (" + first_failure + ")";
   if (start == PatchStart::unfaired)
@@ -655,9 +655,15 @@ std::string fallback_note(const FillOptions& options, const std::string& first_f
                                ? "; every fairing from the membrane failed (the last: " + previous_start_failure +
                                      "); faired from the refined triangulation instead"
                                : "";
-  if (relaxed_retry && fairing.method == FairMethod::flow)
-    return failed + from + "; flowed again with its trial states relaxed tangentially" +
-           (r.note.empty() ? "" : ": " + r.note);
+  if ((relaxed_retry || rejecting_retry) && fairing.method == FairMethod::flow) {
+    constexpr const char* kRejected = "each trial that crosses the mesh rejected";
+    const std::string retries = !rejecting_retry ? "; flowed again with its trial states relaxed tangentially"
+                                : !relaxed_retry ? std::string("; flowed again with ") + kRejected
+                                                 : std::string("; flowed again with its trial states relaxed "
+                                                               "tangentially, which crossed too, and again with ") +
+                                                       kRejected;
+    return failed + from + retries + (r.note.empty() ? "" : ": " + r.note);
+  }
   if (fairing.method == FairMethod::flow) return failed + from + (r.note.empty() ? "" : ": " + r.note);
   return failed + from + "; filled with " + delivered_label(fairing.continuity, r.linear);
 }
@@ -668,16 +674,51 @@ struct ChainOutcome {
   std::string reason, first_failure, previous_start_failure;
   PatchStart start = PatchStart::membrane;
   FairRegionOptions fairing;
-  bool relaxed_retry = false;
+  bool relaxed_retry = false, rejecting_retry = false;
+  // The last flow from this start whose patch crossed the mesh (retry_rejecting_crossings).
+  std::optional<FairRegionOptions> crossing_flow;
   FilledMesh filled;
 };
+
+// Where the flow's patch crossed the mesh (relaxed too) and the linear ∆^k solution that replaced it,
+// `c`, does not: the flow once more, with each trial that crosses the mesh rejected
+// (FairRegionOptions::retry_rejecting_crossings), so that it stops short of the contact. That flow
+// starts from the same ∆^k solution, which does not cross, so the rejection is on (a start that
+// crosses turns it off, and then the retry would only repeat the flow). Where it fills the group,
+// it replaces the linear fill in `c` and `reports`.
+void retry_rejecting_crossings(const Mesh& mesh, const std::vector<std::vector<int>>& loops,
+                               const std::vector<int>& group, GroupPatches& patches, const FillOptions& options,
+                               const FillObserver& observer, std::vector<HoleReport>& reports, ChainOutcome& c) {
+  if (!options.retry_rejecting_crossings) return;
+  FairRegionOptions rejecting = *c.crossing_flow;
+  rejecting.flow.reject_crossings = true;
+  std::vector<HoleReport> linear;
+  for (int h : group) linear.push_back(reports[h]);
+  FilledMesh filled;
+  PatchCrossing crossed = PatchCrossing::none;
+  std::string reason;
+  try {
+    reason = fill_group(mesh, loops, group, patches, options, rejecting, c.start, observer, reports, filled, crossed);
+  } catch (const Error& e) {
+    reason = e.what();
+  }
+  if (!reason.empty()) {
+    for (std::size_t k = 0; k < group.size(); ++k) reports[group[k]] = std::move(linear[k]);
+    return;
+  }
+  c.filled = std::move(filled);
+  c.fairing = rejecting;
+  c.rejecting_retry = true;
+}
 
 // Fills `group` (fill_group) from `start`, and with FillOptions::fallback_on_failure tries on where
 // it fails: the flow again with its trials relaxed tangentially where its patch crossed the mesh
 // (crossing_retry_relaxation), then the linear ∆^k solutions from the requested continuity down
-// (never a flow the user did not ask for); all that again from the refined triangulation instead of
-// its membrane; last, that triangulation unfaired: where a loop bites deep into a thin part, every
-// fairing from the membrane may cross the mesh while the refined patch does not. Marks the reports.
+// (never a flow the user did not ask for), where the first of them is clear of the mesh the flow
+// once more from it, rejecting the trials that cross (retry_rejecting_crossings); all that again
+// from the refined triangulation instead of its membrane; last, that triangulation unfaired: where
+// a loop bites deep into a thin part, every fairing from the membrane may cross the mesh while the
+// refined patch does not. Marks the reports.
 ChainOutcome run_fallback_chain(const Mesh& mesh, const std::vector<std::vector<int>>& loops,
                                 const std::vector<int>& group, GroupPatches& patches, const FillOptions& options,
                                 const FillObserver& observer, std::vector<HoleReport>& reports, PatchStart start) {
@@ -697,8 +738,12 @@ ChainOutcome run_fallback_chain(const Mesh& mesh, const std::vector<std::vector<
                                              : c.reason == c.previous_start_failure
                                                  ? "; the refined triangulation, unfaired, failed too, for the same reason"
                                                  : "; the refined triangulation, unfaired, failed too: " + c.reason);
+    if (c.reason.empty() && c.crossing_flow && c.fairing.method == FairMethod::harmonic &&
+        c.fairing.continuity == options.continuity)
+      retry_rejecting_crossings(mesh, loops, group, patches, options, observer, reports, c);
     if (c.reason.empty() || !options.fallback_on_failure || c.start == PatchStart::unfaired) break;
     if (c.first_failure.empty()) c.first_failure = c.reason;
+    if (crossed == PatchCrossing::flow) c.crossing_flow = c.fairing;
     if (crossed == PatchCrossing::flow && c.fairing.flow.tangential_relaxation < options.crossing_retry_relaxation) {
       c.fairing.flow.tangential_relaxation = options.crossing_retry_relaxation;
       c.relaxed_retry = true;
@@ -710,6 +755,7 @@ ChainOutcome run_fallback_chain(const Mesh& mesh, const std::vector<std::vector<
       c.previous_start_failure = c.reason;
       c.start = c.start == PatchStart::membrane && options.patch.relax ? PatchStart::refined : PatchStart::unfaired;
       c.fairing = options;
+      c.crossing_flow.reset();
       c.relaxed_retry = false;
     }
   }
@@ -717,7 +763,7 @@ ChainOutcome run_fallback_chain(const Mesh& mesh, const std::vector<std::vector<
   if (c.reason.empty() && !c.first_failure.empty())
     for (int h : group)
       reports[h].note = fallback_note(options, c.first_failure, c.start, c.fairing, c.relaxed_retry,
-                                      c.previous_start_failure, reports[h]);
+                                      c.rejecting_retry, c.previous_start_failure, reports[h]);
   return c;
 }
 

@@ -326,6 +326,41 @@ TEST(FillShark, TheHoleRoundACornerGetsTheRequestedContinuityWithoutCrossing) {
   EXPECT_LT(h.continuity.max_normal_angle, 45.0 * std::numbers::pi / 180);  // no fold (16° now)
 }
 
+// The same hole with the flow kept (keep_settled_flow): its flow's patch crosses itself (10+
+// crossings), and so does the flow again with its trial states relaxed. A third run rejects every
+// trial that crosses the mesh, settles clear of it, and is delivered: G2, turning the normal across
+// the border by 19° where the ∆³ floor, delivered before, turns it by 18.8°.
+TEST(FillShark, AKeptFlowWhosePatchCrossesItselfIsFlowedAgainRejectingTheCrossings) {
+  const Mesh input = read_mesh(test::data_path("cgal_mech_holes_shark.off"));
+  FillOptions o;
+  o.holes = {3};
+  keep_settled_flow(o);
+  const auto added_faces = [&](const Mesh& filled) {
+    std::vector<int> added(static_cast<std::size_t>(filled.num_faces() - input.num_faces()));
+    std::iota(added.begin(), added.end(), input.num_faces());
+    return added;
+  };
+  Mesh filled = input;
+  const HoleReport h = fill_holes(filled, o).holes[3];
+  ASSERT_EQ(h.status, HoleStatus::filled) << h.reason;
+  EXPECT_EQ(delivered_label(h.supported, h.linear), "G2") << h.note;
+  EXPECT_NE(h.note.find("crosses the mesh"), std::string::npos) << h.note;
+  EXPECT_NE(h.note.find("relaxed tangentially, which crossed too, and again with each trial that crosses the mesh "
+                        "rejected"),
+            std::string::npos)
+      << h.note;
+  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, added_faces(filled), 1).empty());
+
+  o.retry_rejecting_crossings = false;
+  Mesh floor = input;
+  const HoleReport linear = fill_holes(floor, o).holes[3];
+  ASSERT_EQ(linear.status, HoleStatus::filled) << linear.reason;
+  EXPECT_EQ(delivered_label(linear.supported, linear.linear), "C2 (linear)") << linear.note;
+  EXPECT_TRUE(find_face_intersections(floor.V, floor.F, added_faces(floor), 1).empty());
+  // The G2 fill does not fold against the floor it replaces.
+  EXPECT_LT(h.continuity.max_normal_angle, 1.5 * linear.continuity.max_normal_angle);
+}
+
 // blub's 64-edge hole gets G2 (from the membrane with fair_region's defaults the G2 flow ran its
 // 200 steps without settling and fell back to G1).
 TEST(FillBlub, TheFilledHoleStaysCloseToTheOriginal) {

@@ -402,6 +402,7 @@ TEST(RealHoleCrossing, AFlowWhosePatchCrossesTheMeshIsRelaxedAndTriedAgain) {
   Mesh once = ball.cut;
   FillOptions no_retry;
   no_retry.crossing_retry_relaxation = 0;
+  no_retry.retry_rejecting_crossings = false;
   const FillReport report = fill_holes(once, no_retry);
   ASSERT_EQ(report.holes.size(), 1u);
   const HoleReport& floor = report.holes.front();

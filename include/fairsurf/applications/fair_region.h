@@ -98,8 +98,9 @@ struct FairRegionOptions {
   /// through it; its result is delivered where it settles as a flow clear of the mesh, before a
   /// linear solution takes the crossing result's place. A region over a thin part (a wing's edge, a
   /// fin) otherwise lost its G2 to a few triangles pushed through the other sheet (docs/blend.md,
-  /// "Region fairing"). Fill and blend do not fair through this step: they have their own retries
-  /// (crossing_retry_relaxation). false: straight to the linear solutions.
+  /// "Region fairing"). Fill retries the same way where its flow's patch crosses the mesh, relaxed
+  /// too (FillOptions::crossing_retry_relaxation), and the linear ∆^k fill that replaces it does
+  /// not; blend's descents reject crossing trials from the start. false: no such retry.
   bool retry_rejecting_crossings = true;
 
   static FlowOptions default_fair_flow_options();
