@@ -327,9 +327,10 @@ TEST(FillShark, TheHoleRoundACornerGetsTheRequestedContinuityWithoutCrossing) {
 }
 
 // The same hole with the flow kept (keep_settled_flow): its flow's patch crosses itself (10+
-// crossings), and so does the flow again with its trial states relaxed. A third run rejects every
-// trial that crosses the mesh, settles clear of it, and is delivered: G2, turning the normal across
-// the border by 19° where the ∆³ floor, delivered before, turns it by 18.8°.
+// crossings), and so does the flow again with its trial states relaxed. The ∆³ fill that replaces
+// them is clear of the mesh, so the flow runs once more from it, rejecting every trial that crosses
+// the mesh; it settles clear of it and is delivered: G2, turning the normal across the border by
+// 19° where the ∆³ floor, delivered before, turns it by 18.8°.
 TEST(FillShark, AKeptFlowWhosePatchCrossesItselfIsFlowedAgainRejectingTheCrossings) {
   const Mesh input = read_mesh(test::data_path("cgal_mech_holes_shark.off"));
   FillOptions o;
