@@ -656,12 +656,10 @@ std::string fallback_note(const FillOptions& options, const std::string& first_f
                                      "); faired from the refined triangulation instead"
                                : "";
   if ((relaxed_retry || rejecting_retry) && fairing.method == FairMethod::flow) {
-    constexpr const char* kRejected = "each trial that crosses the mesh rejected";
-    const std::string retries = !rejecting_retry ? "; flowed again with its trial states relaxed tangentially"
-                                : !relaxed_retry ? std::string("; flowed again with ") + kRejected
-                                                 : std::string("; flowed again with its trial states relaxed "
-                                                               "tangentially, which crossed too, and again with ") +
-                                                       kRejected;
+    std::string retries = relaxed_retry ? "; flowed again with its trial states relaxed tangentially" : "";
+    if (rejecting_retry)
+      retries += std::string(relaxed_retry ? ", which crossed too, and again" : "; flowed again") +
+                 " with each trial that crosses the mesh rejected";
     return failed + from + retries + (r.note.empty() ? "" : ": " + r.note);
   }
   if (fairing.method == FairMethod::flow) return failed + from + (r.note.empty() ? "" : ": " + r.note);
