@@ -128,15 +128,29 @@ nlohmann::json hole_json(const HoleReport& r) {
   return j;
 }
 
-// When the longest loop failed and is at least three times longer than any other, it is most likely
+// Whether the hole failed because its border is pinched at a vertex it shares with a loop that is
+// not filled (fill_holes' reason).
+bool failed_at_pinch(const HoleReport& hole) {
+  return hole.status == HoleStatus::failed && hole.reason.starts_with("non-manifold border:");
+}
+
+// What the user can do about the failed holes, or "". A lone triangle hanging at a pinch of a
+// hole's border (fill never fills its loop) is what --repair removes. Otherwise, when the longest
+// loop failed (not at a pinch) and is at least three times longer than any other, it is most likely
 // the outer border of an open surface (a scan, a terrain), which is not a hole.
-std::string open_surface_hint(const FillReport& report, const FillArgs& args) {
+std::string failure_hint(const FillReport& report, const FillArgs& args) {
+  const bool lone_triangle = std::any_of(report.holes.begin(), report.holes.end(), [](const HoleReport& h) {
+    return failed_at_pinch(h) && h.reason.find("removes the lone triangle") != std::string::npos;
+  });
+  if (lone_triangle && !args.repair)
+    return "; a lone triangle hangs at a pinch of a failed hole's border: --repair splits the vertex and removes it";
   if (args.skip_largest || report.holes.size() < 2) return "";
   std::vector<const HoleReport*> by_length;
   for (const auto& hole : report.holes) by_length.push_back(&hole);
   std::sort(by_length.begin(), by_length.end(),
             [](const HoleReport* a, const HoleReport* b) { return a->border_edges > b->border_edges; });
-  if (by_length[0]->status != HoleStatus::failed || by_length[0]->border_edges < 3 * by_length[1]->border_edges)
+  if (by_length[0]->status != HoleStatus::failed || failed_at_pinch(*by_length[0]) ||
+      by_length[0]->border_edges < 3 * by_length[1]->border_edges)
     return "";
   return "; the largest loop looks like the outer border of an open surface: use --skip-largest";
 }
@@ -214,8 +228,9 @@ void run_fill(const FillArgs& args) {
   if (report.failed > 0)
     throw CliError(kNumerical, "fill: " + std::to_string(report.failed) + " of " + std::to_string(selected) +
                                    " selected holes failed; " + args.output + " still holds the " +
-                                   std::to_string(report.filled) + " holes that were filled" +
-                                   open_surface_hint(report, args));
+                                   std::to_string(report.filled) +
+                                   (report.filled == 1 ? " hole that was filled" : " holes that were filled") +
+                                   failure_hint(report, args));
 }
 
 void setup_fill(CLI::App& app) {

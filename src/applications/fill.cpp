@@ -34,6 +34,10 @@ namespace {
 using detail::Clock;
 using detail::seconds_since;
 
+// The reason a 3-edge loop around a face is skipped starts with this (select_holes); a pinch it
+// shares names it (unfillable_border).
+constexpr const char* kLoneTriangle = "the loop runs around a lone triangle";
+
 // Border edges at each vertex (#V).
 std::vector<int> border_edge_counts(const Topology& topo) {
   std::vector<int> count(topo.num_vertices, 0);
@@ -73,18 +77,25 @@ std::unordered_map<int, std::vector<int>> holes_at_pinches(const std::vector<std
 
 // Why the loop cannot be filled, or "" if it can: at a pinch every loop through the vertex must be
 // filled with it, since only their patches together can join the vertex's fans into one
-// (border_pinches.h).
+// (border_pinches.h). The reason says why the other loop is not filled (`reports`, as select_holes
+// left them); a lone triangle hanging at the vertex (debris a scan or a cut leaves) is never filled,
+// and repair is what removes it.
 std::string unfillable_border(int hole, const std::vector<std::vector<int>>& loops,
                               const std::unordered_map<int, std::vector<int>>& pinches,
-                              const std::vector<char>& chosen) {
+                              const std::vector<char>& chosen, const std::vector<HoleReport>& reports) {
   if (loops[hole].size() < 3) return "the loop has fewer than three edges";
   for (int v : loops[hole]) {
     const auto it = pinches.find(v);
     if (it == pinches.end()) continue;
-    for (int other : it->second)
-      if (!chosen[other])
-        return "non-manifold border: vertex " + std::to_string(v) + " is also on hole " + std::to_string(other) +
-               ", which is not filled";
+    for (int other : it->second) {
+      if (chosen[other]) continue;
+      std::string why = "non-manifold border: vertex " + std::to_string(v) + " is also on hole " +
+                        std::to_string(other) + ", which is not filled";
+      const std::string& skipped = reports[other].reason;
+      if (!skipped.empty()) why += " (" + skipped + ")";
+      if (skipped.starts_with(kLoneTriangle)) why += "; repair splits the vertex and removes the lone triangle";
+      return why;
+    }
   }
   return "";
 }
@@ -163,7 +174,7 @@ std::vector<int> select_holes(const Vertices& V, const Faces& F, const Topology&
       continue;
     }
     if (around_a_face(F, topo, loops[i])) {
-      reports[i].reason = "the loop runs around a lone triangle: filling it would add that face again, reversed";
+      reports[i].reason = std::string(kLoneTriangle) + ": filling it would add that face again, reversed";
       continue;
     }
     if (borders_a_flat_piece(V, F, topo, loops[i])) {
@@ -634,7 +645,7 @@ std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topolog
   const auto pinches = holes_at_pinches(loops, border_edges);
   std::vector<int> fillable;
   for (int h : chosen) {
-    const std::string bad = unfillable_border(h, loops, pinches, is_chosen);
+    const std::string bad = unfillable_border(h, loops, pinches, is_chosen, reports);
     if (bad.empty())
       fillable.push_back(h);
     else

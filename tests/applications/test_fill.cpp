@@ -2,6 +2,7 @@
 // G0 > harmonic ordering, real meshes filled watertight, per-hole failures, and the pair test of
 // face_intersection.h.
 #include <fairsurf/applications/fill.h>
+#include <fairsurf/applications/repair.h>
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/face_intersection.h>
@@ -596,6 +597,39 @@ TEST(FillPinches, OneHoleOfAPinchAloneFailsAndTheOtherHoleIsFilled) {
   const ValidationReport v = validate(filled);  // the pinch stays as it was, and nothing else is added
   EXPECT_EQ(v.non_manifold_vertices.count, 1);
   EXPECT_EQ(v.non_manifold_edges.count, 0);
+}
+
+// A lone triangle hanging at a vertex of a hole's border (debris a scan or a cut leaves) pinches the
+// border there, and its loop is never filled (its fill could only be the face again). The hole
+// fails, and says which loop pinches it, why that one is not filled and what removes it; after
+// repair (the vertex split, the lone triangle removed as a small component) it is filled.
+TEST(FillPinches, AHoleWithALoneTriangleHangingAtItsBorderSaysRepairRemovesIt) {
+  int pinch = -1;
+  Mesh holed = test::sphere_hole_with_lone_triangle(&pinch);
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, options_for(Continuity::G2, FairMethod::harmonic));
+  ASSERT_EQ(r.holes.size(), 2u);
+  EXPECT_EQ(r.filled, 0);
+  EXPECT_EQ(r.failed, 1);
+  EXPECT_EQ(r.skipped, 1);
+  const auto lone = std::find_if(r.holes.begin(), r.holes.end(), [](const HoleReport& h) { return h.border_edges == 3; });
+  ASSERT_NE(lone, r.holes.end());
+  const HoleReport& hole = r.holes[lone == r.holes.begin() ? 1 : 0];
+  EXPECT_EQ(hole.status, HoleStatus::failed);
+  EXPECT_EQ(hole.reason, "non-manifold border: vertex " + std::to_string(pinch) + " is also on hole " +
+                             std::to_string(lone->index) + ", which is not filled (" + lone->reason +
+                             "); repair splits the vertex and removes the lone triangle")
+      << hole.reason;
+  EXPECT_EQ(filled.F, holed.F);
+
+  const RepairReport repaired = repair(holed);
+  EXPECT_EQ(repaired.small_components_removed, 1);
+  const FillReport after = fill_holes(holed, options_for(Continuity::G2, FairMethod::harmonic));
+  ASSERT_EQ(after.holes.size(), 1u);
+  EXPECT_EQ(after.holes[0].status, HoleStatus::filled) << after.holes[0].reason;
+  const ValidationReport v = validate(holed);
+  EXPECT_TRUE(v.manifold());
+  EXPECT_EQ(boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices())).size(), 0u);
 }
 
 // A square annulus cut round an island of a grid, the island still joined to the rest by one

@@ -180,9 +180,28 @@ TEST_F(CliFill, SomeHolesFailingExitsFourAndKeepsTheFilledOnes) {
   EXPECT_NE(run.out.find("failed: non-manifold border: vertex " + std::to_string(pinch) + " is also on hole "),
             std::string::npos)
       << run.out;
-  EXPECT_NE(run.out.find("still holds the 1 holes that were filled"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("still holds the 1 hole that was filled"), std::string::npos) << run.out;
   const Mesh out = read_mesh(path("out.obj"));
   EXPECT_GT(out.num_faces(), holed.num_faces());
+}
+
+// A hole with a lone triangle hanging at its border (test::sphere_hole_with_lone_triangle) fails at
+// that pinch; the hint is --repair, not --skip-largest (the hole is far longer than the triangle's
+// loop, but it is no outer border), and with --repair the hole is filled.
+TEST_F(CliFill, AHoleFailingAtALoneTriangleHintsAtRepair) {
+  write_mesh(path("debris.obj"), test::sphere_hole_with_lone_triangle());
+  const auto run = test::run_cli("fill " + quoted(path("debris.obj")) + " -o " + quoted(path("out.obj")) +
+                                 " --method harmonic");
+  EXPECT_EQ(run.exit_code, 4) << run.out;
+  EXPECT_NE(run.out.find("still holds the 0 holes that were filled; a lone triangle hangs at a pinch of a failed "
+                         "hole's border: --repair splits the vertex and removes it"),
+            std::string::npos)
+      << run.out;
+  EXPECT_EQ(run.out.find("--skip-largest"), std::string::npos) << run.out;
+  const auto repaired = test::run_cli("fill " + quoted(path("debris.obj")) + " -o " + quoted(path("repaired.obj")) +
+                                      " --method harmonic --repair");
+  EXPECT_EQ(repaired.exit_code, 0) << repaired.out;
+  EXPECT_EQ(loop_count(read_mesh(path("repaired.obj"))), 0);
 }
 
 // The outer border of an S-bent sheet cannot be filled (test::s_sheet_with_hole), the small hole
@@ -193,7 +212,7 @@ TEST_F(CliFill, AFailedOuterBorderIsNamedAsSuchWhereTheHoleBesideItIsFilled) {
   const auto run = test::run_cli("fill " + quoted(path("sheet.obj")) + " -o " + quoted(path("out.obj")));
   EXPECT_EQ(run.exit_code, 4) << run.out;
   EXPECT_NE(run.out.find("filled alone"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("still holds the 1 holes that were filled; the largest loop looks like the outer border of "
+  EXPECT_NE(run.out.find("still holds the 1 hole that was filled; the largest loop looks like the outer border of "
                          "an open surface: use --skip-largest"),
             std::string::npos)
       << run.out;

@@ -2,6 +2,8 @@
 
 #include "analytic_meshes.h"
 
+#include <fairsurf/mesh/topology.h>
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -56,6 +58,20 @@ Mesh cut_ball(const Mesh& mesh, const Vec3& centre, double radius) {
       if ((mesh.V.row(mesh.F(f, k)).transpose() - centre).norm() > radius) return true;
     return false;
   });
+}
+
+Mesh sphere_hole_with_lone_triangle(int* pinch) {
+  Mesh m = cut_ball(icosphere(3), Vec3(0, 0, 1), 0.45);
+  const auto loops = boundary_loops(m.F, build_topology(m.F, m.num_vertices()));
+  const int p = loops.at(0).front();
+  const int n = m.num_vertices();
+  m.V.conservativeResize(n + 2, 3);
+  m.V.row(n) = 0.9 * m.V.row(p) + Eigen::RowVector3d(0.0, 0.05, 0.1);
+  m.V.row(n + 1) = 0.9 * m.V.row(p) + Eigen::RowVector3d(0.0, -0.05, 0.1);
+  m.F.conservativeResize(m.num_faces() + 1, 3);
+  m.F.row(m.num_faces() - 1) << p, n, n + 1;
+  if (pinch) *pinch = p;
+  return m;
 }
 
 Mesh s_sheet_with_hole() {

@@ -28,6 +28,11 @@ Mesh cut_slab(const Mesh& mesh, const Eigen::Vector3d& point, const Eigen::Vecto
 /// border's plane. The outer border is the longer of its two loops.
 Mesh s_sheet_with_hole();
 
+/// A unit icosphere (level 3) with a ball hole round its north pole and, hanging at one vertex of
+/// the hole's border, a lone triangle whose other two corners lie over the hole: debris a scan or a
+/// cut leaves. Its loop pinches the hole's border at `pinch` (set when given).
+Mesh sphere_hole_with_lone_triangle(int* pinch = nullptr);
+
 /// Moves every vertex of `mesh` along its area-weighted normal by a normal deviate of standard
 /// deviation `sigma` (a scan's noise; the same `seed` gives the same draw).
 void add_normal_noise(Mesh& mesh, double sigma, unsigned seed);
