@@ -2,16 +2,18 @@
 // random on closed meshes, none of them tidy, each run with the library's defaults and its output
 // checked. The protocol and figures are in docs/fill.md, "Stress benchmark".
 //
-// fill:  1–3 balls of 4–17 h cut out (they may overlap, sever a thin part or bite into its side).
+// fill:  1–3 balls of 4–17 h cut out (they may overlap, sever a thin part or bite into its side);
+//        with --cut irregular, a blob or a slit of faces instead (bench::cut_irregular).
 // fair:  the same balls' vertices freed on the uncut mesh, clean and with 0.1 h of normal noise.
 // blend: a slab 4 h wide at a random orientation through a random vertex, where it leaves exactly
 //        two loops of at most 200 edges.
 //
 // Usage: bench_stress [--section fill|fair|blend|all] [--mesh NAME | --mesh-file PATH...]
-//                     [--trials N] [--seed S]
+//                     [--trials N] [--seed S] [--cut balls|irregular]
 #include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/applications/fill.h>
+#include <fairsurf/applications/repair.h>
 #include <fairsurf/geometry/continuity_measure.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/face_intersection.h>
@@ -50,6 +52,7 @@ struct Args {
   std::vector<std::string> mesh_files;  // closed meshes to use instead of the bundled ones
   int trials = 40;                      // per mesh and section
   std::uint64_t seed = 1;               // of the first trial; trial t draws from seed + t
+  std::string cut = "balls";            // fill: the holes' shape (balls, or irregular blobs and slits)
 };
 
 void add_options(CLI::App& app, Args& args) {
@@ -61,6 +64,9 @@ void add_options(CLI::App& app, Args& args) {
       ->capture_default_str();
   app.add_option("--seed", args.seed, "Fill and fair trial t draw from S + t, a mesh's blend slabs from S")
       ->type_name("S")
+      ->capture_default_str();
+  app.add_option("--cut", args.cut, "Fill: cut balls, or irregular blobs and slits of faces")
+      ->check(CLI::IsMember({"balls", "irregular"}))
       ->capture_default_str();
 }
 
@@ -116,21 +122,48 @@ bool noted(const std::string& note, const char* what) { return note.find(what) !
 // Fill: the balls cut out and filled
 
 struct FillTally {
-  int trials = 0, refused = 0, holes = 0, open = 0, refined = 0, unfaired = 0, crossing = 0, non_manifold = 0;
+  int trials = 0, refused = 0, holes = 0, open = 0, refined = 0, unfaired = 0, crossing = 0;
+  /// Outputs that are not manifold; of those, the ones whose cut was (the others keep a pinch the
+  /// cut made where a hole through it stayed open).
+  int non_manifold = 0, made_non_manifold = 0;
   int folded = 0;  ///< filled holes whose patch folds back (fill.h's folds_back)
   /// Of those, the ones in a cut that removed disks only (bench::removed_disks: each loop bounds a
   /// disk of the uncut surface, which a fill should follow) across whose border the uncut surface
   /// turns the normal by less than a right angle: folds the cut does not explain. A cap on a
   /// severed tube turns by a right angle whatever the tube does, so other cuts are not counted.
   int folded_against_uncut = 0;
+  /// Holes left open because a lone triangle hangs at their border (the reason names repair), and
+  /// of those, the holes still open once the cut is repaired (as `fairsurf fill --repair` does).
+  int open_at_lone_triangle = 0, open_after_repair = 0;
   double slowest = 0;
 };
 
-void fill_trial(const ClosedMesh& m, std::uint64_t seed, FillTally& tally) {
-  const Balls balls = draw_balls(m, seed, true);
+// An irregular cut (bench::cut_irregular) as draw_balls returns a cut: the vertices it dropped are
+// the "inside".
+Balls draw_irregular(const ClosedMesh& m, std::uint64_t seed, bool& slit) {
+  std::mt19937_64 draw(seed);
+  bench::CutMesh cut = bench::cut_irregular(m.mesh, draw, slit);
+  return {std::move(cut.mesh), std::move(cut.kept), std::move(cut.dropped)};
+}
+
+bool open_at_lone_triangle(const HoleReport& r) {
+  return r.status == HoleStatus::failed && r.reason.find("removes the lone triangle") != std::string::npos;
+}
+
+// The holes still open after repairing `cut` and filling it again (the trial's holes that a lone
+// triangle kept open: does repair let them be filled?).
+int open_after_repair(Mesh cut) {
+  repair(cut);
+  Mesh filled = cut;
+  return fill_holes(filled, FillOptions{}).failed;
+}
+
+void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, FillTally& tally) {
+  bool slit = false;
+  const Balls balls = irregular ? draw_irregular(m, seed, slit) : draw_balls(m, seed, true);
   const Mesh& cut = balls.cut;
-  std::printf("fill  %-26s seed %3llu: loops %s", m.name.c_str(), static_cast<unsigned long long>(seed),
-              bench::border_sizes(cut).c_str());
+  std::printf("fill  %-26s seed %3llu: %sloops %s", m.name.c_str(), static_cast<unsigned long long>(seed),
+              irregular ? (slit ? "slit, " : "blob, ") : "", bench::border_sizes(cut).c_str());
   ++tally.trials;
   Mesh filled = cut;
   FillReport report;
@@ -143,12 +176,15 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, FillTally& tally) {
   }
   const bool crossing = crosses(filled, bench::rows_from(cut.num_faces(), filled.num_faces()));
   const bool manifold = validate(filled).manifold();
+  const bool cut_manifold = validate(cut).manifold();
   tally.holes += static_cast<int>(report.holes.size());
   tally.open += report.failed;
   tally.crossing += crossing;
   tally.non_manifold += !manifold;
+  tally.made_non_manifold += !manifold && cut_manifold;
   tally.slowest = std::max(tally.slowest, report.seconds);
-  std::printf(", %.2f s%s%s", report.seconds, crossing ? ", OUTPUT CROSSES" : "", manifold ? "" : ", NOT MANIFOLD");
+  std::printf(", %.2f s%s%s", report.seconds, crossing ? ", OUTPUT CROSSES" : "",
+              manifold ? "" : (cut_manifold ? ", NOT MANIFOLD" : ", not manifold, as the cut"));
   const std::vector<std::vector<int>> loops = bench::loops_of(cut);
   const bool disks = bench::removed_disks(m.mesh, cut);
   for (const HoleReport& r : report.holes) {
@@ -164,6 +200,7 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, FillTally& tally) {
                   r.index, r.border_edges, delivered_label(r.supported, r.linear).c_str(),
                   r.continuity.max_normal_angle * 180 / std::numbers::pi, uncut, disks ? "" : ", not disk holes");
     }
+    tally.open_at_lone_triangle += open_at_lone_triangle(r);
     if (r.status == HoleStatus::failed)
       std::printf("\n    hole %d (%d edges) left open: %s", r.index, r.border_edges, r.reason.c_str());
     else if (unfaired || refined)
@@ -171,17 +208,24 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, FillTally& tally) {
                   delivered_label(r.supported, r.linear).c_str(),
                   unfaired ? "the refined triangulation unfaired" : "faired from the refined triangulation");
   }
+  if (std::any_of(report.holes.begin(), report.holes.end(), open_at_lone_triangle)) {
+    const int still_open = open_after_repair(cut);
+    tally.open_after_repair += still_open;
+    std::printf("\n    repaired and filled again: %d left open", still_open);
+  }
   std::printf("\n");
 }
 
 std::string fill_summary(const FillTally& t) {
-  char text[480];
+  char text[640];
   std::snprintf(text, sizeof text,
-                "fill: %d trials (%d refused), %d holes: %d left open, %d faired from the refined triangulation, %d "
-                "filled by it unfaired, %d folding back (%d in disk holes where the uncut surface turns less than a right "
-                "angle); outputs crossing the mesh %d, not manifold %d; slowest trial %.2f s",
-                t.trials, t.refused, t.holes, t.open, t.refined, t.unfaired, t.folded, t.folded_against_uncut,
-                t.crossing, t.non_manifold, t.slowest);
+                "fill: %d trials (%d refused), %d holes: %d left open (%d at a lone triangle; after repair, %d), %d faired "
+                "from the refined triangulation, %d filled by it unfaired, %d folding back (%d in disk holes where the "
+                "uncut surface turns less than a right angle); outputs crossing the mesh %d, not manifold %d (where the cut "
+                "was, %d); slowest "
+                "trial %.2f s",
+                t.trials, t.refused, t.holes, t.open, t.open_at_lone_triangle, t.open_after_repair, t.refined,
+                t.unfaired, t.folded, t.folded_against_uncut, t.crossing, t.non_manifold, t.made_non_manifold, t.slowest);
   return text;
 }
 
@@ -323,7 +367,8 @@ int main(int argc, char** argv) {
     if (wanted("fill")) {
       FillTally tally;
       for (const ClosedMesh& m : meshes)
-        for (int t = 0; t < args.trials; ++t) fill_trial(m, args.seed + static_cast<std::uint64_t>(t), tally);
+        for (int t = 0; t < args.trials; ++t)
+          fill_trial(m, args.seed + static_cast<std::uint64_t>(t), args.cut == "irregular", tally);
       summaries.push_back(fill_summary(tally));
     }
     if (wanted("fair")) {

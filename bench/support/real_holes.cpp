@@ -62,6 +62,48 @@ CutMesh cut_ball(const Mesh& mesh, const Eigen::Vector3d& centre, double radius)
   return cut_faces(mesh, [&](int f) { return inside[mesh.F(f, 0)] && inside[mesh.F(f, 1)] && inside[mesh.F(f, 2)]; });
 }
 
+CutMesh cut_irregular(const Mesh& mesh, std::mt19937_64& draw, bool& slit) {
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  const auto neighbours = [&](int f) {
+    std::vector<int> across;
+    for (int k = 0; k < 3; ++k)
+      for (int g : topo.edge_faces.row(topo.face_edges[3 * f + k]))
+        if (g != f) across.push_back(g);
+    return across;
+  };
+  const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(draw() % static_cast<std::uint64_t>(n)); };
+  std::vector<char> removed(mesh.num_faces(), 0);
+  const int start = static_cast<int>(pick(static_cast<std::size_t>(mesh.num_faces())));
+  slit = draw() % 2 == 1;
+  if (!slit) {
+    const int target = 20 + static_cast<int>(draw() % 380);
+    std::vector<int> blob{start};
+    removed[start] = 1;
+    for (int grown = 1, tries = 0; grown < target && tries < 100 * target; ++tries) {
+      std::vector<int> free;
+      for (int g : neighbours(blob[pick(blob.size())]))
+        if (!removed[g]) free.push_back(g);
+      if (free.empty()) continue;
+      const int g = free[pick(free.size())];
+      removed[g] = 1;
+      blob.push_back(g);
+      ++grown;
+    }
+  } else {
+    const int steps = 10 + static_cast<int>(draw() % 90);
+    std::vector<int> walk{start};
+    for (int s = 0; s < steps; ++s) {
+      const std::vector<int> next = neighbours(walk.back());
+      if (next.empty()) break;
+      walk.push_back(next[pick(next.size())]);
+    }
+    for (int f : walk)
+      for (int k = 0; k < 3; ++k)
+        for (int g : topo.vertex_faces.row(mesh.F(f, k))) removed[g] = 1;
+  }
+  return cut_faces(mesh, [&](int f) { return removed[f] != 0; });
+}
+
 CutMesh cut_slab(const Mesh& mesh, int vertex, const Eigen::Vector3d& axis, double half_width) {
   const Eigen::Vector3d point = mesh.V.row(vertex).transpose();
   std::vector<char> inside(mesh.num_vertices());

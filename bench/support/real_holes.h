@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,13 @@ CutMesh cut_ball(const Mesh& mesh, const Eigen::Vector3d& centre, double radius)
 /// and that are connected, through shared edges of such faces, to a face at `vertex`: the band the
 /// slab cuts across one neck or tube, not every place the plane meets the mesh.
 CutMesh cut_slab(const Mesh& mesh, int vertex, const Eigen::Vector3d& axis, double half_width);
+
+/// An irregular cut drawn from `draw` (the seed fixes it on every platform): a blob grown from a
+/// random face to 20–399 faces, each new face next to a random face of the blob, or (`slit`) a
+/// random walk of 10–99 steps across edges, thickened to every face at a vertex of the walk.
+/// Unlike balls, these leave concave and elongated holes, islands, and lone triangles hanging at a
+/// vertex of a hole's border, as the holes of raw scans have.
+CutMesh cut_irregular(const Mesh& mesh, std::mt19937_64& draw, bool& slit);
 
 /// The boundary loops of `mesh` (topology.h's order).
 std::vector<std::vector<int>> loops_of(const Mesh& mesh);
