@@ -4,7 +4,8 @@
 //
 // fill:  1–3 balls of 4–17 h cut out (they may overlap, sever a thin part or bite into its side);
 //        with --cut irregular, a blob or a slit of faces instead (bench::cut_irregular).
-// fair:  the same balls' vertices freed on the uncut mesh, clean and with 0.1 h of normal noise.
+// fair:  the same balls' vertices freed on the uncut mesh, clean and with 0.1 h of normal noise
+//        (with --cut irregular, the vertices inside the blob or slit).
 // blend: a slab 4 h wide at a random orientation through a random vertex, where it leaves exactly
 //        two loops of at most 200 edges.
 //
@@ -52,7 +53,7 @@ struct Args {
   std::vector<std::string> mesh_files;  // closed meshes to use instead of the bundled ones
   int trials = 40;                      // per mesh and section
   std::uint64_t seed = 1;               // of the first trial; trial t draws from seed + t
-  std::string cut = "balls";            // fill: the holes' shape (balls, or irregular blobs and slits)
+  std::string cut = "balls";            // fill and fair: balls, or irregular blobs and slits
 };
 
 void add_options(CLI::App& app, Args& args) {
@@ -65,7 +66,7 @@ void add_options(CLI::App& app, Args& args) {
   app.add_option("--seed", args.seed, "Fill and fair trial t draw from S + t, a mesh's blend slabs from S")
       ->type_name("S")
       ->capture_default_str();
-  app.add_option("--cut", args.cut, "Fill: cut balls, or irregular blobs and slits of faces")
+  app.add_option("--cut", args.cut, "Fill and fair: balls, or irregular blobs and slits of faces (their inner vertices freed for fair)")
       ->check(CLI::IsMember({"balls", "irregular"}))
       ->capture_default_str();
 }
@@ -258,13 +259,19 @@ std::string parts_text(const FairRegionReport& r, FairTally& tally) {
   return text + "]";
 }
 
-void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, FairTally& tally) {
+void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, bool irregular, FairTally& tally) {
   Mesh mesh = m.mesh;
   if (noisy) bench::add_normal_noise(mesh, kNoise * m.h, seed);
   ClosedMesh drawn{m.name, mesh, m.h};
-  const std::vector<int> region = draw_balls(drawn, seed, false).inside;
-  std::printf("fair  %-26s seed %3llu%s: %zu free: ", m.name.c_str(), static_cast<unsigned long long>(seed),
-              noisy ? ", noise" : "", region.size());
+  bool slit = false;
+  const std::vector<int> region =
+      irregular ? draw_irregular(drawn, seed, slit).inside : draw_balls(drawn, seed, false).inside;
+  std::printf("fair  %-26s seed %3llu%s: %s%zu free: ", m.name.c_str(), static_cast<unsigned long long>(seed),
+              noisy ? ", noise" : "", irregular ? (slit ? "slit, " : "blob, ") : "", region.size());
+  if (region.empty()) {  // a cut with no vertex inside marks no region
+    std::printf("no vertex inside the cut, not run\n");
+    return;
+  }
   ++tally.regions;
   Mesh faired = mesh;
   try {
@@ -375,7 +382,8 @@ int main(int argc, char** argv) {
       FairTally tally;
       for (const ClosedMesh& m : meshes)
         for (bool noisy : {false, true})
-          for (int t = 0; t < args.trials; ++t) fair_trial(m, args.seed + static_cast<std::uint64_t>(t), noisy, tally);
+          for (int t = 0; t < args.trials; ++t)
+            fair_trial(m, args.seed + static_cast<std::uint64_t>(t), noisy, args.cut == "irregular", tally);
       summaries.push_back(fair_summary(tally));
     }
     if (wanted("blend")) {
