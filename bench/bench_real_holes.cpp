@@ -4,7 +4,8 @@
 // are described in docs/fill.md, "Real holes benchmark".
 //
 // Usage: bench_real_holes [--section fill|fair|blend|all] [--mesh NAME | --mesh-file PATH...] [--no-cgal]
-//                         [--quick] [--random N [--seed S]] [--all-slabs] [--keep-flow] [--csv FILE]
+//                         [--quick] [--random N [--seed S]] [--cut ball|blob|slit] [--all-slabs] [--keep-flow]
+//                         [--csv FILE]
 #include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/applications/fill.h>
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -51,6 +53,7 @@ struct Args {
   int random = 0;          // ball centres drawn at random instead of the fixed ones (0: fixed)
   std::uint64_t seed = 1;  // of those draws
   bool keep_flow = false;  // fairsurf's rows as with --keep-flow
+  std::string cut = "ball";  // fill: the holes' shape round each centre (ball, blob or slit)
 };
 
 // What fairsurf's own rows run: the commands' defaults, or with `--keep-flow` their settled flows
@@ -243,10 +246,27 @@ void print_fill_row(const Row& r) {
   std::fflush(stdout);
 }
 
-Row fill_case(const Loaded& m, int centre, int radius_h, bool noisy, const Ours& ours, bool cgal) {
+// The cut of a fill row: the ball of radius r·h round `centre`, or (--cut blob, slit) an irregular
+// hole from a face at `centre` of about the ball's size, without lone triangles at its border:
+// a blob of as many faces as a disk of radius r·h holds (4π r²/√3), or a random walk of 4r steps
+// thickened to the faces at its vertices (a slit about 2 h wide), drawn from the row's noise seed.
+bench::CutMesh fill_cut(const Loaded& m, int centre, int radius_h, const std::string& shape) {
+  const Eigen::Vector3d c = m.mesh.V.row(centre).transpose();
+  if (shape == "ball") return bench::cut_ball(m.mesh, c, radius_h * m.h);
+  int start = 0;
+  while (m.mesh.F(start, 0) != centre && m.mesh.F(start, 1) != centre && m.mesh.F(start, 2) != centre) ++start;
+  std::mt19937_64 draw(noise_seed(centre, radius_h));
+  const bool blob = shape == "blob";
+  const int size = blob ? static_cast<int>(std::lround(4 * std::numbers::pi * radius_h * radius_h / std::sqrt(3.0)))
+                        : 4 * radius_h;
+  return bench::cut_irregular(m.mesh, start, blob ? bench::CutShape::blob : bench::CutShape::slit, size, draw, true);
+}
+
+Row fill_case(const Loaded& m, int centre, int radius_h, bool noisy, const std::string& shape, const Ours& ours,
+              bool cgal) {
   Row row = ball_row("fill", m, centre, radius_h, noisy);
   const Eigen::Vector3d c = m.mesh.V.row(centre).transpose();
-  bench::CutMesh cut = bench::cut_ball(m.mesh, c, radius_h * m.h);
+  bench::CutMesh cut = fill_cut(m, centre, radius_h, shape);
   if (noisy) bench::add_normal_noise(cut.mesh, kNoise * m.h, noise_seed(centre, radius_h));
   row.size = border_sizes(cut.mesh);
   row.disks = removed_disks(m.mesh, cut.mesh);
@@ -280,15 +300,20 @@ bool all_g2(const std::string& continuity) {
   return true;
 }
 
-std::string fill_section(const std::vector<Loaded>& meshes, const Ours& ours, bool cgal) {
-  std::printf("== fill: holes cut by a ball of radius r·h around vertex `centre`; distances in h ==\n");
+std::string fill_section(const std::vector<Loaded>& meshes, const Ours& ours, bool cgal, const std::string& shape) {
+  if (shape == "ball")
+    std::printf("== fill: holes cut by a ball of radius r·h around vertex `centre`; distances in h ==\n");
+  else
+    std::printf("== fill: a %s of faces cut from vertex `centre`, about as large as a ball of radius r·h; distances "
+                "in h ==\n",
+                shape.c_str());
   print_fill_header();
   Tally tally[2];
   for (int noisy = 0; noisy < 2; ++noisy)
     for (const Loaded& m : meshes)
       for (int centre : m.centres)
         for (int radius_h : {4, 8}) {
-          const Row row = fill_case(m, centre, radius_h, noisy, ours, cgal);
+          const Row row = fill_case(m, centre, radius_h, noisy, shape, ours, cgal);
           print_fill_row(row);
           add_csv(row);
           Tally& t = tally[noisy];
@@ -622,6 +647,9 @@ void add_options(CLI::App& app, Args& args) {
       ->type_name("N")
       ->check(CLI::Range(0, std::numeric_limits<int>::max()).description(">= 0"));
   app.add_option("--seed", args.seed, "Seed of the --random draws")->type_name("S")->capture_default_str();
+  app.add_option("--cut", args.cut, "Fill: cut a ball round each centre, or an irregular blob or slit of faces of about its size")
+      ->check(CLI::IsMember({"ball", "blob", "slit"}))
+      ->capture_default_str();
   app.add_flag("--all-slabs", args.all_slabs, "Blend every plane that qualifies instead of the fixed cases");
   app.add_option("--csv", args.csv, "Write every row of every section to FILE")->type_name("FILE");
   app.add_flag("--keep-flow", args.keep_flow,
@@ -658,7 +686,7 @@ int main(int argc, char** argv) {
     if (args.keep_flow) std::printf("fairsurf's rows with --keep-flow\n");
     std::vector<std::string> summaries;
     const auto wanted = [&](const char* section) { return args.section == section || args.section == "all"; };
-    if (wanted("fill")) summaries.push_back(fill_section(meshes, ours, args.cgal));
+    if (wanted("fill")) summaries.push_back(fill_section(meshes, ours, args.cgal, args.cut));
     if (wanted("fair")) summaries.push_back(fair_section(meshes, ours, args.cgal));
     if (wanted("blend")) summaries.push_back(blend_section(meshes, ours.blend, args.quick, args.all_slabs));
     std::string overall;

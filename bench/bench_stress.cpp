@@ -140,10 +140,15 @@ struct FillTally {
 };
 
 // An irregular cut (bench::cut_irregular) as draw_balls returns a cut: the vertices it dropped are
-// the "inside".
+// the "inside". From a random face, half the draws grow a blob of 20–399 faces, the others walk
+// 10–99 steps into a slit.
 Balls draw_irregular(const ClosedMesh& m, std::uint64_t seed, bool& slit) {
   std::mt19937_64 draw(seed);
-  bench::CutMesh cut = bench::cut_irregular(m.mesh, draw, slit);
+  const int start = static_cast<int>(draw() % static_cast<std::uint64_t>(m.mesh.num_faces()));
+  slit = draw() % 2 == 1;
+  const int size = slit ? 10 + static_cast<int>(draw() % 90) : 20 + static_cast<int>(draw() % 380);
+  bench::CutMesh cut = bench::cut_irregular(m.mesh, start, slit ? bench::CutShape::slit : bench::CutShape::blob,
+                                            size, draw, false);
   return {std::move(cut.mesh), std::move(cut.kept), std::move(cut.dropped)};
 }
 

@@ -62,7 +62,7 @@ CutMesh cut_ball(const Mesh& mesh, const Eigen::Vector3d& centre, double radius)
   return cut_faces(mesh, [&](int f) { return inside[mesh.F(f, 0)] && inside[mesh.F(f, 1)] && inside[mesh.F(f, 2)]; });
 }
 
-CutMesh cut_irregular(const Mesh& mesh, std::mt19937_64& draw, bool& slit) {
+CutMesh cut_irregular(const Mesh& mesh, int start, CutShape shape, int size, std::mt19937_64& draw, bool tidy) {
   const Topology topo = build_topology(mesh.F, mesh.num_vertices());
   const auto neighbours = [&](int f) {
     std::vector<int> across;
@@ -73,13 +73,10 @@ CutMesh cut_irregular(const Mesh& mesh, std::mt19937_64& draw, bool& slit) {
   };
   const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(draw() % static_cast<std::uint64_t>(n)); };
   std::vector<char> removed(mesh.num_faces(), 0);
-  const int start = static_cast<int>(pick(static_cast<std::size_t>(mesh.num_faces())));
-  slit = draw() % 2 == 1;
-  if (!slit) {
-    const int target = 20 + static_cast<int>(draw() % 380);
+  if (shape == CutShape::blob) {
     std::vector<int> blob{start};
     removed[start] = 1;
-    for (int grown = 1, tries = 0; grown < target && tries < 100 * target; ++tries) {
+    for (int grown = 1, tries = 0; grown < size && tries < 100 * size; ++tries) {
       std::vector<int> free;
       for (int g : neighbours(blob[pick(blob.size())]))
         if (!removed[g]) free.push_back(g);
@@ -90,9 +87,8 @@ CutMesh cut_irregular(const Mesh& mesh, std::mt19937_64& draw, bool& slit) {
       ++grown;
     }
   } else {
-    const int steps = 10 + static_cast<int>(draw() % 90);
     std::vector<int> walk{start};
-    for (int s = 0; s < steps; ++s) {
+    for (int s = 0; s < size; ++s) {
       const std::vector<int> next = neighbours(walk.back());
       if (next.empty()) break;
       walk.push_back(next[pick(next.size())]);
@@ -100,6 +96,14 @@ CutMesh cut_irregular(const Mesh& mesh, std::mt19937_64& draw, bool& slit) {
     for (int f : walk)
       for (int k = 0; k < 3; ++k)
         for (int g : topo.vertex_faces.row(mesh.F(f, k))) removed[g] = 1;
+  }
+  for (bool again = tidy; again;) {
+    again = false;
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+      if (removed[f]) continue;
+      const std::vector<int> across = neighbours(f);
+      if (std::none_of(across.begin(), across.end(), [&](int g) { return !removed[g]; })) removed[f] = 1, again = true;
+    }
   }
   return cut_faces(mesh, [&](int f) { return removed[f] != 0; });
 }

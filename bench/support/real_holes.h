@@ -37,12 +37,17 @@ CutMesh cut_ball(const Mesh& mesh, const Eigen::Vector3d& centre, double radius)
 /// slab cuts across one neck or tube, not every place the plane meets the mesh.
 CutMesh cut_slab(const Mesh& mesh, int vertex, const Eigen::Vector3d& axis, double half_width);
 
-/// An irregular cut drawn from `draw` (the seed fixes it on every platform): a blob grown from a
-/// random face to 20–399 faces, each new face next to a random face of the blob, or (`slit`) a
-/// random walk of 10–99 steps across edges, thickened to every face at a vertex of the walk.
-/// Unlike balls, these leave concave and elongated holes, islands, and lone triangles hanging at a
-/// vertex of a hole's border, as the holes of raw scans have.
-CutMesh cut_irregular(const Mesh& mesh, std::mt19937_64& draw, bool& slit);
+/// Irregular cuts: a blob of faces grown at random, or a slit (a random walk thickened). Unlike balls
+/// they leave concave and elongated holes, islands, and lone triangles hanging at a vertex of a
+/// hole's border, as the holes of raw scans have.
+enum class CutShape { blob, slit };
+
+/// Removes an irregular patch of faces from `start` (a face), drawn from `draw` (the seed fixes it on
+/// every platform): a blob grown to `size` faces, each new face next to a random face of the blob,
+/// or a slit, a random walk of `size` steps across edges thickened to every face at a vertex of the
+/// walk. `tidy`: also remove every face the cut leaves with no neighbour across an edge (a lone
+/// triangle hanging at a vertex), so that the holes are clean disks like a ball's.
+CutMesh cut_irregular(const Mesh& mesh, int start, CutShape shape, int size, std::mt19937_64& draw, bool tidy);
 
 /// The boundary loops of `mesh` (topology.h's order).
 std::vector<std::vector<int>> loops_of(const Mesh& mesh);
