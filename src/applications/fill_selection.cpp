@@ -1,0 +1,190 @@
+// Which boundary loops fill_holes fills, and why the others are not (fill_selection.h).
+#include "fill_selection.h"
+
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/validate.h>
+
+#include "mesh/validated.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <set>
+#include <string>
+#include <unordered_map>
+
+namespace fairsurf::fill_detail {
+namespace {
+
+// The reason a 3-edge loop around a face is skipped starts with this (select_holes); a pinch it
+// shares names it (unfillable_border).
+constexpr const char* kLoneTriangle = "the loop runs around a lone triangle";
+
+// Border edges at each vertex (#V).
+std::vector<int> border_edge_counts(const Topology& topo) {
+  std::vector<int> count(topo.num_vertices, 0);
+  for (int e = 0; e < topo.edges.rows(); ++e)
+    if (topo.is_boundary_edge(e)) ++count[topo.edges(e, 0)], ++count[topo.edges(e, 1)];
+  return count;
+}
+
+// The holes through each pinch of the border (a vertex with more than two border edges).
+std::unordered_map<int, std::vector<int>> holes_at_pinches(const std::vector<std::vector<int>>& loops,
+                                                           const std::vector<int>& border_edges) {
+  std::unordered_map<int, std::vector<int>> at;
+  for (int h = 0; h < static_cast<int>(loops.size()); ++h)
+    for (int v : loops[h])
+      if (border_edges[v] > 2 && (at[v].empty() || at[v].back() != h)) at[v].push_back(h);
+  return at;
+}
+
+// Why the loop cannot be filled, or "" if it can: at a pinch every loop through the vertex must be
+// filled with it, since only their patches together can join the vertex's fans into one
+// (border_pinches.h). The reason says why the other loop is not filled (`reports`, as select_holes
+// left them); a lone triangle hanging at the vertex (debris a scan or a cut leaves) is never filled,
+// and repair is what removes it.
+std::string unfillable_border(int hole, const std::vector<std::vector<int>>& loops,
+                              const std::unordered_map<int, std::vector<int>>& pinches,
+                              const std::vector<char>& chosen, const std::vector<HoleReport>& reports) {
+  if (loops[hole].size() < 3) return "the loop has fewer than three edges";
+  for (int v : loops[hole]) {
+    const auto it = pinches.find(v);
+    if (it == pinches.end()) continue;
+    for (int other : it->second) {
+      if (chosen[other]) continue;
+      std::string why = "non-manifold border: vertex " + std::to_string(v) + " is also on hole " +
+                        std::to_string(other) + ", which is not filled";
+      const std::string& skipped = reports[other].reason;
+      if (!skipped.empty()) why += " (" + skipped + ")";
+      if (skipped.starts_with(kLoneTriangle)) why += "; repair splits the vertex and removes the lone triangle";
+      return why;
+    }
+  }
+  return "";
+}
+
+// Whether the 3-edge loop `loop` runs around a face of the mesh (a lone triangle, or a triangle
+// whose three edges are all on the border): its fill could only be that face again, reversed.
+bool around_a_face(const Faces& F, const Topology& topo, const std::vector<int>& loop) {
+  if (loop.size() != 3) return false;
+  for (int f : topo.vertex_faces.row(loop[0])) {
+    const auto corner = [&](int v) { return F(f, 0) == v || F(f, 1) == v || F(f, 2) == v; };
+    if (corner(loop[1]) && corner(loop[2])) return true;
+  }
+  return false;
+}
+
+// Whether `loop` is the whole border of a flat piece: a part of the mesh, connected through its
+// vertices, all of whose vertices lie on the loop and all of whose faces lie in one plane (the two
+// triangles of a face of an unwelded soup, a flat polygon on its own). Such a piece has no vertex
+// inside, and its fill could only lay the piece again, reversed, on top of itself.
+bool borders_a_flat_piece(const Vertices& V, const Faces& F, const Topology& topo, const std::vector<int>& loop) {
+  const std::set<int> on_loop(loop.begin(), loop.end());
+  const std::size_t most_faces = loop.size() - 2;  // a triangulated polygon without inner vertices
+  std::set<int> piece;
+  std::vector<int> queue(topo.vertex_faces.row(loop.front()).begin(), topo.vertex_faces.row(loop.front()).end());
+  while (!queue.empty()) {
+    const int f = queue.back();
+    queue.pop_back();
+    if (!piece.insert(f).second) continue;
+    if (piece.size() > most_faces) return false;
+    for (int k = 0; k < 3; ++k) {
+      if (!on_loop.contains(F(f, k))) return false;
+      for (int g : topo.vertex_faces.row(F(f, k)))
+        if (!piece.contains(g)) queue.push_back(g);
+    }
+  }
+  // All the piece's vertices are the loop's: the piece is flat where they lie in one face's plane.
+  const int f = *piece.begin();
+  const Eigen::Vector3d origin = V.row(F(f, 0)).transpose();
+  const Eigen::Vector3d n = (V.row(F(f, 1)).transpose() - origin).cross(V.row(F(f, 2)).transpose() - origin);
+  double scale = 0;
+  for (int v : loop) scale = std::max(scale, (V.row(v).transpose() - origin).norm());
+  constexpr double kFlat = 1e-9;  // relative: a plane up to round-off
+  if (!(n.norm() > 0)) return false;
+  for (int v : loop)
+    if (std::abs(n.dot(V.row(v).transpose() - origin)) > kFlat * scale * n.norm()) return false;
+  return true;
+}
+
+// Marks the loops that are not to be filled as skipped, with the reason; returns the others.
+std::vector<int> select_holes(const Vertices& V, const Faces& F, const Topology& topo,
+                              const std::vector<std::vector<int>>& loops, const FillOptions& options,
+                              std::vector<HoleReport>& reports) {
+  const int n = static_cast<int>(loops.size());
+  std::vector<char> selected(n, options.holes.empty() ? 1 : 0);
+  for (int i : options.holes) {
+    if (i < 0 || i >= n)
+      throw InvalidArgument("fill_holes: hole " + std::to_string(i) + " is outside [0, " + std::to_string(n) +
+                            ") (the mesh has " + std::to_string(n) + " boundary loops)");
+    selected[i] = 1;
+  }
+  for (int i = 0; i < n; ++i)
+    if (!selected[i]) reports[i].reason = "not selected";
+  if (options.skip_largest && n > 0) {
+    const auto largest = std::max_element(loops.begin(), loops.end(),
+                                          [](const auto& a, const auto& b) { return a.size() < b.size(); });
+    const int i = static_cast<int>(largest - loops.begin());
+    if (selected[i]) reports[i].reason = "the largest border, left open (skip largest)";
+    selected[i] = 0;
+  }
+  std::vector<int> chosen;
+  for (int i = 0; i < n; ++i) {
+    if (!selected[i]) continue;
+    if (options.max_hole_edges > 0 && reports[i].border_edges > options.max_hole_edges) {
+      reports[i].reason = std::to_string(reports[i].border_edges) + " border edges, more than the maximum " +
+                          std::to_string(options.max_hole_edges);
+      continue;
+    }
+    if (around_a_face(F, topo, loops[i])) {
+      reports[i].reason = std::string(kLoneTriangle) + ": filling it would add that face again, reversed";
+      continue;
+    }
+    if (borders_a_flat_piece(V, F, topo, loops[i])) {
+      reports[i].reason =
+          "the loop is the whole border of a flat piece with no vertex inside (a face of an unwelded triangle soup?): "
+          "filling it would lay the piece again, reversed, on top of itself; repair welds a soup";
+      continue;
+    }
+    chosen.push_back(i);
+  }
+  return chosen;
+}
+
+}  // namespace
+
+Topology require_fillable(const Mesh& mesh) {
+  Topology topo;
+  ValidationReport report = detail::validate_keeping_topology(mesh, topo);
+  const bool well_formed = !report.no_faces && report.out_of_range_indices.count == 0 &&
+                           report.repeated_vertex_faces.count == 0 && report.nan_vertices.count == 0;
+  if (well_formed) {
+    const std::vector<int> border = border_edge_counts(topo);
+    Finding& vertices = report.non_manifold_vertices;
+    vertices.count -= static_cast<int>(std::count_if(border.begin(), border.end(), [](int c) { return c > 2; }));
+    std::erase_if(vertices.examples, [&](int v) { return border[v] > 2; });
+  }
+  require_valid(report, Requirements{}, "fill_holes");
+  return topo;
+}
+
+std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topology& topo,
+                                const std::vector<std::vector<int>>& loops, const FillOptions& options,
+                                std::vector<HoleReport>& reports) {
+  const std::vector<int> border_edges = border_edge_counts(topo);
+  const std::vector<int> chosen = select_holes(V, F, topo, loops, options, reports);
+  std::vector<char> is_chosen(loops.size(), 0);
+  for (int h : chosen) is_chosen[h] = 1;
+  const auto pinches = holes_at_pinches(loops, border_edges);
+  std::vector<int> fillable;
+  for (int h : chosen) {
+    const std::string bad = unfillable_border(h, loops, pinches, is_chosen, reports);
+    if (bad.empty())
+      fillable.push_back(h);
+    else
+      reports[h].status = HoleStatus::failed, reports[h].reason = bad;
+  }
+  return fillable;
+}
+
+}  // namespace fairsurf::fill_detail

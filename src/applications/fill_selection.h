@@ -1,0 +1,27 @@
+// Private to fill_holes: which boundary loops it fills. The mesh's requirements (a pinch of the
+// border is allowed), the loops the options select or that cannot be filled usefully (a lone
+// triangle, a flat piece), and the loops through a pinch that cannot be filled without another.
+#pragma once
+
+#include <fairsurf/applications/fill.h>
+#include <fairsurf/mesh/topology.h>
+
+#include <vector>
+
+namespace fairsurf::fill_detail {
+
+/// The mesh requirements of filling: everything validate checks, except that a vertex may be
+/// non-manifold where it pinches the border (more than two border edges): filling the holes through
+/// it together makes it manifold (border_pinches.h), and a hole that cannot be is reported per hole.
+/// Returns the mesh's connectivity, which validate built. Throws as require_valid.
+Topology require_fillable(const Mesh& mesh);
+
+/// The loops of `loops` (boundary_loops of the mesh (V, F), connectivity `topo`) to fill, ascending.
+/// The others get their status in `reports` (one per loop) with the reason: skipped where the
+/// options leave them out or their fill could only lay the mesh's own faces again, failed where a
+/// pinch of their border is shared with a loop that is not filled.
+std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topology& topo,
+                                const std::vector<std::vector<int>>& loops, const FillOptions& options,
+                                std::vector<HoleReport>& reports);
+
+}  // namespace fairsurf::fill_detail
