@@ -7,6 +7,7 @@
 #include <fairsurf/mesh/topology.h>
 
 #include "border_fold.h"
+#include "fill_groups.h"
 #include "fill_selection.h"
 #include "held_out.h"
 #include "mesh/crossing_count.h"
@@ -17,94 +18,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <limits>
 #include <numbers>
 #include <numeric>
 #include <optional>
-#include <unordered_map>
 
 namespace fairsurf {
 namespace {
 
 using detail::Clock;
 using detail::seconds_since;
-
-int find_root(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
-
-// Groups of holes whose fixed rings (the loop and `rings` − 1 rings around it) share a vertex,
-// each group ascending, the groups ordered by their first hole.
-std::vector<std::vector<int>> overlapping_groups(const Topology& topo, const std::vector<std::vector<int>>& loops,
-                                                 const std::vector<int>& holes, int rings) {
-  std::vector<int> parent(loops.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  std::vector<int> owner(topo.num_vertices, -1);
-  for (int h : holes)
-    for (int v : k_ring(topo, loops[h], rings - 1)) {
-      if (owner[v] >= 0) parent[find_root(parent, h)] = find_root(parent, owner[v]);
-      owner[v] = h;
-    }
-  std::vector<std::vector<int>> groups;
-  std::vector<int> group_of(loops.size(), -1);
-  for (int h : holes) {
-    const int root = find_root(parent, h);
-    if (group_of[root] < 0) group_of[root] = static_cast<int>(groups.size()), groups.emplace_back();
-    groups[group_of[root]].push_back(h);
-  }
-  return groups;
-}
-
-// The hole each new vertex and face of `patch` belongs to. Patches of different loops share no
-// edge (at a pinch they share the vertex only), so the new faces fall into one edge-connected piece
-// per patch, found from the face across each loop edge. Where relinking at a pinch made one loop of
-// two holes (two loops that meet at a vertex, as a figure eight), their one piece goes to the later
-// hole, and `patch_hole` says so for the earlier.
-struct PatchOwnership {
-  std::vector<int> vertex_hole;  ///< per new vertex (index − first new vertex)
-  std::vector<int> face_hole;    ///< per new face
-  std::vector<int> patch_hole;   ///< per hole of the group: the hole its loop's patch is counted for
-};
-
-PatchOwnership patch_ownership(const InitialPatch& patch, int input_vertices,
-                               const std::vector<std::vector<int>>& loops, std::span<const int> holes) {
-  const Faces& F = patch.mesh.F;
-  const int first = patch.first_patch_face, count = static_cast<int>(F.rows()) - first;
-  const auto key = [](int a, int b) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-  };
-  std::unordered_map<std::uint64_t, int> face_of;  // directed patch edge -> patch face (− first)
-  for (int f = 0; f < count; ++f)
-    for (int k = 0; k < 3; ++k) face_of[key(F(first + f, k), F(first + f, (k + 1) % 3))] = f;
-  std::vector<int> parent(count);
-  std::iota(parent.begin(), parent.end(), 0);
-  for (const auto& [edge, f] : face_of) {
-    const auto twin = face_of.find((edge << 32) | (edge >> 32));
-    if (twin != face_of.end()) parent[find_root(parent, f)] = find_root(parent, twin->second);
-  }
-  std::vector<int> hole_of_root(count, -1), loop_root;  // loop_root: per hole, its patch's piece
-  for (int h : holes) {
-    loop_root.push_back(-1);
-    for (std::size_t t = 0; t < loops[h].size(); ++t) {
-      const auto across = face_of.find(key(loops[h][(t + 1) % loops[h].size()], loops[h][t]));
-      if (across != face_of.end()) hole_of_root[loop_root.back() = find_root(parent, across->second)] = h;
-    }
-  }
-  PatchOwnership own;
-  for (std::size_t k = 0; k < holes.size(); ++k)
-    own.patch_hole.push_back(loop_root[k] < 0 ? holes[k] : hole_of_root[loop_root[k]]);
-  own.vertex_hole.assign(patch.mesh.num_vertices() - input_vertices, -1);
-  for (int f = 0; f < count; ++f) {
-    own.face_hole.push_back(hole_of_root[find_root(parent, f)]);
-    for (int k = 0; k < 3; ++k)
-      if (F(first + f, k) >= input_vertices) own.vertex_hole[F(first + f, k) - input_vertices] = own.face_hole.back();
-  }
-  return own;
-}
 
 // Local indices in `sub` of the global vertices `global` (all in the submesh).
 std::vector<int> to_local(const Submesh& sub, const std::vector<int>& global) {
@@ -404,7 +329,7 @@ std::string fill_group(const Mesh& mesh, const std::vector<std::vector<int>>& lo
     }
   }
 
-  const PatchOwnership own = patch_ownership(patch, mesh.num_vertices(), loops, group);
+  const fill_detail::PatchOwnership own = fill_detail::patch_ownership(patch, mesh.num_vertices(), loops, group);
   const bool flowed = !fairing.linear && !patch.free_vertices.empty();
   std::vector<std::vector<int>> hole_free(group.size()), hole_faces(group.size());
   for (std::size_t k = 0; k < group.size(); ++k) {
@@ -839,7 +764,7 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
 
   const std::vector<int> fillable = fill_detail::fillable_holes(mesh.V, mesh.F, topo, loops, options, report.holes);
   const int rings = rings_needed(options.continuity);
-  for (const auto& group : overlapping_groups(topo, loops, fillable, rings)) {
+  for (const auto& group : fill_detail::overlapping_groups(topo, loops, fillable, rings)) {
     std::vector<std::vector<int>> patch_loops;
     for (int h : group) patch_loops.push_back(loops[h]);
     try {
