@@ -77,6 +77,10 @@ void print_text(const std::string& path, const ReadReport& read, const MeshSumma
             << "boundary loops: " << s.boundary_loop_lengths.size();
   if (!s.boundary_loop_lengths.empty())
     std::cout << " (edges: " << join(s.boundary_loop_lengths) << ")";
+  if (s.lone_triangles > 0)
+    std::cout << "\nlone triangles: " << s.lone_triangles
+              << " (every edge on the border: their loops are no holes, fill skips them; repair welds or removes "
+                 "them)";
   std::cout << "\ncomponents: " << s.components << "\n"
             << "euler characteristic: " << s.euler_characteristic << "\n"
             << "genus: " << genus_text(s, report) << "\n";
@@ -123,6 +127,7 @@ nlohmann::json to_json(const std::string& path, const ReadReport& read, const Me
   j["edges"] = s.edges;
   j["boundary_edges"] = s.boundary_edges;
   j["boundary_loops"] = s.boundary_loop_lengths;
+  j["lone_triangles"] = s.lone_triangles;
   j["components"] = s.components;
   j["euler_characteristic"] = s.euler_characteristic;
   j["genus"] = s.genus ? nlohmann::json(*s.genus) : nlohmann::json(nullptr);

@@ -156,7 +156,8 @@ py::object bounding_box(const Eigen::AlignedBox3d& box) {
 py::dict to_dict(const MeshSummary& s, const ValidationReport& report) {
   py::dict d("vertices"_a = s.vertices, "referenced_vertices"_a = s.referenced_vertices, "faces"_a = s.faces,
              "edges"_a = s.edges, "boundary_edges"_a = s.boundary_edges,
-             "boundary_loops"_a = s.boundary_loop_lengths, "components"_a = s.components,
+             "boundary_loops"_a = s.boundary_loop_lengths, "lone_triangles"_a = s.lone_triangles,
+             "components"_a = s.components,
              "euler_characteristic"_a = s.euler_characteristic,
              "genus"_a = s.genus ? py::object(py::int_(*s.genus)) : py::none(),
              "bounding_box"_a = bounding_box(s.bounding_box), "mean_edge_length"_a = s.mean_edge_length,

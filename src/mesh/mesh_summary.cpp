@@ -37,6 +37,10 @@ MeshSummary summarize(const Mesh& mesh, const ValidationReport& report) {
   s.edges = static_cast<int>(topo.edges.rows());
   for (int e = 0; e < s.edges; ++e) s.boundary_edges += topo.is_boundary_edge(e);
   for (const auto& loop : loops) s.boundary_loop_lengths.push_back(static_cast<int>(loop.size()));
+  for (int f = 0; f < F.rows(); ++f)
+    s.lone_triangles += topo.is_boundary_edge(topo.face_edges[3 * f]) &&
+                        topo.is_boundary_edge(topo.face_edges[3 * f + 1]) &&
+                        topo.is_boundary_edge(topo.face_edges[3 * f + 2]);
   s.components = components.count;
   s.euler_characteristic = s.referenced_vertices - s.edges + static_cast<int>(F.rows());
   if (report.manifold() && report.orientable()) s.genus = total_genus(topo, components, loops);

@@ -1,4 +1,6 @@
 // End-to-end tests of `fairsurf info`: the built CLI is run on bundled and broken files.
+#include <fairsurf/io/io.h>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
@@ -9,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "hole_meshes.h"
 #include "scratch_dir.h"
 #include "test_support.h"
 
@@ -56,7 +59,7 @@ TEST_F(CliInfo, JsonOfANonManifoldScanHasEveryKeyAndTheDocumentedCounts) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key :
-       {"vertices", "faces", "edges", "boundary_loops", "components", "euler_characteristic", "genus",
+       {"vertices", "faces", "edges", "boundary_loops", "lone_triangles", "components", "euler_characteristic", "genus",
         "bounding_box", "mean_edge_length", "manifold", "degenerate_faces", "duplicate_faces",
         "unreferenced_vertices", "non_manifold_edges", "non_manifold_vertices",
         "inconsistent_orientation_edges", "orientable", "nan_vertices", "out_of_range_indices",
@@ -80,6 +83,7 @@ TEST_F(CliInfo, JsonOfAnOpenManifoldMesh) {
   EXPECT_EQ(j["vertices"], 1861);
   EXPECT_EQ(j["faces"], 3600);
   EXPECT_EQ(j["boundary_loops"], nlohmann::json::array({120}));
+  EXPECT_EQ(j["lone_triangles"], 0);
   EXPECT_EQ(j["components"], 1);
   EXPECT_EQ(j["euler_characteristic"], 1);
   EXPECT_EQ(j["genus"], 0);
@@ -103,6 +107,26 @@ TEST_F(CliInfo, TextListsEveryFindingWithExamples) {
   EXPECT_NE(r.out.find("\n  18 inconsistently oriented edges (first: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("genus: undefined (non-manifold)\n"), std::string::npos) << r.out;
   EXPECT_TRUE(r.err.empty()) << r.err;
+}
+
+// A ball hole in a sphere with a lone triangle hanging at a vertex of its border
+// (test::sphere_hole_with_lone_triangle): text and JSON count the one triangle; a mesh without any
+// prints no such line.
+TEST_F(CliInfo, LoneTrianglesAreCounted) {
+  const std::string debris = (dir_ / "debris.obj").string();
+  fairsurf::write_mesh(debris, fairsurf::test::sphere_hole_with_lone_triangle());
+  const CliRun text = run("info " + quoted(debris));
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("\nlone triangles: 1 (every edge on the border: their loops are no holes, fill skips "
+                          "them; repair welds or removes them)\n"),
+            std::string::npos)
+      << text.out;
+  const CliRun json = run("info --json " + quoted(debris));
+  ASSERT_EQ(json.status, 0) << json.err;
+  EXPECT_EQ(nlohmann::json::parse(json.out)["lone_triangles"], 1);
+  const CliRun closed = run("info " + quoted(fairsurf::test::data_path("torus.obj")));
+  ASSERT_EQ(closed.status, 0) << closed.err;
+  EXPECT_EQ(closed.out.find("lone triangles"), std::string::npos) << closed.out;
 }
 
 TEST_F(CliInfo, StrictExitsWithThreeOnAnyFindingAndZeroOnACleanMesh) {

@@ -12,6 +12,7 @@
 #include <limits>
 #include <numbers>
 
+#include "hole_meshes.h"
 #include "test_support.h"
 
 using namespace fairsurf;
@@ -221,6 +222,16 @@ TEST(Validate, DuplicateVertexPositionsOfAnUnweldedSoup) {
   const MeshSummary s = summarize(m, r);
   EXPECT_EQ(s.components, 2);
   EXPECT_EQ(s.boundary_loop_lengths, (std::vector<int>{3, 3}));
+  EXPECT_EQ(s.lone_triangles, 2);  // each triangle's three edges are on the border
+}
+
+// A ball hole in a sphere with a triangle hanging at one vertex of its border: that triangle is the
+// one lone triangle; the hole's own border faces each keep an edge inside the mesh.
+TEST(MeshSummary, ALoneTriangleHangingAtAHoleIsCountedAndNoOtherFace) {
+  const Mesh m = test::sphere_hole_with_lone_triangle();
+  const MeshSummary s = summarize(m, validate(m));
+  EXPECT_EQ(s.lone_triangles, 1);
+  EXPECT_EQ(s.boundary_loop_lengths.size(), 2u);
 }
 
 TEST(Validate, FinHasOneNonManifoldEdgeButNoNonManifoldVertex) {

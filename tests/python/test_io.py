@@ -36,6 +36,7 @@ def test_info_mirrors_the_cli(hand):
     report = fairsurf.info(V, F)
     assert report["vertices"] == 810
     assert report["boundary_loops"] == [16]
+    assert report["lone_triangles"] == 0
     assert report["manifold"] and report["orientable"] and report["valid"]
     assert report["genus"] == 0
 

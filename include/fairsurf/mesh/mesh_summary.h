@@ -24,6 +24,10 @@ struct MeshSummary {
   /// border (a vertex with more than two border edges) boundary_loops splits the border into
   /// chains that need not close; the figure is then the chain's vertex count and only indicative.
   std::vector<int> boundary_loop_lengths;
+  /// Triangles whose three edges are all on the border: a triangle on its own, hanging at a vertex
+  /// (debris a scan or a cut leaves by a hole), or a face of an unwelded soup. Each has its own
+  /// 3-edge loop, which is no hole (fill skips it); repair welds a soup and removes the others.
+  int lone_triangles = 0;
   int components = 0;  ///< groups of faces connected through shared vertices
   /// V - E + F over referenced vertices and well-formed faces, summed over all components.
   int euler_characteristic = 0;
