@@ -19,11 +19,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numbers>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -647,7 +647,8 @@ void add_options(CLI::App& app, Args& args) {
       ->type_name("N")
       ->check(CLI::Range(0, std::numeric_limits<int>::max()).description(">= 0"));
   app.add_option("--seed", args.seed, "Seed of the --random draws")->type_name("S")->capture_default_str();
-  app.add_option("--cut", args.cut, "Fill: cut a ball round each centre, or an irregular blob or slit of faces of about its size")
+  app.add_option("--cut", args.cut,
+                 "Fill: cut a ball round each centre, or an irregular blob or slit of faces of about its size")
       ->check(CLI::IsMember({"ball", "blob", "slit"}))
       ->capture_default_str();
   app.add_flag("--all-slabs", args.all_slabs, "Blend every plane that qualifies instead of the fixed cases");

@@ -66,7 +66,8 @@ void add_options(CLI::App& app, Args& args) {
   app.add_option("--seed", args.seed, "Fill and fair trial t draw from S + t, a mesh's blend slabs from S")
       ->type_name("S")
       ->capture_default_str();
-  app.add_option("--cut", args.cut, "Fill and fair: balls, or irregular blobs and slits of faces (their inner vertices freed for fair)")
+  app.add_option("--cut", args.cut,
+                 "Fill and fair: balls, or irregular blobs and slits of faces (their inner vertices freed for fair)")
       ->check(CLI::IsMember({"balls", "irregular"}))
       ->capture_default_str();
 }
@@ -225,11 +226,10 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, FillTal
 std::string fill_summary(const FillTally& t) {
   char text[640];
   std::snprintf(text, sizeof text,
-                "fill: %d trials (%d refused), %d holes: %d left open (%d at a lone triangle; after repair, %d), %d faired "
-                "from the refined triangulation, %d filled by it unfaired, %d folding back (%d in disk holes where the "
-                "uncut surface turns less than a right angle); outputs crossing the mesh %d, not manifold %d (where the cut "
-                "was, %d); slowest "
-                "trial %.2f s",
+                "fill: %d trials (%d refused), %d holes: %d left open (%d at a lone triangle; after repair, %d), "
+                "%d faired from the refined triangulation, %d filled by it unfaired, %d folding back (%d in disk "
+                "holes where the uncut surface turns less than a right angle); outputs crossing the mesh %d, not "
+                "manifold %d (where the cut was, %d); slowest trial %.2f s",
                 t.trials, t.refused, t.holes, t.open, t.open_at_lone_triangle, t.open_after_repair, t.refined,
                 t.unfaired, t.folded, t.folded_against_uncut, t.crossing, t.non_manifold, t.made_non_manifold, t.slowest);
   return text;

@@ -16,8 +16,6 @@ int find_root(std::vector<int>& parent, int i) {
 
 }  // namespace
 
-// Groups of holes whose fixed rings (the loop and `rings` − 1 rings around it) share a vertex,
-// each group ascending, the groups ordered by their first hole.
 std::vector<std::vector<int>> overlapping_groups(const Topology& topo, const std::vector<std::vector<int>>& loops,
                                                  const std::vector<int>& holes, int rings) {
   std::vector<int> parent(loops.size());
