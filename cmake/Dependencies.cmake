@@ -7,6 +7,8 @@ find_package(muparser REQUIRED)
 find_package(PNG REQUIRED)
 find_package(OpenMesh REQUIRED)
 find_package(BLAS REQUIRED)
+# qhull's reentrant C library: the 3D Delaunay tetrahedralization of a hole's loop (hole_triangulation.h)
+find_package(Qhull REQUIRED)
 
 # MUMPS and UMFPACK ship no CMake package in Debian: locate them directly. MUMPS is the MPI build
 # with FAIRSURF_MPI, the sequential one otherwise (cmake/Mpi.cmake says why never both).
@@ -39,6 +41,6 @@ add_library(fairsurf_private_deps INTERFACE)
 target_include_directories(fairsurf_private_deps SYSTEM INTERFACE
   ${MUMPS_INCLUDE_DIR} ${UMFPACK_INCLUDE_DIR})
 target_link_libraries(fairsurf_private_deps INTERFACE
-  OpenMP::OpenMP_CXX nlohmann_json::nlohmann_json muparser::muparser PNG::PNG OpenMeshCore
+  OpenMP::OpenMP_CXX nlohmann_json::nlohmann_json muparser::muparser PNG::PNG OpenMeshCore Qhull::qhull_r
   fairsurf_mumps
   ${UMFPACK_LIBRARY} ${AMD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY} ${METIS_LIBRARY} BLAS::BLAS)

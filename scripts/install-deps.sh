@@ -18,6 +18,7 @@ packages=(
   libcli11-dev             # command-line parsing
   nlohmann-json3-dev       # --json output and logs
   libmuparser-dev          # user formulas f(H,K)
+  libqhull-dev             # 3D Delaunay tetrahedralization of a hole's loop (CGAL's restricted search)
   libpng-dev               # PNG encoding for `fairsurf render`
   libstb-dev               # stb_truetype.h: glyph rasterization for render's title and colour bar
   fonts-dejavu-core        # DejaVu Sans, the font render draws its text with

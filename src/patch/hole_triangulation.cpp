@@ -2,6 +2,7 @@
 #include <fairsurf/mesh/face_intersection.h>
 #include <fairsurf/patch/hole_triangulation.h>
 
+#include "loop_delaunay.h"
 #include "loop_faces.h"
 
 #include <Eigen/Geometry>
@@ -59,8 +60,9 @@ std::uint64_t edge_key(int from, int to) {
          static_cast<std::uint32_t>(to);
 }
 
+using detail::TriangleKey;
+
 // The vertex set of a triangle, independent of its orientation and corner order.
-using TriangleKey = std::array<int, 3>;
 TriangleKey triangle_key(int a, int b, int c) {
   TriangleKey v{a, b, c};
   std::sort(v.begin(), v.end());
@@ -127,9 +129,11 @@ struct Polygon {
 
 class Triangulator {
  public:
+  // `allowed`, where not null, holds the only triangles the programme may use (the Delaunay
+  // restriction, which delaunay_restricted applies only to polygons the programme solves whole).
   Triangulator(const Vertices& V, const Topology& topo, const HoleTriangulationOptions& options,
-               const Forbidden& forbidden)
-      : V_(V), topo_(topo), options_(options), forbidden_(forbidden) {}
+               const Forbidden& forbidden, const std::set<TriangleKey>* allowed)
+      : V_(V), topo_(topo), options_(options), forbidden_(forbidden), allowed_(allowed) {}
 
   // Appends the triangles of `poly` to `out` (each as (v_k, v_j, v_i), reversing the loop order).
   void triangulate(const Polygon& poly, std::vector<Eigen::Vector3i>& out) {
@@ -163,6 +167,13 @@ class Triangulator {
   bool admissible_diagonal(int u, int v) const {
     const std::uint64_t key = undirected_key(u, v);
     return u != v && !is_mesh_edge(topo_, u, v) && !made_.contains(key) && !forbidden_.diagonals.contains(key);
+  }
+
+  // A triangle that crossed the mesh in an earlier round is refused, as is, under the Delaunay
+  // restriction, one that is no face of the loop's tetrahedralization.
+  bool admissible_triangle(int a, int b, int c) const {
+    const TriangleKey key = triangle_key(a, b, c);
+    return !forbidden_.triangles.contains(key) && (allowed_ == nullptr || allowed_->contains(key));
   }
 
   // Positions s < t of the first vertex the polygon passes twice; (-1, -1) if none.
@@ -309,9 +320,8 @@ class Triangulator {
         Weight best{kInfinity, kInfinity};
         if (top || admissible_diagonal(vertex(i), vertex(k)))
           for (int j = i + 1; j < k; ++j) {
-            if (!forbidden_.triangles.empty() &&
-                forbidden_.triangles.contains(triangle_key(vertex(i), vertex(j), vertex(k))))
-              continue;
+            const bool restricted = !forbidden_.triangles.empty() || allowed_ != nullptr;
+            if (restricted && !admissible_triangle(vertex(i), vertex(j), vertex(k))) continue;
             const Weight& left = weight[at(i, j)];
             const Weight& right = weight[at(j, k)];
             // The sub-polygons' angles bound this candidate's from below: skip hopeless ones
@@ -351,6 +361,7 @@ class Triangulator {
   const Topology& topo_;
   const HoleTriangulationOptions& options_;
   const Forbidden& forbidden_;  // what crossed the mesh in an earlier round
+  const std::set<TriangleKey>* allowed_;  // the Delaunay restriction's triangles, or null
   bool divided_ = false;
   std::unordered_set<std::uint64_t> made_;  // diagonals of the pieces solved so far
 };
@@ -371,7 +382,8 @@ Faces with_faces(const Faces& F, const std::vector<Eigen::Vector3i>& faces, std:
 // crosses (HoleTriangulationOptions::max_crossing_rounds); the round with the fewest crossings wins.
 // Weights are left to the caller.
 HoleTriangulation triangulate_avoiding_crossings(const Vertices& V, const Faces& F, const Topology& topo,
-                                                 const Polygon& poly, const HoleTriangulationOptions& options) {
+                                                 const Polygon& poly, const HoleTriangulationOptions& options,
+                                                 const std::set<TriangleKey>* allowed) {
   HoleTriangulation result;
   Forbidden forbidden;
   std::size_t fewest = std::numeric_limits<std::size_t>::max();
@@ -381,7 +393,7 @@ HoleTriangulation triangulate_avoiding_crossings(const Vertices& V, const Faces&
   HoleTriangulationOptions later = options;
   later.start_vertices = 1;
   for (int round = 0; round <= options.max_crossing_rounds; ++round) {
-    Triangulator triangulator(V, topo, round == 0 ? options : later, forbidden);
+    Triangulator triangulator(V, topo, round == 0 ? options : later, forbidden, allowed);
     std::vector<Eigen::Vector3i> faces;
     try {
       triangulator.triangulate(poly, faces);
@@ -405,6 +417,25 @@ HoleTriangulation triangulate_avoiding_crossings(const Vertices& V, const Faces&
     }
   }
   return result;
+}
+
+// The programme restricted to the faces of the loop's Delaunay tetrahedralization (CGAL's search).
+// Not restricted (`delaunay` false, no faces) where the loop passes a vertex twice, is too large
+// for the programme undivided, spans no volume, or admits no triangulation within the restriction.
+HoleTriangulation delaunay_restricted(const Vertices& V, const Faces& F, const Topology& topo, const Polygon& poly,
+                                      const HoleTriangulationOptions& options) {
+  const std::set<int> distinct(poly.vertices.begin(), poly.vertices.end());
+  if (static_cast<int>(distinct.size()) != poly.size() || poly.size() > options.max_dynamic_programming_size)
+    return {};
+  const std::set<TriangleKey> allowed = detail::delaunay_triangles(V, poly.vertices);
+  if (allowed.empty()) return {};
+  try {
+    HoleTriangulation result = triangulate_avoiding_crossings(V, F, topo, poly, options, &allowed);
+    result.delaunay = true;
+    return result;
+  } catch (const InvalidMeshError&) {
+    return {};
+  }
 }
 
 }  // namespace
@@ -436,7 +467,9 @@ HoleTriangulation triangulate_hole(const Vertices& V, const Faces& F, const Topo
     outside[edge_key(loop[t], loop[(t + 1) % n])] = poly.side_normals.back();
   }
 
-  HoleTriangulation result = triangulate_avoiding_crossings(V, F, topo, poly, options);
+  HoleTriangulation result = options.delaunay_restricted ? delaunay_restricted(V, F, topo, poly, options)
+                                                        : HoleTriangulation{};
+  if (!result.delaunay) result = triangulate_avoiding_crossings(V, F, topo, poly, options, nullptr);
   const TriangulationWeight w = weigh(V, result.faces, outside);
   result.max_dihedral_angle = w.max_dihedral_angle;
   result.area = w.area;

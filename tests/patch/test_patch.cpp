@@ -17,6 +17,7 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <numeric>
@@ -419,6 +420,85 @@ TEST(HoleTriangulation, ReSolvesUntilNoTriangleCrossesTheMesh) {
   filled.F.bottomRows(checked.faces.rows()) = checked.faces;
   const auto still_open = boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices()));
   EXPECT_EQ(still_open.size(), 3u);
+}
+
+// Whether the triangle (a, b, c) of `points` is a face of their Delaunay tetrahedralization, by
+// brute force: some sphere through its corners holds none of the other points. The spheres through
+// a, b, c are centred at cc + t·n (cc the circumcentre, n the unit normal), of radius² R² + t², and
+// point p stays outside one iff |p − cc|² − R² ≥ 2t·n·(p − cc): a bound on t from each point.
+bool is_delaunay_face(const std::vector<Vec3>& points, int a, int b, int c) {
+  const Vec3 u = points[b] - points[a], v = points[c] - points[a], w = u.cross(v);
+  const Vec3 cc = points[a] + (u.squaredNorm() * v.cross(w) + v.squaredNorm() * w.cross(u)) / (2 * w.squaredNorm());
+  const Vec3 n = w.normalized();
+  const double r2 = (points[a] - cc).squaredNorm();
+  double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+  for (int p = 0; p < static_cast<int>(points.size()); ++p) {
+    if (p == a || p == b || p == c) continue;
+    const double power = (points[p] - cc).squaredNorm() - r2, side = n.dot(points[p] - cc);
+    if (std::abs(side) < 1e-12) {
+      if (power < 0) return false;
+    } else if (side > 0) {
+      hi = std::min(hi, power / (2 * side));
+    } else {
+      lo = std::max(lo, power / (2 * side));
+    }
+  }
+  return lo <= hi;
+}
+
+// HoleTriangulationOptions::delaunay_restricted: every triangle then is a face of the loop's 3D
+// Delaunay tetrahedralization (checked by brute force above), and the search falls back to every
+// triangle where that admits none, so a triangulation is always found.
+TEST(HoleTriangulation, TheDelaunayRestrictionUsesOnlyFacesOfTheLoopsTetrahedralization) {
+  int restricted = 0, differ = 0, full_outside = 0;
+  for (const int n : {8, 12, 16, 24})
+    for (unsigned seed = 1; seed <= 6; ++seed) {
+      const Mesh m = irregular_annulus(n, seed, 0.4);
+      const auto loop = inner_loop(m);
+      const Topology topo = build_topology(m.F, m.num_vertices());
+      const HoleTriangulation full = triangulate_hole(m.V, m.F, topo, loop);
+      const HoleTriangulation t = triangulate_hole(m.V, m.F, topo, loop, {.delaunay_restricted = true});
+      EXPECT_FALSE(full.delaunay);
+      ASSERT_EQ(t.faces.rows(), n - 2) << n << " " << seed;
+      Mesh filled = m;
+      filled.F.conservativeResize(m.F.rows() + t.faces.rows(), 3);
+      filled.F.bottomRows(t.faces.rows()) = t.faces;
+      expect_closed_manifold(filled, n);  // the annulus's outer circle
+      if (!t.delaunay) continue;
+      ++restricted;
+      differ += t.faces != full.faces;
+      std::vector<Vec3> points;
+      std::map<int, int> position;
+      for (int v : loop) position[v] = static_cast<int>(points.size()), points.push_back(m.V.row(v).transpose());
+      const auto delaunay_face = [&](const Faces& faces, int f) {
+        return is_delaunay_face(points, position[faces(f, 0)], position[faces(f, 1)], position[faces(f, 2)]);
+      };
+      for (int f = 0; f < t.faces.rows(); ++f) EXPECT_TRUE(delaunay_face(t.faces, f)) << n << " " << seed << " face " << f;
+      // The check can fail: the full search's lightest triangulation often uses other faces.
+      for (int f = 0; f < full.faces.rows(); ++f)
+        if (!delaunay_face(full.faces, f)) {
+          ++full_outside;
+          break;
+        }
+    }
+  EXPECT_GT(restricted, 12);
+  EXPECT_GT(differ, 0);
+  EXPECT_GT(full_outside, 0);
+  std::printf("Delaunay-restricted on %d of 24 loops, a triangulation other than the full search's on %d, "
+              "whose lightest triangulation has a face outside the tetrahedralization on %d\n",
+              restricted, differ, full_outside);
+}
+
+// A flat loop spans no volume: no tetrahedralization restricts the search, which then is the full one.
+TEST(HoleTriangulation, AFlatLoopIsTriangulatedByTheFullSearch) {
+  const Mesh grid = test::regular_grid(12, 12);
+  const Mesh holed = cut(grid, [](const Vec3& p) { return p.x() > 2.5 && p.x() < 8.5 && p.y() > 2.5 && p.y() < 8.5; });
+  const Topology topo = build_topology(holed.F, holed.num_vertices());
+  const auto hole = grid_hole(holed);
+  const HoleTriangulation full = triangulate_hole(holed.V, holed.F, topo, hole);
+  const HoleTriangulation t = triangulate_hole(holed.V, holed.F, topo, hole, {.delaunay_restricted = true});
+  EXPECT_FALSE(t.delaunay);
+  EXPECT_EQ(t.faces, full.faces);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -37,8 +37,9 @@
 // (face_intersection.h, the same test as fill's); while it crosses, the programme is solved again
 // with the crossing diagonals (an edge through a face) or triangles (a face's edge through them)
 // forbidden, up to `max_crossing_rounds` times, and the triangulation with the fewest crossings is
-// kept (docs/patch.md: the corner of cgal_mech_holes_shark's hole 3). CGAL avoids them by restricting the
-// search to a 3D Delaunay triangulation of the loop, which we do not have.
+// kept (docs/patch.md: the corner of cgal_mech_holes_shark's hole 3). CGAL avoids most of them by
+// restricting the search to the faces of a 3D Delaunay tetrahedralization of the loop; that search is
+// an option here (`delaunay_restricted`), which fill uses where a hole's fill folds back.
 //
 // A triangle is admissible only if its three vertices are distinct and none of its diagonals is
 // already an edge of the mesh (that would make the edge non-manifold). A loop that passes twice
@@ -75,6 +76,12 @@ struct HoleTriangulationOptions {
   /// crossing triangles forbidden, at most this many times; the one with the fewest crossings is
   /// kept. 0: no check. Rounds after the first are solved from the loop's first vertex only.
   int max_crossing_rounds = 100;
+  /// The programme considers only the triangles that are faces of the 3D Delaunay
+  /// tetrahedralization of the loop's vertices (qhull), as CGAL's hole filling does by default
+  /// (docs/patch.md, "Delaunay restriction"). The full search still runs where the restriction
+  /// admits no triangulation, the loop passes a vertex twice or exceeds
+  /// `max_dynamic_programming_size`, or its vertices span no volume (HoleTriangulation::delaunay).
+  bool delaunay_restricted = false;
 };
 
 /// The new faces of one hole and the weight they reach.
@@ -84,6 +91,7 @@ struct HoleTriangulation {
   double area = 0.0;                ///< total area of the new faces
   bool divided = false;             ///< the loop was cut into pieces (above the threshold)
   int crossings = 0;                ///< crossings left with the mesh or each other (0 when not checked)
+  bool delaunay = false;            ///< the faces come from the Delaunay-restricted search
 };
 
 /// Triangulates the hole bounded by `loop` (vertex indices of `V`, surface on the left, as
