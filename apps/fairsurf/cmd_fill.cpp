@@ -243,8 +243,8 @@ void setup_fill(CLI::App& app) {
               "line says which and why. A hole is left open only where even that crosses the mesh, or where its "
               "patch has a zero-area triangle (a loop through both copies of a vertex that repair split). A fill "
               "that folds back (turns the normal across its border by more than 90°) is made again from the refined "
-              "triangulation, then from the lightest of the triangulation's starts, and written with a warning if "
-              "it still folds back (docs/fill.md).");
+              "triangulation, then from the lightest of the triangulation's starts, then within the faces of the "
+              "loop's Delaunay tetrahedralization, and written with a warning if it still folds back (docs/fill.md).");
   cmd->add_option("input", args->input, "Input mesh (.obj, .off, .ply, .stl)")->required();
   cmd->add_option("-o,--output", args->output, "Output mesh")->required();
   cmd->add_option("--continuity", args->continuity,

@@ -525,10 +525,15 @@ ChainOutcome run_fallback_chain(const Mesh& mesh, const std::vector<std::vector<
   return c;
 }
 
-// The largest normal angle across the borders of the group's holes (radians).
+// The largest normal angle across the borders of the group's holes (radians); NaN where a hole's
+// border was not measured (a patch of a few vertices leaves its border's one-sided fits too few
+// points), so that no comparison takes it for a patch that does not fold.
 double largest_border_angle(const std::vector<HoleReport>& reports, const std::vector<int>& group) {
   double angle = 0.0;
-  for (int h : group) angle = std::max(angle, reports[h].continuity.max_normal_angle);
+  for (int h : group) {
+    if (reports[h].continuity.border_vertices == 0) return std::numeric_limits<double>::quiet_NaN();
+    angle = std::max(angle, reports[h].continuity.max_normal_angle);
+  }
   return angle;
 }
 
@@ -626,45 +631,71 @@ bool same_triangulations(GroupPatches& a, GroupPatches& b) {
   }
 }
 
-// Where the fill `outcome` still folds back, the group is triangulated again with the lightest of the
-// triangulation's starts (HoleTriangulationOptions::start_margin 0) and filled from there. The first
-// start's triangulation is kept unless another is lighter by the margin, since a few degrees lighter
-// is no better a patch in general; but a fill that folds back is no patch at all, and the starts'
-// largest angles may differ by a few degrees where their shapes differ wholly (bench_real_holes
-// --random 10 --seed 2, airplane 5947 4h: a loop round the edge of a thin plate, bridged through the
-// plate from the first start, at 110°, and laid along both its sides from the lightest, at 25°). That
-// fill is delivered where it turns the normal across the border by at most half as much
-// (kRetriangulatedAngleRatio): a few degrees less on a folded patch, mostly noise in the border's
-// fits, gave fills farther from the surface as often as closer (docs/fill.md, "Triangulated again").
+// Where the fill `outcome` still folds back, the group is triangulated again and filled from there:
+// first with the lightest of the triangulation's starts (HoleTriangulationOptions::start_margin 0),
+// then, where that fill folds back too, within the faces of each loop's Delaunay tetrahedralization
+// (HoleTriangulationOptions::delaunay_restricted, CGAL's search). The first start's triangulation is
+// kept unless another is lighter by the margin, since a few degrees lighter is no better a patch in
+// general; but a fill that folds back is no patch at all. The starts' largest angles may differ by a
+// few degrees where their shapes differ wholly (airplane 5947 4h: a loop round the edge of a thin
+// plate, bridged through the plate from the first start at 110°, laid along both its sides from the
+// lightest at 25°). And where the largest angle is an edge that every triangulation has, area alone
+// decides, and the least area may crease the patch across the hole, which the Delaunay faces leave
+// out (spot 1294 8h, a blob: 168° from every start, 36.5° within them). A new fill is delivered where
+// it turns the normal across the border by at most half as much (kRetriangulatedAngleRatio): a few
+// degrees less on a folded patch, mostly noise in the border's fits, gave fills farther from the
+// surface as often as closer (docs/fill.md, "Triangulated again", "Triangulated within the Delaunay
+// faces").
 constexpr double kRetriangulatedAngleRatio = 0.5;
+
+// A triangulation to fill a folded group from again (retriangulate_if_folded_back), and how the note
+// names it.
+struct Retriangulation {
+  FillOptions options;
+  std::string name;
+};
+
+std::vector<Retriangulation> retriangulations(const FillOptions& options) {
+  const HoleTriangulationOptions& triangulation = options.patch.triangulation;
+  std::vector<Retriangulation> tries;
+  if (triangulation.start_vertices > 1 && triangulation.start_margin > 0) {
+    tries.push_back({options, "the lightest of " + std::to_string(triangulation.start_vertices) + " starts"});
+    tries.back().options.patch.triangulation.start_margin = 0;
+  }
+  if (!triangulation.delaunay_restricted) {
+    tries.push_back({options, "the faces of the loop's Delaunay tetrahedralization"});
+    tries.back().options.patch.triangulation.delaunay_restricted = true;
+  }
+  return tries;
+}
+
 void retriangulate_if_folded_back(const Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                                   const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
                                   GroupPatches& first_patches, const FillOptions& options,
                                   const FillObserver& observer, const std::vector<HoleReport>& unfilled,
                                   std::vector<HoleReport>& reports, ChainOutcome& outcome) {
-  const HoleTriangulationOptions& triangulation = options.patch.triangulation;
-  if (!options.refill_folded_back || triangulation.start_vertices <= 1 || triangulation.start_margin <= 0) return;
-  if (std::none_of(group.begin(), group.end(), [&](int h) { return folds_back(reports[h]); })) return;
-  FillOptions lightest = options;
-  lightest.patch.triangulation.start_margin = 0;
-  GroupPatches patches(mesh, topo, patch_loops, lightest.patch);
-  // The first start is the lightest: the same chains would give the same fill.
-  if (same_triangulations(first_patches, patches)) return;
-  const double folded = largest_border_angle(reports, group);
-  const auto from_lightest = [&] {
-    return fill_from_membrane(mesh, loops, group, patches, lightest, observer, unfilled, reports);
-  };
-  const auto gain = [&](const ChainOutcome&) -> std::string {
-    const double angle = largest_border_angle(reports, group);
-    if (!(angle <= kRetriangulatedAngleRatio * folded)) return "";
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "the fill folds back (it turns the normal across the border by %.1f deg); triangulated again from "
-                  "the lightest of %d starts, whose fill turns it by %.1f deg",
-                  folded * kDegrees, triangulation.start_vertices, angle * kDegrees);
-    return text;
-  };
-  fill_again_where_better(group, unfilled, reports, outcome, from_lightest, gain);
+  if (!options.refill_folded_back) return;
+  for (const Retriangulation& again : retriangulations(options)) {
+    if (std::none_of(group.begin(), group.end(), [&](int h) { return folds_back(reports[h]); })) return;
+    GroupPatches patches(mesh, topo, patch_loops, again.options.patch);
+    // The same triangulation: the same chains would give the same fill.
+    if (same_triangulations(first_patches, patches)) continue;
+    const double folded = largest_border_angle(reports, group);
+    const auto refill = [&] {
+      return fill_from_membrane(mesh, loops, group, patches, again.options, observer, unfilled, reports);
+    };
+    const auto gain = [&](const ChainOutcome&) -> std::string {
+      const double angle = largest_border_angle(reports, group);
+      if (!(angle <= kRetriangulatedAngleRatio * folded)) return "";
+      char text[320];
+      std::snprintf(text, sizeof text,
+                    "the fill folds back (it turns the normal across the border by %.1f deg); triangulated again "
+                    "from %s, whose fill turns it by %.1f deg",
+                    folded * kDegrees, again.name.c_str(), angle * kDegrees);
+      return text;
+    };
+    fill_again_where_better(group, unfilled, reports, outcome, refill, gain);
+  }
 }
 
 // Fills `group` from the membrane and the refined triangulation (fill_from_membrane), triangulated

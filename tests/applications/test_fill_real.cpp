@@ -347,6 +347,74 @@ TEST(RealHoleThinPlate, AFillThatFoldsBackIsTriangulatedAgainFromTheLightestStar
   EXPECT_LT(mean_new_vertex_distance(linear, cut.num_vertices(), truth) / h, 0.1);
 }
 
+// A blob of 467 faces of data/spot.obj grown at random from a face at vertex 1294 (bench_real_holes
+// --cut blob --random 10 --seed 1, 8 h): a 95-edge hole across the muzzle, with an arm down its side.
+// Every triangulation's largest dihedral is the same loop edge's 88.4°, so area alone decides, and
+// the least area creases the patch across the muzzle: every fairing of it crosses the mesh and the
+// patch, unfaired, folds back at 168°, from the first start and from the lightest. Within the faces of
+// the loop's Delaunay tetrahedralization (CGAL's search) the crease is not there, and the G2 fill
+// turns the normal across the border by 36.5° (CGAL 5.5: 28.3°), 0.23 h from the uncut surface
+// (CGAL: 0.49 h).
+constexpr int kSpotBlobFaces[] = {
+    4, 5, 8, 9, 10, 11, 32, 33, 34, 35, 36, 37, 38, 39, 40, 41, 42, 43, 44, 45, 46, 47, 57, 58, 80, 81, 83, 87, 416,
+    417, 418, 419, 420, 421, 422, 423, 424, 425, 426, 427, 428, 429, 430, 431, 514, 516, 517, 520, 521, 522, 523,
+    524, 525, 526, 527, 528, 529, 530, 531, 532, 533, 534, 535, 536, 537, 538, 539, 540, 541, 542, 543, 544, 545,
+    546, 547, 548, 549, 550, 551, 552, 554, 555, 556, 558, 559, 560, 561, 562, 563, 564, 565, 566, 567, 568, 569,
+    570, 571, 572, 573, 574, 575, 692, 693, 694, 695, 696, 697, 698, 699, 700, 701, 702, 703, 704, 705, 706, 707,
+    820, 821, 822, 823, 824, 825, 826, 827, 828, 829, 830, 831, 832, 833, 834, 835, 836, 837, 838, 839, 842, 843,
+    848, 849, 1252, 1253, 1254, 1255, 1256, 1257, 1258, 1259, 1260, 1262, 1263, 1264, 1265, 1266, 1267, 1268, 1270,
+    1271, 1275, 1280, 1281, 1305, 1509, 1992, 1993, 1994, 1995, 1996, 1997, 1998, 1999, 2002, 2005, 2009, 2010, 2011,
+    2020, 2024, 2025, 2026, 2027, 2028, 2029, 2030, 2031, 2036, 2037, 2156, 2157, 2158, 2159, 2160, 2161, 2162, 2163,
+    2164, 2165, 2166, 2167, 2168, 2169, 2170, 2171, 2284, 2285, 2286, 2287, 2288, 2289, 2290, 2291, 2292, 2293, 2294,
+    2295, 2296, 2297, 2298, 2299, 2300, 2301, 2302, 2303, 2306, 2307, 2313, 2716, 2717, 2718, 2719, 2722, 2723, 2728,
+    2729, 2731, 2936, 2937, 2939, 2960, 2961, 2962, 2963, 2964, 2965, 2966, 2967, 2968, 2969, 2970, 2971, 2974, 2975,
+    2984, 2985, 3008, 3009, 3011, 3344, 3345, 3346, 3347, 3349, 3350, 3351, 3352, 3353, 3354, 3355, 3356, 3357, 3358,
+    3359, 3446, 3447, 3448, 3449, 3450, 3451, 3452, 3453, 3454, 3455, 3456, 3457, 3458, 3459, 3460, 3461, 3462, 3463,
+    3464, 3465, 3466, 3467, 3468, 3469, 3470, 3471, 3472, 3473, 3474, 3475, 3476, 3477, 3478, 3479, 3482, 3483, 3486,
+    3487, 3488, 3489, 3490, 3491, 3492, 3493, 3494, 3495, 3496, 3497, 3498, 3499, 3500, 3501, 3502, 3503, 3620, 3621,
+    3622, 3623, 3624, 3625, 3626, 3627, 3628, 3629, 3630, 3631, 3632, 3633, 3634, 3635, 3748, 3749, 3750, 3751, 3752,
+    3753, 3754, 3755, 3756, 3757, 3758, 3759, 3760, 3761, 3762, 3763, 3764, 3765, 3766, 3767, 3769, 3771, 3776, 3779,
+    4180, 4181, 4182, 4183, 4184, 4185, 4186, 4187, 4190, 4191, 4192, 4193, 4194, 4195, 4196, 4197, 4198, 4232, 4233,
+    4401, 4432, 4436, 4812, 4920, 4921, 4922, 4923, 4924, 4925, 4926, 4927, 4930, 4936, 4937, 4952, 4953, 4954, 4955,
+    4956, 4957, 4958, 4959, 4962, 4964, 4965, 4966, 4967, 5084, 5085, 5086, 5087, 5088, 5089, 5090, 5091, 5092, 5093,
+    5094, 5095, 5096, 5097, 5098, 5099, 5212, 5213, 5214, 5215, 5216, 5217, 5218, 5219, 5220, 5221, 5222, 5223, 5224,
+    5225, 5226, 5227, 5228, 5229, 5230, 5231, 5233, 5234, 5243, 5644, 5645, 5646, 5647, 5649, 5650, 5651, 5656, 5657,
+    5658, 5659, 5660, 5704, 5705};
+
+TEST(RealHoleBlob, AFillThatStillFoldsBackIsTriangulatedWithinTheDelaunayFaces) {
+  const Mesh truth = read_mesh(test::data_path("spot.obj"));
+  const double h = test::mean_edge_length(truth);
+  const Mesh cut = test::cut_faces(truth, kSpotBlobFaces);
+  const FilledTwice r = fill_twice(cut, truth);
+  ASSERT_EQ(r.report.holes.size(), 1u);
+  const HoleReport& hole = r.hole();
+  ASSERT_EQ(hole.border_edges, 95);
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_NE(hole.note.find("triangulated again from the faces of the loop's Delaunay tetrahedralization"),
+            std::string::npos)
+      << hole.note;
+  EXPECT_EQ(hole.supported, Continuity::G2);
+  EXPECT_FALSE(hole.linear);
+  EXPECT_FALSE(folds_back(hole));
+  EXPECT_LT(hole.continuity.max_normal_angle, 45 * kDegree);
+
+  // The lightest start's triangulation, filled without triangulating again.
+  FillOptions lightest_only;
+  lightest_only.patch.triangulation.start_margin = 0;
+  lightest_only.refill_folded_back = false;
+  Mesh folded = cut;
+  const HoleReport lightest = fill_holes(folded, lightest_only).holes.front();
+  EXPECT_TRUE(folds_back(lightest));
+  const double folded_distance = mean_new_vertex_distance(folded, cut.num_vertices(), truth) / h;
+  std::printf("[blob] spot 8h: %.1f° and %.3f h within the Delaunay faces (∆³ %.3f h), %.1f° and %.3f h from "
+              "the lightest start\n",
+              hole.continuity.max_normal_angle / kDegree, r.distance, r.floor_distance,
+              lightest.continuity.max_normal_angle / kDegree, folded_distance);
+  EXPECT_LT(r.distance, 0.35);
+  EXPECT_GT(folded_distance, 2 * r.distance);
+  EXPECT_LE(r.distance, r.floor_distance);
+}
+
 // Another 4 h ball cut from the raw scan: within 3 rings of its 37-edge loop, 3 corners are slivers
 // (|cot| above kMaxCotangent, up to 92: a 0.6° corner), and ∆³ = L(M⁻¹L)² carries their weights
 // three times over. Unbounded, the ∆³ floor rose in a ridge 0.90 h off the scan and the delivered
@@ -567,7 +635,9 @@ TEST(RealHoleFoldBack, AFlowThatFoldsBackFromTheMembraneIsTriedFromTheRefinedTri
 // 197-edge loop round a thin part. Its membrane folds against the border (177°), and every fairing
 // started there (the flow, then ∆³, ∆², ∆¹ re-evaluated from it) crosses the handle's far side. The
 // same fairings started from the refined triangulation, without its membrane, do not: the handle's
-// end is closed, G2, where the fill used to leave it open.
+// end is closed, G2, where the fill used to leave it open. That fill still folds back (148°); by
+// default it is triangulated again (AFoldedBiteIsTriangulatedAgainWithinTheDelaunayFaces below), so
+// this test turns that off (FillOptions::refill_folded_back) to follow the chain alone.
 TEST(RealHoleBite, WhereEveryFairingFromTheMembraneCrossesTheMeshTheRefinedTriangulationIsFaired) {
   const Mesh truth = read_mesh(test::data_path("hammer_rawscan.obj"));
   const double h = test::mean_edge_length(truth);
@@ -581,12 +651,14 @@ TEST(RealHoleBite, WhereEveryFairingFromTheMembraneCrossesTheMeshTheRefinedTrian
   ASSERT_EQ(bite->size(), 197u);
   FillOptions options;
   options.holes = {static_cast<int>(bite - loops.begin())};
+  options.refill_folded_back = false;
 
   Mesh filled = cut;
   const FillReport report = fill_holes(filled, options);
   const HoleReport& hole = report.holes[options.holes.front()];
   ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
   EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
+  EXPECT_TRUE(folds_back(hole)) << hole.note;
   EXPECT_NE(hole.note.find("every fairing from the membrane failed"), std::string::npos) << hole.note;
   EXPECT_NE(hole.note.find("faired from the refined triangulation instead"), std::string::npos) << hole.note;
   std::vector<int> new_faces(filled.num_faces() - cut.num_faces());
@@ -621,6 +693,43 @@ TEST(RealHoleBite, WhereEveryFairingFromTheMembraneCrossesTheMeshTheRefinedTrian
               "the ∆³ floor %.3f h\n",
               delivered_label(hole.supported, hole.linear).c_str(), distance, floor_distance);
   EXPECT_LE(distance, 1.05 * floor_distance);
+}
+
+// The same bite with fill's defaults: the fill from the refined triangulation folds back (148°), the
+// lightest start triangulates the loop alike, and the faces of the loop's Delaunay tetrahedralization
+// give a patch that turns the normal across the border by 64°, G2, clear of the mesh. It lies about
+// as far from the scan as the folded one (1.40 h against 1.33 h): the handle's end cap and its join
+// to the head are gone, and no disk predicts them (docs/fill.md, "Triangulated within the Delaunay
+// faces").
+TEST(RealHoleBite, AFoldedBiteIsTriangulatedAgainWithinTheDelaunayFaces) {
+  const Mesh truth = read_mesh(test::data_path("hammer_rawscan.obj"));
+  const double h = test::mean_edge_length(truth);
+  Mesh cut = test::cut_ball(truth, {-0.015947, 0.208411, 3.491899}, 16 * h);
+  cut = test::cut_ball(cut, {0.188546, -0.175465, 2.638325}, 17 * h);
+  const auto loops = boundary_loops(cut.F, build_topology(cut.F, cut.num_vertices()));
+  const auto bite = std::max_element(loops.begin(), loops.end(), [](const auto& a, const auto& b) {
+    return a.size() < b.size();
+  });
+  ASSERT_EQ(bite->size(), 197u);
+  FillOptions options;
+  options.holes = {static_cast<int>(bite - loops.begin())};
+  Mesh filled = cut;
+  const HoleReport hole = fill_holes(filled, options).holes[options.holes.front()];
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
+  EXPECT_NE(hole.note.find("the fill folds back (it turns the normal across the border by 147.7 deg); triangulated "
+                           "again from the faces of the loop's Delaunay tetrahedralization"),
+            std::string::npos)
+      << hole.note;
+  EXPECT_FALSE(folds_back(hole)) << hole.note;
+  EXPECT_LT(hole.continuity.max_normal_angle, 75 * kDegree);
+  std::vector<int> new_faces(filled.num_faces() - cut.num_faces());
+  std::iota(new_faces.begin(), new_faces.end(), cut.num_faces());
+  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+  EXPECT_TRUE(validate(filled).manifold());
+  std::printf("[bite] within the Delaunay faces: %.1f°, %.3f h from the uncut scan\n",
+              hole.continuity.max_normal_angle / kDegree,
+              mean_new_vertex_distance(filled, cut.num_vertices(), truth) / h);
 }
 
 // An 8 h ball round a corner of the hammer scan's head (bench_real_holes' hammer 25395 8h): the loop

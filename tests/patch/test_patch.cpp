@@ -473,7 +473,8 @@ TEST(HoleTriangulation, TheDelaunayRestrictionUsesOnlyFacesOfTheLoopsTetrahedral
       const auto delaunay_face = [&](const Faces& faces, int f) {
         return is_delaunay_face(points, position[faces(f, 0)], position[faces(f, 1)], position[faces(f, 2)]);
       };
-      for (int f = 0; f < t.faces.rows(); ++f) EXPECT_TRUE(delaunay_face(t.faces, f)) << n << " " << seed << " face " << f;
+      for (int f = 0; f < t.faces.rows(); ++f)
+        EXPECT_TRUE(delaunay_face(t.faces, f)) << n << " " << seed << " face " << f;
       // The check can fail: the full search's lightest triangulation often uses other faces.
       for (int f = 0; f < full.faces.rows(); ++f)
         if (!delaunay_face(full.faces, f)) {

@@ -60,6 +60,12 @@ Mesh cut_ball(const Mesh& mesh, const Vec3& centre, double radius) {
   });
 }
 
+Mesh cut_faces(const Mesh& mesh, std::span<const int> faces) {
+  std::vector<char> removed(static_cast<std::size_t>(mesh.num_faces()), 0);
+  for (int f : faces) removed.at(static_cast<std::size_t>(f)) = 1;
+  return keep_faces(mesh, [&](int f) { return !removed[static_cast<std::size_t>(f)]; });
+}
+
 Mesh sphere_hole_with_lone_triangle(int* pinch) {
   Mesh m = cut_ball(icosphere(3), Vec3(0, 0, 1), 0.45);
   const auto loops = boundary_loops(m.F, build_topology(m.F, m.num_vertices()));

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <span>
 
 namespace fairsurf::test {
 
@@ -21,6 +22,10 @@ Mesh cut_ball(const Mesh& mesh, const Eigen::Vector3d& centre, double radius);
 /// through `point` normal to the unit vector `axis`, connected across edges to the vertex nearest
 /// `point` (the vertices left keep their order): the cut of bench_real_holes' blend rows.
 Mesh cut_slab(const Mesh& mesh, const Eigen::Vector3d& point, const Eigen::Vector3d& axis, double half_width);
+
+/// `mesh` without the faces listed in `faces`, the vertices no face uses any more removed (the others
+/// keep their order): an irregular cut that a benchmark drew, replayed.
+Mesh cut_faces(const Mesh& mesh, std::span<const int> faces);
 
 /// A sheet bent into an S, z = 0.5 sin(πx) over [-1, 1]² (12 × 12 squares), with a small hole near
 /// its edge: the rings of the hole and of the sheet's outer border overlap, so fill takes them as

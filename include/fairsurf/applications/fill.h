@@ -99,7 +99,9 @@ struct FillOptions : FairRegionOptions {
   /// back, the group is triangulated again from the lightest of the triangulation's starts
   /// (patch.triangulation.start_margin 0) and filled from there (both chains); that fill is
   /// delivered where it turns the normal by at most half as much (docs/fill.md, "Triangulated
-  /// again").
+  /// again"). Where it still folds back, once more within the faces of each loop's Delaunay
+  /// tetrahedralization (patch.triangulation.delaunay_restricted), under the same rule
+  /// (docs/fill.md, "Triangulated within the Delaunay faces").
   bool refill_folded_back = true;
 };
 
