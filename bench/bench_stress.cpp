@@ -153,8 +153,10 @@ Balls draw_irregular(const ClosedMesh& m, std::uint64_t seed, bool& slit) {
   return {std::move(cut.mesh), std::move(cut.kept), std::move(cut.dropped)};
 }
 
-bool open_at_lone_triangle(const HoleReport& r) {
-  return r.status == HoleStatus::failed && r.reason.find("removes the lone triangle") != std::string::npos;
+// Whether hole `r` of `report` failed at a pinch shared with a loop round a lone triangle.
+bool open_at_lone_triangle(const FillReport& report, const HoleReport& r) {
+  return r.status == HoleStatus::failed && r.pinched_by >= 0 &&
+         report.holes[static_cast<std::size_t>(r.pinched_by)].around_a_face;
 }
 
 // The holes still open after repairing `cut` and filling it again (the trial's holes that a lone
@@ -207,7 +209,7 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, FillTal
                   r.index, r.border_edges, delivered_label(r.supported, r.linear).c_str(),
                   r.continuity.max_normal_angle * 180 / std::numbers::pi, uncut, disks ? "" : ", not disk holes");
     }
-    tally.open_at_lone_triangle += open_at_lone_triangle(r);
+    tally.open_at_lone_triangle += open_at_lone_triangle(report, r);
     if (r.status == HoleStatus::failed)
       std::printf("\n    hole %d (%d edges) left open: %s", r.index, r.border_edges, r.reason.c_str());
     else if (unfaired || refined)
@@ -215,7 +217,8 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, FillTal
                   delivered_label(r.supported, r.linear).c_str(),
                   unfaired ? "the refined triangulation unfaired" : "faired from the refined triangulation");
   }
-  if (std::any_of(report.holes.begin(), report.holes.end(), open_at_lone_triangle)) {
+  if (std::any_of(report.holes.begin(), report.holes.end(),
+                  [&](const HoleReport& r) { return open_at_lone_triangle(report, r); })) {
     const int still_open = open_after_repair(cut);
     tally.open_after_repair += still_open;
     std::printf("\n    repaired and filled again: %d left open", still_open);

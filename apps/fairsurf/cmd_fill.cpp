@@ -104,6 +104,8 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"vertices_added", r.vertices_added},
                    {"faces_added", r.faces_added},
                    {"patch_shared_with", r.patch_shared_with},
+                   {"pinched_by", r.pinched_by},
+                   {"around_a_face", r.around_a_face},
                    {"requested_continuity", to_string(r.requested)},
                    {"supported_continuity", to_string(r.supported)},
                    {"delivered", delivered_label(r.supported, r.linear)},
@@ -129,18 +131,16 @@ nlohmann::json hole_json(const HoleReport& r) {
 }
 
 // Whether the hole failed because its border is pinched at a vertex it shares with a loop that is
-// not filled (fill_holes' reason).
-bool failed_at_pinch(const HoleReport& hole) {
-  return hole.status == HoleStatus::failed && hole.reason.starts_with("non-manifold border:");
-}
+// not filled.
+bool failed_at_pinch(const HoleReport& hole) { return hole.status == HoleStatus::failed && hole.pinched_by >= 0; }
 
 // What the user can do about the failed holes, or "". A lone triangle hanging at a pinch of a
 // hole's border (fill never fills its loop) is what --repair removes. Otherwise, when the longest
 // loop failed (not at a pinch) and is at least three times longer than any other, it is most likely
 // the outer border of an open surface (a scan, a terrain), which is not a hole.
 std::string failure_hint(const FillReport& report, const FillArgs& args) {
-  const bool lone_triangle = std::any_of(report.holes.begin(), report.holes.end(), [](const HoleReport& h) {
-    return failed_at_pinch(h) && h.reason.find("removes the lone triangle") != std::string::npos;
+  const bool lone_triangle = std::any_of(report.holes.begin(), report.holes.end(), [&](const HoleReport& h) {
+    return failed_at_pinch(h) && report.holes[h.pinched_by].around_a_face;
   });
   if (lone_triangle && !args.repair)
     return "; a lone triangle hangs at a pinch of a failed hole's border: --repair splits the vertex and removes it";

@@ -16,10 +16,6 @@
 namespace fairsurf::fill_detail {
 namespace {
 
-// The reason a 3-edge loop around a face is skipped starts with this (select_holes); a pinch it
-// shares names it (unfillable_border).
-constexpr const char* kLoneTriangle = "the loop runs around a lone triangle";
-
 // Border edges at each vertex (#V).
 std::vector<int> border_edge_counts(const Topology& topo) {
   std::vector<int> count(topo.num_vertices, 0);
@@ -41,11 +37,13 @@ std::unordered_map<int, std::vector<int>> holes_at_pinches(const std::vector<std
 // Why the loop cannot be filled, or "" if it can: at a pinch every loop through the vertex must be
 // filled with it, since only their patches together can join the vertex's fans into one
 // (border_pinches.h). The reason says why the other loop is not filled (`reports`, as select_holes
-// left them); a lone triangle hanging at the vertex (debris a scan or a cut leaves) is never filled,
-// and repair is what removes it.
+// left them), and `pinched_by` names it; a lone triangle hanging at the vertex (debris a scan or a
+// cut leaves) is never filled, and repair is what removes it.
 std::string unfillable_border(int hole, const std::vector<std::vector<int>>& loops,
                               const std::unordered_map<int, std::vector<int>>& pinches,
-                              const std::vector<char>& chosen, const std::vector<HoleReport>& reports) {
+                              const std::vector<char>& chosen, const std::vector<HoleReport>& reports,
+                              int& pinched_by) {
+  pinched_by = -1;
   if (loops[hole].size() < 3) return "the loop has fewer than three edges";
   for (int v : loops[hole]) {
     const auto it = pinches.find(v);
@@ -56,7 +54,8 @@ std::string unfillable_border(int hole, const std::vector<std::vector<int>>& loo
                         std::to_string(other) + ", which is not filled";
       const std::string& skipped = reports[other].reason;
       if (!skipped.empty()) why += " (" + skipped + ")";
-      if (skipped.starts_with(kLoneTriangle)) why += "; repair splits the vertex and removes the lone triangle";
+      if (reports[other].around_a_face) why += "; repair splits the vertex and removes the lone triangle";
+      pinched_by = other;
       return why;
     }
   }
@@ -137,7 +136,8 @@ std::vector<int> select_holes(const Vertices& V, const Faces& F, const Topology&
       continue;
     }
     if (around_a_face(F, topo, loops[i])) {
-      reports[i].reason = std::string(kLoneTriangle) + ": filling it would add that face again, reversed";
+      reports[i].around_a_face = true;
+      reports[i].reason = "the loop runs around a lone triangle: filling it would add that face again, reversed";
       continue;
     }
     if (borders_a_flat_piece(V, F, topo, loops[i])) {
@@ -178,11 +178,12 @@ std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topolog
   const auto pinches = holes_at_pinches(loops, border_edges);
   std::vector<int> fillable;
   for (int h : chosen) {
-    const std::string bad = unfillable_border(h, loops, pinches, is_chosen, reports);
+    int pinched_by = -1;
+    const std::string bad = unfillable_border(h, loops, pinches, is_chosen, reports, pinched_by);
     if (bad.empty())
       fillable.push_back(h);
     else
-      reports[h].status = HoleStatus::failed, reports[h].reason = bad;
+      reports[h].status = HoleStatus::failed, reports[h].reason = bad, reports[h].pinched_by = pinched_by;
   }
   return fillable;
 }

@@ -260,6 +260,7 @@ TEST(FillLoneTriangle, ALoopAroundAFaceIsSkippedNotFilledWithTheFaceReversed) {
   ASSERT_EQ(r.holes.size(), 1u);
   EXPECT_EQ(r.holes[0].status, HoleStatus::skipped);
   EXPECT_EQ(r.holes[0].reason, "the loop runs around a lone triangle: filling it would add that face again, reversed");
+  EXPECT_TRUE(r.holes[0].around_a_face);
   EXPECT_EQ(r.filled, 0);
   EXPECT_EQ(r.skipped, 1);
   EXPECT_EQ(m.F, input.F);
@@ -594,6 +595,11 @@ TEST(FillPinches, OneHoleOfAPinchAloneFailsAndTheOtherHoleIsFilled) {
   EXPECT_EQ(failed.status, HoleStatus::failed);
   EXPECT_EQ(failed.reason.rfind("non-manifold border: vertex " + std::to_string(pinch) + " is also on hole ", 0), 0u)
       << failed.reason;
+  ASSERT_GE(failed.pinched_by, 0);
+  EXPECT_EQ(std::count(loops[failed.pinched_by].begin(), loops[failed.pinched_by].end(), pinch), 1);
+  EXPECT_EQ(r.holes[failed.pinched_by].status, HoleStatus::skipped);
+  EXPECT_FALSE(r.holes[failed.pinched_by].around_a_face);
+  EXPECT_EQ(r.holes[elsewhere.front()].pinched_by, -1);
   const ValidationReport v = validate(filled);  // the pinch stays as it was, and nothing else is added
   EXPECT_EQ(v.non_manifold_vertices.count, 1);
   EXPECT_EQ(v.non_manifold_edges.count, 0);
@@ -620,6 +626,9 @@ TEST(FillPinches, AHoleWithALoneTriangleHangingAtItsBorderSaysRepairRemovesIt) {
                              std::to_string(lone->index) + ", which is not filled (" + lone->reason +
                              "); repair splits the vertex and removes the lone triangle")
       << hole.reason;
+  EXPECT_EQ(hole.pinched_by, lone->index);
+  EXPECT_TRUE(lone->around_a_face);
+  EXPECT_FALSE(hole.around_a_face);
   EXPECT_EQ(filled.F, holed.F);
 
   const RepairReport repaired = repair(holed);

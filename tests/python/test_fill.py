@@ -24,6 +24,17 @@ def test_fill_closes_the_hole_like_the_cli(tmp_path, cli, data_dir, hand):
     assert report["holes"][0]["delivered"] == cli_report["holes"][0]["delivered"]
     assert report["holes"][0]["vertices_added"] == len(V2) - len(V)
     assert report["holes"][0]["patch_shared_with"] == cli_report["holes"][0]["patch_shared_with"] == -1
+    assert report["holes"][0]["pinched_by"] == cli_report["holes"][0]["pinched_by"] == -1
+    assert report["holes"][0]["around_a_face"] is cli_report["holes"][0]["around_a_face"] is False
+
+
+def test_a_loop_round_a_lone_triangle_is_skipped_and_says_so():
+    V = np.array([[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]])
+    F = np.array([[0, 1, 2]])
+    V2, F2, report = fairsurf.fill_holes(V, F)
+    hole = report["holes"][0]
+    assert hole["status"] == "skipped" and hole["around_a_face"] is True and hole["pinched_by"] == -1
+    assert np.array_equal(F2, F)
 
 
 def test_selected_holes_only(hand):

@@ -123,6 +123,12 @@ struct HoleReport {
   /// report then has no vertex or face added and repeats that hole's labels, fairing figures and
   /// border measure (which covers both loops). −1 otherwise.
   int patch_shared_with = -1;
+  /// Where the hole failed at a pinch of its border (`reason` "non-manifold border: ..."), the loop
+  /// it shares that vertex with, which is not filled (its own report says why); −1 otherwise.
+  int pinched_by = -1;
+  /// The loop runs around a face of the mesh, a lone triangle with every edge on the border: it is
+  /// skipped, since its fill could only be that face again (repair removes such debris).
+  bool around_a_face = false;
   Continuity requested = Continuity::G2;
   Continuity supported = Continuity::G2;  ///< the continuity the fairing used
   /// The patch is the linear ∆^k solution (k = supported + 1): C(k−1), not G(k−1) — the harmonic
