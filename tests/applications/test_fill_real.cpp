@@ -631,6 +631,32 @@ TEST(RealHoleFoldBack, AFlowThatFoldsBackFromTheMembraneIsTriedFromTheRefinedTri
   EXPECT_LT(distance, floor_distance);
 }
 
+namespace {
+
+// Two balls of 16 h and 17 h cut off the end of data/hammer_rawscan.obj's handle: the cut, its
+// border loops and the largest one's index (the bite round the handle).
+struct HandleBite {
+  Mesh truth, cut;
+  double h = 0;
+  std::vector<std::vector<int>> loops;
+  int hole = -1;
+};
+
+HandleBite hammer_handle_bite() {
+  HandleBite b;
+  b.truth = read_mesh(test::data_path("hammer_rawscan.obj"));
+  b.h = test::mean_edge_length(b.truth);
+  b.cut = test::cut_ball(b.truth, {-0.015947, 0.208411, 3.491899}, 16 * b.h);
+  b.cut = test::cut_ball(b.cut, {0.188546, -0.175465, 2.638325}, 17 * b.h);
+  b.loops = boundary_loops(b.cut.F, build_topology(b.cut.F, b.cut.num_vertices()));
+  const auto largest = std::max_element(b.loops.begin(), b.loops.end(),
+                                        [](const auto& x, const auto& y) { return x.size() < y.size(); });
+  b.hole = static_cast<int>(largest - b.loops.begin());
+  return b;
+}
+
+}  // namespace
+
 // Two balls of 16 h and 17 h cut off the end of the hammer's handle and bite into its side: a
 // 197-edge loop round a thin part. Its membrane folds against the border (177°), and every fairing
 // started there (the flow, then ∆³, ∆², ∆¹ re-evaluated from it) crosses the handle's far side. The
@@ -639,18 +665,14 @@ TEST(RealHoleFoldBack, AFlowThatFoldsBackFromTheMembraneIsTriedFromTheRefinedTri
 // default it is triangulated again (AFoldedBiteIsTriangulatedAgainWithinTheDelaunayFaces below), so
 // this test turns that off (FillOptions::refill_folded_back) to follow the chain alone.
 TEST(RealHoleBite, WhereEveryFairingFromTheMembraneCrossesTheMeshTheRefinedTriangulationIsFaired) {
-  const Mesh truth = read_mesh(test::data_path("hammer_rawscan.obj"));
-  const double h = test::mean_edge_length(truth);
-  Mesh cut = test::cut_ball(truth, {-0.015947, 0.208411, 3.491899}, 16 * h);
-  cut = test::cut_ball(cut, {0.188546, -0.175465, 2.638325}, 17 * h);
-  const Topology topo = build_topology(cut.F, cut.num_vertices());
-  const auto loops = boundary_loops(cut.F, topo);
-  const auto bite = std::max_element(loops.begin(), loops.end(), [](const auto& a, const auto& b) {
-    return a.size() < b.size();
-  });
-  ASSERT_EQ(bite->size(), 197u);
+  const HandleBite b = hammer_handle_bite();
+  ASSERT_EQ(b.loops[b.hole].size(), 197u);
+  const Mesh& truth = b.truth;
+  const Mesh& cut = b.cut;
+  const double h = b.h;
+  const auto& loops = b.loops;
   FillOptions options;
-  options.holes = {static_cast<int>(bite - loops.begin())};
+  options.holes = {b.hole};
   options.refill_folded_back = false;
 
   Mesh filled = cut;
@@ -702,17 +724,13 @@ TEST(RealHoleBite, WhereEveryFairingFromTheMembraneCrossesTheMeshTheRefinedTrian
 // to the head are gone, and no disk predicts them (docs/fill.md, "Triangulated within the Delaunay
 // faces").
 TEST(RealHoleBite, AFoldedBiteIsTriangulatedAgainWithinTheDelaunayFaces) {
-  const Mesh truth = read_mesh(test::data_path("hammer_rawscan.obj"));
-  const double h = test::mean_edge_length(truth);
-  Mesh cut = test::cut_ball(truth, {-0.015947, 0.208411, 3.491899}, 16 * h);
-  cut = test::cut_ball(cut, {0.188546, -0.175465, 2.638325}, 17 * h);
-  const auto loops = boundary_loops(cut.F, build_topology(cut.F, cut.num_vertices()));
-  const auto bite = std::max_element(loops.begin(), loops.end(), [](const auto& a, const auto& b) {
-    return a.size() < b.size();
-  });
-  ASSERT_EQ(bite->size(), 197u);
+  const HandleBite b = hammer_handle_bite();
+  ASSERT_EQ(b.loops[b.hole].size(), 197u);
+  const Mesh& truth = b.truth;
+  const Mesh& cut = b.cut;
+  const double h = b.h;
   FillOptions options;
-  options.holes = {static_cast<int>(bite - loops.begin())};
+  options.holes = {b.hole};
   Mesh filled = cut;
   const HoleReport hole = fill_holes(filled, options).holes[options.holes.front()];
   ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
