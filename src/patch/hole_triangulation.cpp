@@ -44,12 +44,18 @@ double dihedral(const Vec3& n1, const Vec3& n2) {
   return std::atan2(n1.cross(n2).norm(), n1.dot(n2));
 }
 
+// Liepa's weight, preceded under the Delaunay restriction by the count of triangles that are not
+// faces of the loop's tetrahedralization (`outside`, 0 without the restriction).
 struct Weight {
   double angle = 0.0;
   double area = 0.0;
+  int outside = 0;
 };
 
+constexpr int kUnreached = std::numeric_limits<int>::max();
+
 bool lighter(const Weight& a, const Weight& b) {
+  if (a.outside != b.outside) return a.outside < b.outside;
   if (a.angle < b.angle - kAngleTie) return true;
   if (a.angle > b.angle + kAngleTie) return false;
   return a.area < b.area;
@@ -129,8 +135,9 @@ struct Polygon {
 
 class Triangulator {
  public:
-  // `allowed`, where not null, holds the only triangles the programme may use (the Delaunay
-  // restriction, which delaunay_restricted applies only to polygons the programme solves whole).
+  // `allowed`, where not null, holds the faces of the loop's tetrahedralization: the programme
+  // takes as few other triangles as it can (the Delaunay restriction, which delaunay_restricted
+  // applies only to polygons the programme solves whole).
   Triangulator(const Vertices& V, const Topology& topo, const HoleTriangulationOptions& options,
                const Forbidden& forbidden, const std::set<TriangleKey>* allowed)
       : V_(V), topo_(topo), options_(options), forbidden_(forbidden), allowed_(allowed) {}
@@ -169,11 +176,9 @@ class Triangulator {
     return u != v && !is_mesh_edge(topo_, u, v) && !made_.contains(key) && !forbidden_.diagonals.contains(key);
   }
 
-  // A triangle that crossed the mesh in an earlier round is refused, as is, under the Delaunay
-  // restriction, one that is no face of the loop's tetrahedralization.
-  bool admissible_triangle(int a, int b, int c) const {
-    const TriangleKey key = triangle_key(a, b, c);
-    return !forbidden_.triangles.contains(key) && (allowed_ == nullptr || allowed_->contains(key));
+  // Under the Delaunay restriction, whether a triangle is no face of the loop's tetrahedralization.
+  bool outside_restriction(int a, int b, int c) const {
+    return allowed_ != nullptr && !allowed_->contains(triangle_key(a, b, c));
   }
 
   // Positions s < t of the first vertex the polygon passes twice; (-1, -1) if none.
@@ -257,16 +262,21 @@ class Triangulator {
                                             [](const Vec3& n) { return n.isZero(); });
     const int m = poly.size(), starts = unweighed_side ? 1 : std::min(options_.start_vertices, m);
     std::vector<Eigen::Vector3i> best;
-    Weight best_weight{kInfinity, kInfinity};
+    Weight best_weight{kInfinity, kInfinity, kUnreached};
     for (int q = 0; q < starts; ++q) {
       const Polygon rotated = rotate(poly, static_cast<int>(static_cast<long long>(q) * m / starts));
       // A later start can only replace the best below this largest angle: candidates above it are
-      // skipped, which prunes most of its programme.
-      const double bound = q == 0 ? kInfinity : best_weight.angle - options_.start_margin + kAngleTie;
+      // skipped, which prunes most of its programme. Not under the Delaunay restriction, where a
+      // start with fewer triangles outside it wins whatever its angle.
+      const double bound = q == 0 || allowed_ != nullptr ? kInfinity
+                                                         : best_weight.angle - options_.start_margin + kAngleTie;
       std::vector<Eigen::Vector3i> faces = solve_from_start(rotated, bound);
       if (faces.empty()) continue;  // nothing below the bound
       const TriangulationWeight w = piece_weight(rotated, faces);
-      const Weight handicapped{w.max_dihedral_angle + (q > 0 ? options_.start_margin : 0.0), w.area};
+      const int outside = static_cast<int>(std::count_if(faces.begin(), faces.end(), [&](const Eigen::Vector3i& f) {
+        return outside_restriction(f[0], f[1], f[2]);
+      }));
+      const Weight handicapped{w.max_dihedral_angle + (q > 0 ? options_.start_margin : 0.0), w.area, outside};
       if (best.empty() || lighter(handicapped, best_weight)) best = std::move(faces), best_weight = handicapped;
     }
     for (const Eigen::Vector3i& f : best) {
@@ -317,23 +327,28 @@ class Triangulator {
       for (int i = 0; i + span < m; ++i) {
         const int k = i + span;
         const bool top = i == 0 && k == m - 1;
-        Weight best{kInfinity, kInfinity};
+        Weight best{kInfinity, kInfinity, kUnreached};
         if (top || admissible_diagonal(vertex(i), vertex(k)))
           for (int j = i + 1; j < k; ++j) {
-            const bool restricted = !forbidden_.triangles.empty() || allowed_ != nullptr;
-            if (restricted && !admissible_triangle(vertex(i), vertex(j), vertex(k))) continue;
+            if (!forbidden_.triangles.empty() &&
+                forbidden_.triangles.contains(triangle_key(vertex(i), vertex(j), vertex(k))))
+              continue;
             const Weight& left = weight[at(i, j)];
             const Weight& right = weight[at(j, k)];
+            if (left.outside == kUnreached || right.outside == kUnreached) continue;
+            const int outside = left.outside + right.outside + outside_restriction(vertex(i), vertex(j), vertex(k));
+            if (outside > best.outside) continue;
             // The sub-polygons' angles bound this candidate's from below: skip hopeless ones
             // before any trigonometry (this prunes most candidates).
-            if (std::max(left.angle, right.angle) > std::min(best.angle + kAngleTie, bound)) continue;
+            const double below = std::max(left.angle, right.angle);
+            if (below > bound || (outside == best.outside && below > best.angle + kAngleTie)) continue;
             const Vec3 n = normal(i, j, k);
             double angle = std::max({left.angle, right.angle, dihedral(n, inner_normal(i, j)),
                                      dihedral(n, inner_normal(j, k))});
             if (top && !poly.side_normals[m - 1].isZero())
               angle = std::max(angle, dihedral(n, poly.side_normals[m - 1]));
             if (angle > bound) continue;
-            const Weight w{angle, left.area + right.area + 0.5 * n.norm()};
+            const Weight w{angle, left.area + right.area + 0.5 * n.norm(), outside};
             if (lighter(w, best)) best = w, apex[at(i, k)] = j;
           }
         weight[at(i, k)] = best;
@@ -419,9 +434,9 @@ HoleTriangulation triangulate_avoiding_crossings(const Vertices& V, const Faces&
   return result;
 }
 
-// The programme restricted to the faces of the loop's Delaunay tetrahedralization (CGAL's search).
-// Not restricted (`delaunay` false, no faces) where the loop passes a vertex twice, is too large
-// for the programme undivided, spans no volume, or admits no triangulation within the restriction.
+// The programme restricted to the faces of the loop's Delaunay tetrahedralization (CGAL's search),
+// taking as few other triangles as it must. Not restricted (`delaunay` false, no faces) where the
+// loop passes a vertex twice, is too large for the programme undivided, or spans no volume.
 HoleTriangulation delaunay_restricted(const Vertices& V, const Faces& F, const Topology& topo, const Polygon& poly,
                                       const HoleTriangulationOptions& options) {
   const std::set<int> distinct(poly.vertices.begin(), poly.vertices.end());
@@ -432,6 +447,10 @@ HoleTriangulation delaunay_restricted(const Vertices& V, const Faces& F, const T
   try {
     HoleTriangulation result = triangulate_avoiding_crossings(V, F, topo, poly, options, &allowed);
     result.delaunay = true;
+    for (Eigen::Index f = 0; f < result.faces.rows(); ++f) {
+      const TriangleKey key = triangle_key(result.faces(f, 0), result.faces(f, 1), result.faces(f, 2));
+      result.outside_delaunay += !allowed.contains(key);
+    }
     return result;
   } catch (const InvalidMeshError&) {
     return {};

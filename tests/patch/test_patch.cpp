@@ -188,9 +188,8 @@ std::vector<int> inner_loop(const Mesh& m) {
   return {};
 }
 
-// Brute force: the lightest of all triangulations of the polygon `loop` (Liepa's order), weighed
-// directly on each complete triangulation.
-TriangulationWeight brute_force_minimum(const Mesh& m, const std::vector<int>& loop) {
+// Every triangulation of the polygon `loop`, each triangle as (v_k, v_j, v_i) (Liepa's order).
+std::vector<std::vector<Eigen::Vector3i>> all_triangulations(const std::vector<int>& loop) {
   const int n = static_cast<int>(loop.size());
   std::map<std::pair<int, int>, std::vector<std::vector<Eigen::Vector3i>>> memo;
   std::function<const std::vector<std::vector<Eigen::Vector3i>>&(int, int)> all = [&](int i, int k)
@@ -210,8 +209,14 @@ TriangulationWeight brute_force_minimum(const Mesh& m, const std::vector<int>& l
         }
     return out;
   };
+  return all(0, n - 1);
+}
+
+// Brute force: the lightest of all triangulations of the polygon `loop` (Liepa's order), weighed
+// directly on each complete triangulation.
+TriangulationWeight brute_force_minimum(const Mesh& m, const std::vector<int>& loop) {
   TriangulationWeight best{std::numbers::pi * 10, 0.0};
-  for (const auto& t : all(0, n - 1)) {
+  for (const auto& t : all_triangulations(loop)) {
     Faces faces(static_cast<int>(t.size()), 3);
     for (int f = 0; f < faces.rows(); ++f) faces.row(f) = t[f].transpose();
     const TriangulationWeight w = triangulation_weight(m.V, m.F, faces);
@@ -422,6 +427,8 @@ TEST(HoleTriangulation, ReSolvesUntilNoTriangleCrossesTheMesh) {
   EXPECT_EQ(still_open.size(), 3u);
 }
 
+namespace {
+
 // Whether the triangle (a, b, c) of `points` is a face of their Delaunay tetrahedralization, by
 // brute force: some sphere through its corners holds none of the other points. The spheres through
 // a, b, c are centred at cc + t·n (cc the circumcentre, n the unit normal), of radius² R² + t², and
@@ -446,9 +453,11 @@ bool is_delaunay_face(const std::vector<Vec3>& points, int a, int b, int c) {
   return lo <= hi;
 }
 
-// HoleTriangulationOptions::delaunay_restricted: every triangle then is a face of the loop's 3D
-// Delaunay tetrahedralization (checked by brute force above), and the search falls back to every
-// triangle where that admits none, so a triangulation is always found.
+}  // namespace
+
+// HoleTriangulationOptions::delaunay_restricted: on these loops a triangulation lies within the faces
+// of the loop's 3D Delaunay tetrahedralization, and every triangle is one (checked by brute force
+// above).
 TEST(HoleTriangulation, TheDelaunayRestrictionUsesOnlyFacesOfTheLoopsTetrahedralization) {
   int restricted = 0, differ = 0, full_outside = 0;
   for (const int n : {8, 12, 16, 24})
@@ -466,6 +475,7 @@ TEST(HoleTriangulation, TheDelaunayRestrictionUsesOnlyFacesOfTheLoopsTetrahedral
       expect_closed_manifold(filled, n);  // the annulus's outer circle
       if (!t.delaunay) continue;
       ++restricted;
+      EXPECT_EQ(t.outside_delaunay, 0) << n << " " << seed;
       differ += t.faces != full.faces;
       std::vector<Vec3> points;
       std::map<int, int> position;
@@ -488,6 +498,38 @@ TEST(HoleTriangulation, TheDelaunayRestrictionUsesOnlyFacesOfTheLoopsTetrahedral
   std::printf("Delaunay-restricted on %d of 24 loops, a triangulation other than the full search's on %d, "
               "whose lightest triangulation has a face outside the tetrahedralization on %d\n",
               restricted, differ, full_outside);
+}
+
+// Where no triangulation of a loop lies within the faces of its tetrahedralization, the restricted
+// search takes as few other triangles as any triangulation must: checked against every triangulation
+// of small loops, so wavy that on a few of them no triangulation lies within those faces.
+TEST(HoleTriangulation, TheDelaunayRestrictionTakesAsFewOtherTrianglesAsItMust) {
+  int restricted = 0, short_of = 0;
+  for (const int n : {8, 9, 10, 11})
+    for (unsigned seed = 1; seed <= 40; ++seed) {
+      const Mesh m = irregular_annulus(n, seed, 4.0);
+      const auto loop = inner_loop(m);
+      const Topology topo = build_topology(m.F, m.num_vertices());
+      const HoleTriangulation t = triangulate_hole(m.V, m.F, topo, loop, {.delaunay_restricted = true});
+      if (!t.delaunay) continue;
+      ++restricted;
+      std::vector<Vec3> points;
+      std::map<int, int> position;
+      for (int v : loop) position[v] = static_cast<int>(points.size()), points.push_back(m.V.row(v).transpose());
+      int fewest = std::numeric_limits<int>::max();
+      for (const auto& candidate : all_triangulations(loop)) {
+        const int outside = static_cast<int>(std::count_if(candidate.begin(), candidate.end(), [&](const auto& f) {
+          return !is_delaunay_face(points, position[f[0]], position[f[1]], position[f[2]]);
+        }));
+        fewest = std::min(fewest, outside);
+      }
+      EXPECT_EQ(t.outside_delaunay, fewest) << n << " " << seed;
+      short_of += fewest > 0;
+    }
+  EXPECT_GT(restricted, 120);
+  EXPECT_GT(short_of, 0);
+  std::printf("Delaunay-restricted on %d of 160 loops; on %d no triangulation lies within the faces\n", restricted,
+              short_of);
 }
 
 // A flat loop spans no volume: no tetrahedralization restricts the search, which then is the full one.

@@ -76,10 +76,10 @@ struct HoleTriangulationOptions {
   /// crossing triangles forbidden, at most this many times; the one with the fewest crossings is
   /// kept. 0: no check. Rounds after the first are solved from the loop's first vertex only.
   int max_crossing_rounds = 100;
-  /// The programme considers only the triangles that are faces of the 3D Delaunay
-  /// tetrahedralization of the loop's vertices (qhull), as CGAL's hole filling does by default
-  /// (docs/patch.md, "Delaunay restriction"). The full search still runs where the restriction
-  /// admits no triangulation, the loop passes a vertex twice or exceeds
+  /// The programme takes the triangles that are faces of the 3D Delaunay tetrahedralization of the
+  /// loop's vertices (qhull), as CGAL's hole filling does by default, and as few others as it must:
+  /// its weight is the count of those others, then Liepa's (docs/patch.md, "Delaunay restriction").
+  /// The full search runs instead where the loop passes a vertex twice or exceeds
   /// `max_dynamic_programming_size`, or its vertices span no volume (HoleTriangulation::delaunay).
   bool delaunay_restricted = false;
 };
@@ -92,6 +92,7 @@ struct HoleTriangulation {
   bool divided = false;             ///< the loop was cut into pieces (above the threshold)
   int crossings = 0;                ///< crossings left with the mesh or each other (0 when not checked)
   bool delaunay = false;            ///< the faces come from the Delaunay-restricted search
+  int outside_delaunay = 0;         ///< of them, faces that are not faces of the tetrahedralization
 };
 
 /// Triangulates the hole bounded by `loop` (vertex indices of `V`, surface on the left, as
