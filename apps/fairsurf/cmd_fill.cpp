@@ -240,8 +240,10 @@ void setup_fill(CLI::App& app) {
               "more with its trial states relaxed tangentially where it crossed, and once more rejecting each trial "
               "that crosses the mesh, then the linear ∆³, ∆², ∆ solutions, then all that again from the refined "
               "triangulation instead of its membrane, then that triangulation unfaired, C0 (linear); each hole's "
-              "line says which and why. A hole is left open only where even that crosses the mesh, or where its "
-              "patch has a zero-area triangle (a loop through both copies of a vertex that repair split). A fill "
+              "line says which and why. Where even that crosses the mesh, the loop is triangulated again within the "
+              "faces of its Delaunay tetrahedralization and filled from there; a hole is left open only where that "
+              "fails too, or where its patch has a zero-area triangle (a loop through both copies of a vertex that "
+              "repair split). A fill "
               "that folds back (turns the normal across its border by more than 90°) is made again from the refined "
               "triangulation, then from the lightest of the triangulation's starts, then within the faces of the "
               "loop's Delaunay tetrahedralization, and written with a warning if it still folds back (docs/fill.md).");

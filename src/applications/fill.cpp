@@ -698,8 +698,53 @@ void retriangulate_if_folded_back(const Mesh& mesh, const Topology& topo, const 
   }
 }
 
+// Where the group's fill failed (every patch of the fallback chain crossed the mesh or threw), it is
+// made once more from the faces of each loop's Delaunay tetrahedralization (HoleTriangulationOptions::
+// delaunay_restricted, CGAL's search). Round a thin tongue of the mesh reaching into a hole, the
+// lightest triangulation from every start can cross the mesh where the Delaunay faces do not
+// (bench_real_holes --cut blob --random 10 --seed 2, spot 1828 8h with noise; docs/fill.md,
+// "Triangulated within the Delaunay faces"). A fill that folds back is not taken: from those faces a
+// horn tip cut off by a ball (a part of its own, whose opening blend joins to the head's) was capped
+// folded back at 172°, where the failure's reason says to blend.
+void retriangulate_if_failed(const Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                             const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
+                             GroupPatches& first_patches, const FillOptions& options, const FillObserver& observer,
+                             const std::vector<HoleReport>& unfilled, std::vector<HoleReport>& reports,
+                             ChainOutcome& outcome) {
+  if (!options.fallback_on_failure || options.patch.triangulation.delaunay_restricted) return;
+  FillOptions delaunay = options;
+  delaunay.patch.triangulation.delaunay_restricted = true;
+  GroupPatches patches(mesh, topo, patch_loops, delaunay.patch);
+  if (same_triangulations(first_patches, patches)) return;
+  const std::string failure = reports[group.front()].reason;
+  std::string failed_again;
+  const auto refill = [&] {
+    ChainOutcome retried = fill_from_membrane(mesh, loops, group, patches, delaunay, observer, unfilled, reports);
+    failed_again = reports[group.front()].reason;
+    return retried;
+  };
+  const auto gain = [&](const ChainOutcome&) -> std::string {
+    if (std::any_of(group.begin(), group.end(), [&](int h) { return folds_back(reports[h]); })) {
+      char text[160];
+      std::snprintf(text, sizeof text, "its fill folds back: it turns the normal across the border by %.1f deg",
+                    largest_border_angle(reports, group) * kDegrees);
+      failed_again = text;
+      return "";
+    }
+    return "the fill failed (" + failure + "); triangulated again from the faces of the loop's Delaunay "
+           "tetrahedralization";
+  };
+  fill_again_where_better(group, unfilled, reports, outcome, refill, gain);
+  if (outcome.reason.empty()) return;
+  for (int h : group)
+    if (reports[h].status == HoleStatus::failed)
+      reports[h].reason += "; triangulated again within the faces of the loop's Delaunay tetrahedralization, it "
+                           "failed too (" + failed_again + ")";
+}
+
 // Fills `group` from the membrane and the refined triangulation (fill_from_membrane), triangulated
-// again where that fill folds back (retriangulate_if_folded_back), and commits the fill.
+// again where that fill folds back (retriangulate_if_folded_back) or fails (retriangulate_if_failed),
+// and commits the fill.
 void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                              const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
                              const FillOptions& options, const FillObserver& observer,
@@ -712,6 +757,9 @@ void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector
   if (outcome.reason.empty())
     retriangulate_if_folded_back(mesh, current, loops, group, patch_loops, patches, options, observer, unfilled,
                                  reports, outcome);
+  else
+    retriangulate_if_failed(mesh, current, loops, group, patch_loops, patches, options, observer, unfilled, reports,
+                            outcome);
   if (outcome.reason.empty()) commit(outcome.filled, mesh, filled);
 }
 

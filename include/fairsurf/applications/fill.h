@@ -101,7 +101,8 @@ struct FillOptions : FairRegionOptions {
   /// delivered where it turns the normal by at most half as much (docs/fill.md, "Triangulated
   /// again"). Where it still folds back, once more within the faces of each loop's Delaunay
   /// tetrahedralization (patch.triangulation.delaunay_restricted), under the same rule
-  /// (docs/fill.md, "Triangulated within the Delaunay faces").
+  /// (docs/fill.md, "Triangulated within the Delaunay faces"). With fallback_on_failure, a group
+  /// whose fill failed is also filled once more from those faces.
   bool refill_folded_back = true;
 };
 
