@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <exception>
 #include <limits>
+#include <set>
 #include <numbers>
 #include <numeric>
 #include <optional>
@@ -655,14 +656,26 @@ struct Retriangulation {
   std::string name;
 };
 
-std::vector<Retriangulation> retriangulations(const FillOptions& options) {
+// Whether the Delaunay restriction applies to some loop of `patch_loops` (delaunay_restricted leaves
+// a loop through a vertex twice, or one too long for the programme, to the full search): where it
+// applies to none, a triangulation within the faces would be the first one again, and building its
+// patch only to find that out costs a whole patch (a scan's outer border: thousands of edges).
+bool delaunay_applies(const std::vector<std::vector<int>>& patch_loops, const HoleTriangulationOptions& options) {
+  return std::any_of(patch_loops.begin(), patch_loops.end(), [&](const std::vector<int>& loop) {
+    const std::set<int> distinct(loop.begin(), loop.end());
+    return distinct.size() == loop.size() && static_cast<int>(loop.size()) <= options.max_dynamic_programming_size;
+  });
+}
+
+std::vector<Retriangulation> retriangulations(const FillOptions& options,
+                                              const std::vector<std::vector<int>>& patch_loops) {
   const HoleTriangulationOptions& triangulation = options.patch.triangulation;
   std::vector<Retriangulation> tries;
   if (triangulation.start_vertices > 1 && triangulation.start_margin > 0) {
     tries.push_back({options, "the lightest of " + std::to_string(triangulation.start_vertices) + " starts"});
     tries.back().options.patch.triangulation.start_margin = 0;
   }
-  if (!triangulation.delaunay_restricted) {
+  if (!triangulation.delaunay_restricted && delaunay_applies(patch_loops, triangulation)) {
     tries.push_back({options, "the faces of the loop's Delaunay tetrahedralization"});
     tries.back().options.patch.triangulation.delaunay_restricted = true;
   }
@@ -675,7 +688,7 @@ void retriangulate_if_folded_back(const Mesh& mesh, const Topology& topo, const 
                                   const FillObserver& observer, const std::vector<HoleReport>& unfilled,
                                   std::vector<HoleReport>& reports, ChainOutcome& outcome) {
   if (!options.refill_folded_back) return;
-  for (const Retriangulation& again : retriangulations(options)) {
+  for (const Retriangulation& again : retriangulations(options, patch_loops)) {
     if (std::none_of(group.begin(), group.end(), [&](int h) { return folds_back(reports[h]); })) return;
     GroupPatches patches(mesh, topo, patch_loops, again.options.patch);
     // The same triangulation: the same chains would give the same fill.
@@ -711,7 +724,9 @@ void retriangulate_if_failed(const Mesh& mesh, const Topology& topo, const std::
                              GroupPatches& first_patches, const FillOptions& options, const FillObserver& observer,
                              const std::vector<HoleReport>& unfilled, std::vector<HoleReport>& reports,
                              ChainOutcome& outcome) {
-  if (!options.fallback_on_failure || options.patch.triangulation.delaunay_restricted) return;
+  if (!options.fallback_on_failure || options.patch.triangulation.delaunay_restricted ||
+      !delaunay_applies(patch_loops, options.patch.triangulation))
+    return;
   FillOptions delaunay = options;
   delaunay.patch.triangulation.delaunay_restricted = true;
   GroupPatches patches(mesh, topo, patch_loops, delaunay.patch);
