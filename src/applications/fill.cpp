@@ -21,7 +21,6 @@
 #include <cstdio>
 #include <exception>
 #include <limits>
-#include <set>
 #include <numbers>
 #include <numeric>
 #include <optional>
@@ -656,15 +655,13 @@ struct Retriangulation {
   std::string name;
 };
 
-// Whether the Delaunay restriction applies to some loop of `patch_loops` (delaunay_restricted leaves
-// a loop through a vertex twice, or one too long for the programme, to the full search): where it
-// applies to none, a triangulation within the faces would be the first one again, and building its
-// patch only to find that out costs a whole patch (a scan's outer border: thousands of edges).
+// Whether the Delaunay restriction applies to some loop of `patch_loops`
+// (delaunay_restriction_applies): where it applies to none, a triangulation within the faces would
+// be the first one again, and building its patch only to find that out costs a whole patch (a
+// scan's outer border: thousands of edges).
 bool delaunay_applies(const std::vector<std::vector<int>>& patch_loops, const HoleTriangulationOptions& options) {
-  return std::any_of(patch_loops.begin(), patch_loops.end(), [&](const std::vector<int>& loop) {
-    const std::set<int> distinct(loop.begin(), loop.end());
-    return distinct.size() == loop.size() && static_cast<int>(loop.size()) <= options.max_dynamic_programming_size;
-  });
+  return std::any_of(patch_loops.begin(), patch_loops.end(),
+                     [&](const std::vector<int>& loop) { return delaunay_restriction_applies(loop, options); });
 }
 
 std::vector<Retriangulation> retriangulations(const FillOptions& options,

@@ -439,9 +439,7 @@ HoleTriangulation triangulate_avoiding_crossings(const Vertices& V, const Faces&
 // loop passes a vertex twice, is too large for the programme undivided, or spans no volume.
 HoleTriangulation delaunay_restricted(const Vertices& V, const Faces& F, const Topology& topo, const Polygon& poly,
                                       const HoleTriangulationOptions& options) {
-  const std::set<int> distinct(poly.vertices.begin(), poly.vertices.end());
-  if (static_cast<int>(distinct.size()) != poly.size() || poly.size() > options.max_dynamic_programming_size)
-    return {};
+  if (!delaunay_restriction_applies(poly.vertices, options)) return {};
   const std::set<TriangleKey> allowed = detail::delaunay_triangles(V, poly.vertices);
   if (allowed.empty()) return {};
   try {
@@ -493,6 +491,11 @@ HoleTriangulation triangulate_hole(const Vertices& V, const Faces& F, const Topo
   result.max_dihedral_angle = w.max_dihedral_angle;
   result.area = w.area;
   return result;
+}
+
+bool delaunay_restriction_applies(std::span<const int> loop, const HoleTriangulationOptions& options) {
+  const std::set<int> distinct(loop.begin(), loop.end());
+  return distinct.size() == loop.size() && static_cast<int>(loop.size()) <= options.max_dynamic_programming_size;
 }
 
 TriangulationWeight triangulation_weight(const Vertices& V, const Faces& F, const Faces& faces) {

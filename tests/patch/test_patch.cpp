@@ -532,6 +532,16 @@ TEST(HoleTriangulation, TheDelaunayRestrictionTakesAsFewOtherTrianglesAsItMust) 
               short_of);
 }
 
+// Which loops the restriction can apply to, before any tetrahedralization: not one through a vertex
+// twice, nor one longer than the programme solves whole.
+TEST(HoleTriangulation, TheDelaunayRestrictionAppliesToSimpleLoopsTheProgrammeSolvesWhole) {
+  const std::vector<int> simple{0, 1, 2, 3, 4}, pinched{0, 1, 2, 0, 3, 4};
+  EXPECT_TRUE(delaunay_restriction_applies(simple, {}));
+  EXPECT_FALSE(delaunay_restriction_applies(pinched, {}));
+  EXPECT_TRUE(delaunay_restriction_applies(simple, {.max_dynamic_programming_size = 5}));
+  EXPECT_FALSE(delaunay_restriction_applies(simple, {.max_dynamic_programming_size = 4}));
+}
+
 // A flat loop spans no volume: no tetrahedralization restricts the search, which then is the full one.
 TEST(HoleTriangulation, AFlatLoopIsTriangulatedByTheFullSearch) {
   const Mesh grid = test::regular_grid(12, 12);

@@ -104,6 +104,12 @@ HoleTriangulation triangulate_hole(const Vertices& V, const Faces& F, const Topo
                                    std::span<const int> loop,
                                    const HoleTriangulationOptions& options = {});
 
+/// Whether HoleTriangulationOptions::delaunay_restricted can restrict the search for `loop`: not
+/// where the loop passes a vertex twice or has more than `max_dynamic_programming_size` edges (the
+/// full search runs then, as it does where the loop's vertices span no volume, which only the
+/// tetrahedralization tells).
+bool delaunay_restriction_applies(std::span<const int> loop, const HoleTriangulationOptions& options);
+
 /// Liepa's weight of the triangles `faces` added to the mesh (V, F): the largest dihedral angle
 /// over the edges that the new faces share with each other or with the mesh faces, and the total
 /// area of `faces`. Faces of the mesh that share no edge with `faces` do not count.
