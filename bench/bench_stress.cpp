@@ -153,12 +153,6 @@ Balls draw_irregular(const ClosedMesh& m, std::uint64_t seed, bool& slit) {
   return {std::move(cut.mesh), std::move(cut.kept), std::move(cut.dropped)};
 }
 
-// Whether hole `r` of `report` failed at a pinch shared with a loop round a lone triangle.
-bool open_at_lone_triangle(const FillReport& report, const HoleReport& r) {
-  return r.status == HoleStatus::failed && r.pinched_by >= 0 &&
-         report.holes[static_cast<std::size_t>(r.pinched_by)].around_a_face;
-}
-
 // The holes still open after repairing `cut` and filling it again (the trial's holes that a lone
 // triangle kept open: does repair let them be filled?).
 int open_after_repair(Mesh cut) {

@@ -139,9 +139,8 @@ bool failed_at_pinch(const HoleReport& hole) { return hole.status == HoleStatus:
 // loop failed (not at a pinch) and is at least three times longer than any other, it is most likely
 // the outer border of an open surface (a scan, a terrain), which is not a hole.
 std::string failure_hint(const FillReport& report, const FillArgs& args) {
-  const bool lone_triangle = std::any_of(report.holes.begin(), report.holes.end(), [&](const HoleReport& h) {
-    return failed_at_pinch(h) && report.holes[h.pinched_by].around_a_face;
-  });
+  const bool lone_triangle = std::any_of(report.holes.begin(), report.holes.end(),
+                                         [&](const HoleReport& h) { return open_at_lone_triangle(report, h); });
   if (lone_triangle && !args.repair)
     return "; a lone triangle hangs at a pinch of a failed hole's border: --repair splits the vertex and removes it";
   if (args.skip_largest || report.holes.size() < 2) return "";

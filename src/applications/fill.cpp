@@ -537,6 +537,11 @@ double largest_border_angle(const std::vector<HoleReport>& reports, const std::v
   return angle;
 }
 
+// Whether the fill of some hole of the group folds back (folds_back).
+bool group_folds_back(const std::vector<HoleReport>& reports, const std::vector<int>& group) {
+  return std::any_of(group.begin(), group.end(), [&](int h) { return folds_back(reports[h]); });
+}
+
 // Fills `group` again with `again` (which returns the chain's outcome, its reports in `reports`),
 // from the group's reports before any fill (`unfilled`), and keeps that fill in place of `outcome`
 // where `gain` (given the new outcome) says why it is better: that reason then leads each report's
@@ -576,7 +581,7 @@ void refill_if_folded_back(const Mesh& mesh, const std::vector<std::vector<int>>
   const auto any = [&](auto&& predicate) {
     return std::any_of(group.begin(), group.end(), [&](int h) { return predicate(reports[h]); });
   };
-  const bool fill_folded = any([](const HoleReport& r) { return folds_back(r); });
+  const bool fill_folded = group_folds_back(reports, group);
   if (!fill_folded && !any([](const HoleReport& r) { return r.flow_folded_back; })) return;
   const double folded = largest_border_angle(reports, group);
   const auto from_refined = [&] {
@@ -686,7 +691,7 @@ void retriangulate_if_folded_back(const Mesh& mesh, const Topology& topo, const 
                                   std::vector<HoleReport>& reports, ChainOutcome& outcome) {
   if (!options.refill_folded_back) return;
   for (const Retriangulation& again : retriangulations(options, patch_loops)) {
-    if (std::none_of(group.begin(), group.end(), [&](int h) { return folds_back(reports[h]); })) return;
+    if (!group_folds_back(reports, group)) return;
     GroupPatches patches(mesh, topo, patch_loops, again.options.patch);
     // The same triangulation: the same chains would give the same fill.
     if (same_triangulations(first_patches, patches)) continue;
@@ -736,7 +741,7 @@ void retriangulate_if_failed(const Mesh& mesh, const Topology& topo, const std::
     return retried;
   };
   const auto gain = [&](const ChainOutcome&) -> std::string {
-    if (std::any_of(group.begin(), group.end(), [&](int h) { return folds_back(reports[h]); })) {
+    if (group_folds_back(reports, group)) {
       char text[160];
       std::snprintf(text, sizeof text, "its fill folds back: it turns the normal across the border by %.1f deg",
                     largest_border_angle(reports, group) * kDegrees);
@@ -834,6 +839,11 @@ FillOptions::FillOptions() : FairRegionOptions(harmonic_started()) {
 
 bool folds_back(const HoleReport& hole) {
   return hole.status == HoleStatus::filled && detail::turns_back(hole.continuity.max_normal_angle);
+}
+
+bool open_at_lone_triangle(const FillReport& report, const HoleReport& hole) {
+  return hole.status == HoleStatus::failed && hole.pinched_by >= 0 &&
+         report.holes[static_cast<std::size_t>(hole.pinched_by)].around_a_face;
 }
 
 FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver& observer) {

@@ -600,6 +600,7 @@ TEST(FillPinches, OneHoleOfAPinchAloneFailsAndTheOtherHoleIsFilled) {
   EXPECT_EQ(r.holes[failed.pinched_by].status, HoleStatus::skipped);
   EXPECT_FALSE(r.holes[failed.pinched_by].around_a_face);
   EXPECT_EQ(r.holes[elsewhere.front()].pinched_by, -1);
+  EXPECT_FALSE(open_at_lone_triangle(r, failed));
   const ValidationReport v = validate(filled);  // the pinch stays as it was, and nothing else is added
   EXPECT_EQ(v.non_manifold_vertices.count, 1);
   EXPECT_EQ(v.non_manifold_edges.count, 0);
@@ -629,6 +630,7 @@ TEST(FillPinches, AHoleWithALoneTriangleHangingAtItsBorderSaysRepairRemovesIt) {
   EXPECT_EQ(hole.pinched_by, lone->index);
   EXPECT_TRUE(lone->around_a_face);
   EXPECT_FALSE(hole.around_a_face);
+  EXPECT_TRUE(open_at_lone_triangle(r, hole));
   EXPECT_EQ(filled.F, holed.F);
 
   const RepairReport repaired = repair(holed);

@@ -192,6 +192,11 @@ struct FillReport {
 /// the loop is not a hole (the edge of a fin), or the hole cuts across a thin part (docs/fill.md).
 bool folds_back(const HoleReport& hole);
 
+/// The hole (one of report.holes) failed at a pinch of its border shared with a loop round a lone
+/// triangle (HoleReport::pinched_by, around_a_face): debris that repair removes, after which the
+/// hole can be filled.
+bool open_at_lone_triangle(const FillReport& report, const HoleReport& hole);
+
 /// Called after every trial flow step with the holes being faired together (ascending indices).
 using FillObserver = std::function<void(std::span<const int> holes, const StepRecord& record)>;
 
