@@ -780,6 +780,21 @@ void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector
   if (outcome.reason.empty()) commit(outcome.filled, mesh, filled);
 }
 
+// The loops of `group` as one patch fills them: relinked at the border's pinches (relink_pinched_loops),
+// or nullopt with `error` saying why a pinch's wedges could not be relinked.
+std::optional<std::vector<std::vector<int>>> relinked_loops(const Mesh& mesh, const Topology& topo,
+                                                            const std::vector<std::vector<int>>& loops,
+                                                            const std::vector<int>& group, std::string& error) {
+  std::vector<std::vector<int>> group_loops;
+  for (int h : group) group_loops.push_back(loops[h]);
+  try {
+    return detail::relink_pinched_loops(mesh.V, mesh.F, topo, group_loops);
+  } catch (const Error& e) {
+    error = e.what();
+    return std::nullopt;
+  }
+}
+
 // "holes 3, 5 and 7"
 std::string hole_list(const std::vector<int>& holes) {
   std::string text = holes.size() == 1 ? "hole " : "holes ";
@@ -802,14 +817,13 @@ void fill_failed_group_one_by_one(Mesh& mesh, const Topology& topo, const std::v
     const std::string joint_fill = "the joint fill with " + hole_list(r.filled_with);
     const std::string joint = joint_fill + " failed (" + joint_failure + ")";
     r.filled_with.clear();
-    std::vector<std::vector<int>> patch_loops{loops[h]};
-    try {
-      patch_loops = detail::relink_pinched_loops(mesh.V, mesh.F, topo, patch_loops);
-    } catch (const Error& e) {
-      r.reason = std::string(e.what()) + "; " + joint;
+    std::string relink_error;
+    const auto patch_loops = relinked_loops(mesh, topo, loops, {h}, relink_error);
+    if (!patch_loops) {
+      r.reason = relink_error + "; " + joint;
       continue;
     }
-    fill_group_falling_back(mesh, topo, loops, {h}, patch_loops, options, observer, reports, filled);
+    fill_group_falling_back(mesh, topo, loops, {h}, *patch_loops, options, observer, reports, filled);
     if (r.status == HoleStatus::filled)
       r.note = joint + "; filled alone" + (r.note.empty() ? "" : "; " + r.note);
     else
@@ -866,19 +880,17 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
   const std::vector<int> fillable = fill_detail::fillable_holes(mesh.V, mesh.F, topo, loops, options, report.holes);
   const int rings = rings_needed(options.continuity);
   for (const auto& group : fill_detail::overlapping_groups(topo, loops, fillable, rings)) {
-    std::vector<std::vector<int>> patch_loops;
-    for (int h : group) patch_loops.push_back(loops[h]);
-    try {
-      patch_loops = detail::relink_pinched_loops(mesh.V, mesh.F, topo, patch_loops);
-    } catch (const Error& e) {
-      mark(report.holes, group, HoleStatus::failed, e.what());
+    std::string relink_error;
+    const auto patch_loops = relinked_loops(mesh, topo, loops, group, relink_error);
+    if (!patch_loops) {
+      mark(report.holes, group, HoleStatus::failed, relink_error);
       continue;
     }
     for (int h : group)
       for (int other : group)
         if (other != h) report.holes[h].filled_with.push_back(other);
     const auto group_start = Clock::now();
-    fill_group_falling_back(mesh, topo, loops, group, patch_loops, options, observer, report.holes, filled);
+    fill_group_falling_back(mesh, topo, loops, group, *patch_loops, options, observer, report.holes, filled);
     if (group.size() > 1 && report.holes[group.front()].status == HoleStatus::failed)
       fill_failed_group_one_by_one(mesh, topo, loops, group, options, observer, report.holes, filled);
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
