@@ -856,8 +856,14 @@ bool folds_back(const HoleReport& hole) {
 }
 
 bool open_at_lone_triangle(const FillReport& report, const HoleReport& hole) {
-  return hole.status == HoleStatus::failed && hole.pinched_by >= 0 &&
-         report.holes[static_cast<std::size_t>(hole.pinched_by)].around_a_face;
+  // Along the chain of pinches; each hole on it names one found unfillable before it, so it ends.
+  const HoleReport* at = &hole;
+  for (std::size_t steps = 0; steps < report.holes.size(); ++steps) {
+    if (at->status != HoleStatus::failed || at->pinched_by < 0) return false;
+    at = &report.holes[static_cast<std::size_t>(at->pinched_by)];
+    if (at->around_a_face) return true;
+  }
+  return false;
 }
 
 FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver& observer) {

@@ -12,6 +12,7 @@
 #include <set>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 namespace fairsurf::fill_detail {
 namespace {
@@ -34,12 +35,64 @@ std::unordered_map<int, std::vector<int>> holes_at_pinches(const std::vector<std
   return at;
 }
 
+// The fan of each face at vertex v (faces at v joined across their edges at v), in the order of
+// topo.vertex_faces' row, and the number of fans.
+std::pair<std::vector<int>, int> fans_at(const Faces& F, const Topology& topo, int v) {
+  const auto faces = topo.vertex_faces.row(v);
+  const int n = static_cast<int>(faces.size());
+  std::vector<int> fan(n, -1);
+  int count = 0;
+  for (int seed = 0; seed < n; ++seed) {
+    if (fan[seed] >= 0) continue;
+    std::vector<int> stack{seed};
+    fan[seed] = count;
+    while (!stack.empty()) {
+      const int i = stack.back();
+      stack.pop_back();
+      for (int j = 0; j < n; ++j) {
+        if (fan[j] >= 0) continue;
+        bool shared_edge = false;  // another corner than v in common: the edge between them and v
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b)
+            shared_edge = shared_edge || (F(faces[i], a) != v && F(faces[i], a) == F(faces[j], b));
+        if (shared_edge) fan[j] = count, stack.push_back(j);
+      }
+    }
+    ++count;
+  }
+  return {fan, count};
+}
+
+// Whether filling `loop` alone leaves its pinch v manifold: v has two fans of faces and four border
+// edges, the loop passes v once, and its two border edges there bound different fans, so that its
+// patch joins them and the other loop through v stays v's one opening (two holes touching at a
+// corner). Where the loop's border edges at v bound one fan, its patch would close that fan into a
+// cone beside the other.
+bool fill_alone_joins_the_fans(const Faces& F, const Topology& topo, const std::vector<int>& loop, int v,
+                               int border_edges_at_v) {
+  if (border_edges_at_v != 4 || std::count(loop.begin(), loop.end(), v) != 1) return false;
+  const auto [fan, count] = fans_at(F, topo, v);
+  if (count != 2) return false;
+  const std::size_t n = loop.size();
+  const std::size_t at = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), v) - loop.begin());
+  const auto fan_towards = [&](int u) {  // the fan of the (border) face on the edge v-u
+    const auto faces = topo.vertex_faces.row(v);
+    for (int i = 0; i < static_cast<int>(faces.size()); ++i)
+      if (F(faces[i], 0) == u || F(faces[i], 1) == u || F(faces[i], 2) == u) return fan[i];
+    return -1;
+  };
+  const int before = fan_towards(loop[(at + n - 1) % n]), after = fan_towards(loop[(at + 1) % n]);
+  return before >= 0 && after >= 0 && before != after;
+}
+
 // Why the loop cannot be filled, or "" if it can: at a pinch every loop through the vertex must be
 // filled with it, since only their patches together can join the vertex's fans into one
-// (border_pinches.h). The reason says why the other loop is not filled (`reports`, as select_holes
-// left them), and `pinched_by` names it; a lone triangle hanging at the vertex (debris a scan or a
-// cut leaves) is never filled, and repair is what removes it.
-std::string unfillable_border(int hole, const std::vector<std::vector<int>>& loops,
+// (border_pinches.h), unless the loop's patch alone joins them (fill_alone_joins_the_fans). The
+// reason says why the other loop is not filled (`reports`, as select_holes or this check left
+// them), and `pinched_by` names it; a lone triangle hanging at the vertex (debris a scan or a cut
+// leaves) is never filled, and repair is what removes it.
+std::string unfillable_border(int hole, const Faces& F, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                              const std::vector<int>& border_edges,
                               const std::unordered_map<int, std::vector<int>>& pinches,
                               const std::vector<char>& chosen, const std::vector<HoleReport>& reports,
                               int& pinched_by) {
@@ -49,7 +102,7 @@ std::string unfillable_border(int hole, const std::vector<std::vector<int>>& loo
     const auto it = pinches.find(v);
     if (it == pinches.end()) continue;
     for (int other : it->second) {
-      if (chosen[other]) continue;
+      if (chosen[other] || fill_alone_joins_the_fans(F, topo, loops[hole], v, border_edges[v])) continue;
       std::string why = "non-manifold border: vertex " + std::to_string(v) + " is also on hole " +
                         std::to_string(other) + ", which is not filled";
       const std::string& skipped = reports[other].reason;
@@ -176,15 +229,24 @@ std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topolog
   std::vector<char> is_chosen(loops.size(), 0);
   for (int h : chosen) is_chosen[h] = 1;
   const auto pinches = holes_at_pinches(loops, border_edges);
-  std::vector<int> fillable;
-  for (int h : chosen) {
-    int pinched_by = -1;
-    const std::string bad = unfillable_border(h, loops, pinches, is_chosen, reports, pinched_by);
-    if (bad.empty())
-      fillable.push_back(h);
-    else
+  // A hole found unfillable is not filled either, so the holes it shares a pinch with are checked
+  // again: along a chain of pinches that ends at a lone triangle, each hole is filled only where its
+  // patch alone can make its pinch manifold.
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (int h : chosen) {
+      if (!is_chosen[h]) continue;
+      int pinched_by = -1;
+      const std::string bad = unfillable_border(h, F, topo, loops, border_edges, pinches, is_chosen, reports, pinched_by);
+      if (bad.empty()) continue;
       reports[h].status = HoleStatus::failed, reports[h].reason = bad, reports[h].pinched_by = pinched_by;
+      is_chosen[h] = 0;
+      changed = true;
+    }
   }
+  std::vector<int> fillable;
+  for (int h : chosen)
+    if (is_chosen[h]) fillable.push_back(h);
   return fillable;
 }
 

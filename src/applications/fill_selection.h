@@ -19,7 +19,8 @@ Topology require_fillable(const Mesh& mesh);
 /// The loops of `loops` (boundary_loops of the mesh (V, F), connectivity `topo`) to fill, ascending.
 /// The others get their status in `reports` (one per loop) with the reason: skipped where the
 /// options leave them out or their fill could only lay the mesh's own faces again, failed where a
-/// pinch of their border is shared with a loop that is not filled.
+/// pinch of their border is shared with a loop that is not filled (left out, skipped, or failed
+/// so), unless their patch alone joins that vertex's two fans.
 std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topology& topo,
                                 const std::vector<std::vector<int>>& loops, const FillOptions& options,
                                 std::vector<HoleReport>& reports);

@@ -573,36 +573,91 @@ TEST(FillPinches, TwoHolesTouchingAtAVertexAreFilledManifold) {
   EXPECT_LT(filled.V.bottomRows(filled.num_vertices() - holed.num_vertices()).col(2).cwiseAbs().maxCoeff(), 1e-9);
 }
 
-// A pinch can only be filled with every loop through it: filling one alone fails, and says why.
-TEST(FillPinches, OneHoleOfAPinchAloneFailsAndTheOtherHoleIsFilled) {
+// Two holes touching at a corner: each one's patch alone joins the pinch's two fans, so a hole
+// selected without the other is filled alone, and the pinch ends a manifold border vertex on the
+// other, still open.
+TEST(FillPinches, OneHoleOfAPinchIsFilledAloneWhereItsPatchJoinsTheTwoFans) {
   const Mesh holed = grid_with_pinched_holes();
   const int pinch = 6 * 25 + 6;
-  const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  const Topology topo = build_topology(holed.F, holed.num_vertices());
+  const auto loops = boundary_loops(holed.F, topo);
   std::vector<int> through_pinch, elsewhere;
   for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
     if (loops[i].size() > 20) continue;  // the outer border
     (std::count(loops[i].begin(), loops[i].end(), pinch) ? through_pinch : elsewhere).push_back(i);
   }
-  ASSERT_FALSE(through_pinch.empty());
+  ASSERT_EQ(through_pinch.size(), 2u);
   ASSERT_EQ(elsewhere.size(), 1u);
   FillOptions o = options_for(Continuity::G2);
   o.holes = {through_pinch.front(), elsewhere.front()};
   Mesh filled = holed;
   const FillReport r = fill_holes(filled, o);
-  EXPECT_EQ(r.filled, 1);
+  EXPECT_EQ(r.filled, 2);
   EXPECT_EQ(r.holes[elsewhere.front()].status, HoleStatus::filled);
-  const HoleReport& failed = r.holes[through_pinch.front()];
-  EXPECT_EQ(failed.status, HoleStatus::failed);
-  EXPECT_EQ(failed.reason.rfind("non-manifold border: vertex " + std::to_string(pinch) + " is also on hole ", 0), 0u)
-      << failed.reason;
-  ASSERT_GE(failed.pinched_by, 0);
-  EXPECT_EQ(std::count(loops[failed.pinched_by].begin(), loops[failed.pinched_by].end(), pinch), 1);
-  EXPECT_EQ(r.holes[failed.pinched_by].status, HoleStatus::skipped);
-  EXPECT_FALSE(r.holes[failed.pinched_by].around_a_face);
-  EXPECT_EQ(r.holes[elsewhere.front()].pinched_by, -1);
-  EXPECT_FALSE(open_at_lone_triangle(r, failed));
-  const ValidationReport v = validate(filled);  // the pinch stays as it was, and nothing else is added
-  EXPECT_EQ(v.non_manifold_vertices.count, 1);
+  const HoleReport& alone = r.holes[through_pinch.front()];
+  EXPECT_EQ(alone.status, HoleStatus::filled) << alone.reason;
+  EXPECT_EQ(alone.pinched_by, -1);
+  EXPECT_EQ(r.holes[through_pinch.back()].status, HoleStatus::skipped);
+  const ValidationReport v = validate(filled);
+  EXPECT_TRUE(v.manifold());
+  const Topology after = build_topology(filled.F, filled.num_vertices());
+  EXPECT_TRUE(boundary_vertex_flags(after)[pinch]);  // on the hole left open
+  EXPECT_EQ(boundary_loops(filled.F, after).size(), 2u);
+}
+
+// A chain of pinches: hole A touches hole B at a corner, and a lone triangle hangs at another
+// vertex of B's border. B cannot be filled (the lone triangle's loop never is, and B's patch would
+// close the fan beside it into a cone). A's patch alone joins the fans of its corner, so A is
+// filled though B stays open.
+TEST(FillPinches, AHoleTouchingAHoleThatALoneTriangleKeepsOpenIsFilledAlone) {
+  const Mesh grid = test::regular_grid(16, 16, 1.0);
+  const auto centroid = [&](int f) {
+    return Vec3((grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0);
+  };
+  const auto in_a = [](const Vec3& c) { return c.x() > 4 && c.x() < 6 && c.y() > 4 && c.y() < 6; };
+  const auto in_b = [](const Vec3& c) { return c.x() > 6 && c.x() < 10 && c.y() > 6 && c.y() < 10; };
+  // The lone triangle: a face of B's square with one corner on B's border and two inside it.
+  const auto inside_b = [](const Vec3& p) { return p.x() > 6.5 && p.x() < 9.5 && p.y() > 6.5 && p.y() < 9.5; };
+  int lone = -1;
+  for (int f = 0; f < grid.num_faces() && lone < 0; ++f) {
+    if (!in_b(centroid(f))) continue;
+    int inner = 0;
+    for (int k = 0; k < 3; ++k) inner += inside_b(grid.V.row(grid.F(f, k)).transpose());
+    if (inner == 2) lone = f;
+  }
+  ASSERT_GE(lone, 0);
+  Mesh holed;
+  holed.V = grid.V;
+  std::vector<int> kept;
+  for (int f = 0; f < grid.num_faces(); ++f)
+    if (f == lone || (!in_a(centroid(f)) && !in_b(centroid(f)))) kept.push_back(f);
+  holed.F.resize(static_cast<int>(kept.size()), 3);
+  for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
+
+  const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  const auto hole_through = [&](int x, int y) {
+    for (int i = 0; i < static_cast<int>(loops.size()); ++i)
+      if (loops[i].size() > 3 && loops[i].size() < 40 && std::count(loops[i].begin(), loops[i].end(), y * 17 + x))
+        return i;
+    return -1;
+  };
+  const int a = hole_through(4, 4), b = hole_through(10, 10);
+  ASSERT_GE(a, 0);
+  ASSERT_GE(b, 0);
+  ASSERT_NE(a, b);
+  FillOptions o = options_for(Continuity::G2, FairMethod::harmonic);
+  o.skip_largest = true;
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, o);
+  const HoleReport& hole_b = r.holes[b];
+  ASSERT_EQ(hole_b.status, HoleStatus::failed);
+  ASSERT_GE(hole_b.pinched_by, 0);
+  EXPECT_TRUE(r.holes[hole_b.pinched_by].around_a_face);
+  EXPECT_TRUE(open_at_lone_triangle(r, hole_b));
+  EXPECT_EQ(r.holes[a].status, HoleStatus::filled) << r.holes[a].reason;
+  EXPECT_EQ(r.filled, 1);
+  const ValidationReport v = validate(filled);
+  EXPECT_EQ(v.non_manifold_vertices.count, 1);  // the lone triangle's corner, as in the input
   EXPECT_EQ(v.non_manifold_edges.count, 0);
 }
 

@@ -1005,3 +1005,69 @@ TEST(RealHoleParts, ACrossingWithAnotherPartPointsToBlend) {
                               "blend") != std::string::npos;
   EXPECT_GE(pointed, 1);
 }
+
+// A cut of spot (`bench_stress --section fill --cut irregular --seed 101`, trial 125: a blob of 354
+// faces) leaves a 79-edge hole, a lone triangle hanging at one vertex of its border, and a 4-edge
+// hole touching it at another vertex, where the 4-edge loop runs along both border edges of a
+// single face: its patch alone would close that face's fan into a cone beside the blob's fan. The
+// blob cannot be filled (the lone triangle's loop never is), so neither can the 4-edge hole, and it
+// says so, naming the blob and why the blob is open, and the CLI's hint to repair follows the
+// chain. It was filled alone before and failed at the vertex ("the patch makes vertex 1539
+// non-manifold"), without either. After repair every hole is filled.
+constexpr int kSpotPinchChainFaces[] = {
+    772, 773, 775, 776, 777, 778, 779, 780, 781, 782, 783, 784, 785, 787, 940, 941, 942, 943, 946, 956, 957, 964,
+    965, 966, 967, 968, 969, 970, 971, 972, 973, 974, 975, 976, 977, 978, 979, 980, 982, 983, 992, 993, 996, 997,
+    998, 999, 1000, 1001, 1002, 1003, 1004, 1005, 1006, 1007, 1008, 1009, 1010, 1011, 1012, 1013, 1014, 1015, 1017,
+    1018, 1019, 1020, 1021, 1023, 1024, 1025, 1026, 1027, 1028, 1029, 1030, 1031, 1032, 1033, 1034, 1035, 1038,
+    1039, 1040, 1041, 1044, 1045, 1046, 1047, 1050, 1060, 1061, 1084, 1085, 1090, 1091, 1104, 1105, 1106, 1107,
+    1108, 1109, 1110, 1111, 1112, 1113, 1114, 1115, 1116, 1117, 1118, 1119, 1120, 1121, 1122, 1123, 1124, 1128,
+    1129, 1130, 1131, 1132, 1133, 1134, 1135, 1136, 1137, 1138, 1139, 1140, 1141, 1142, 1143, 1144, 1145, 1146,
+    1147, 1148, 1149, 1150, 1151, 1152, 1153, 1154, 1155, 1156, 1157, 1158, 1159, 1164, 1165, 1168, 1169, 1170,
+    1171, 1172, 1173, 1174, 1175, 1177, 1178, 1179, 1180, 1181, 1184, 1185, 1186, 1187, 1188, 1190, 1191, 1196,
+    1197, 1198, 1199, 1200, 1201, 1202, 1203, 1204, 1206, 2568, 2569, 2574, 2575, 3701, 3702, 3703, 3704, 3705,
+    3706, 3707, 3708, 3709, 3710, 3711, 3714, 3715, 3868, 3869, 3870, 3884, 3885, 3892, 3893, 3894, 3895, 3896,
+    3897, 3898, 3899, 3900, 3901, 3902, 3903, 3904, 3905, 3906, 3907, 3908, 3909, 3910, 3916, 3917, 3924, 3925,
+    3926, 3927, 3928, 3929, 3930, 3931, 3932, 3933, 3934, 3935, 3936, 3937, 3938, 3939, 3940, 3941, 3942, 3943,
+    3944, 3945, 3946, 3947, 3949, 3951, 3952, 3953, 3954, 3955, 3956, 3957, 3958, 3959, 3960, 3961, 3962, 3963,
+    3967, 3969, 3970, 3971, 3972, 3973, 3989, 3991, 4012, 4013, 4032, 4033, 4034, 4035, 4036, 4037, 4038, 4039,
+    4040, 4041, 4042, 4043, 4044, 4045, 4046, 4047, 4049, 4050, 4051, 4055, 4056, 4057, 4058, 4059, 4060, 4061,
+    4062, 4063, 4064, 4065, 4066, 4067, 4068, 4069, 4070, 4071, 4072, 4073, 4074, 4075, 4076, 4077, 4078, 4079,
+    4080, 4081, 4082, 4083, 4084, 4085, 4086, 4087, 4096, 4097, 4098, 4099, 4100, 4101, 4102, 4103, 4104, 4105,
+    4106, 4107, 4108, 4111, 4112, 4113, 4114, 4115, 4117, 4118, 4124, 4125, 4126, 4127, 4128, 4129, 4130, 4131,
+    5496, 5498, 5499};
+
+TEST(RealHolePinchChain, AHoleWhosePatchAloneWouldMakeAConeAtItsPinchSaysWhichHoleKeepsItOpen) {
+  const Mesh truth = read_mesh(test::data_path("spot.obj"));
+  Mesh cut = test::cut_faces(truth, kSpotPinchChainFaces);
+  FillOptions options;
+  options.method = FairMethod::harmonic;
+  Mesh filled = cut;
+  const FillReport report = fill_holes(filled, options);
+  ASSERT_EQ(report.holes.size(), 3u);
+  const auto with_edges = [&](int edges) {
+    return std::find_if(report.holes.begin(), report.holes.end(),
+                        [&](const HoleReport& h) { return h.border_edges == edges; });
+  };
+  const auto blob = with_edges(79), small = with_edges(4), lone = with_edges(3);
+  ASSERT_NE(blob, report.holes.end());
+  ASSERT_NE(small, report.holes.end());
+  ASSERT_NE(lone, report.holes.end());
+  EXPECT_TRUE(lone->around_a_face);
+  EXPECT_EQ(blob->status, HoleStatus::failed);
+  EXPECT_EQ(blob->pinched_by, lone->index);
+  EXPECT_EQ(small->status, HoleStatus::failed);
+  EXPECT_EQ(small->pinched_by, blob->index);
+  EXPECT_EQ(small->reason.rfind("non-manifold border: vertex ", 0), 0u) << small->reason;
+  EXPECT_NE(small->reason.find(" is also on hole " + std::to_string(blob->index) + ", which is not filled (" +
+                               blob->reason + ")"),
+            std::string::npos)
+      << small->reason;
+  EXPECT_TRUE(open_at_lone_triangle(report, *small));
+  EXPECT_EQ(filled.F, cut.F);
+
+  repair(cut);
+  const FillReport after = fill_holes(cut, options);
+  EXPECT_EQ(after.failed, 0);
+  EXPECT_GE(after.filled, 2);
+  EXPECT_TRUE(validate(cut).manifold());
+}

@@ -24,7 +24,9 @@
 //
 // A pinch of the border (a vertex with more than two border edges, several fans of faces) is
 // filled: every loop through it is filled in one group, its border edges relinked at the pinch so
-// that the patches join the fans into one disk, and the result is manifold there.
+// that the patches join the fans into one disk, and the result is manifold there. Where another
+// loop through the pinch is not filled, a loop is filled alone only where its patch joins the
+// vertex's two fans (two holes touching at a corner); else it fails too.
 //
 // Failures are per hole and leave the mesh as it was before that hole: a pinch shared with a loop
 // that is not filled ("non-manifold border"), a triangulation or refinement that throws, a patch
@@ -125,7 +127,9 @@ struct HoleReport {
   /// border measure (which covers both loops). −1 otherwise.
   int patch_shared_with = -1;
   /// Where the hole failed at a pinch of its border (`reason` "non-manifold border: ..."), the loop
-  /// it shares that vertex with, which is not filled (its own report says why); −1 otherwise.
+  /// it shares that vertex with, which is not filled (its own report says why: not selected,
+  /// skipped, or failed at a pinch of its own, a chain that open_at_lone_triangle follows); −1
+  /// otherwise.
   int pinched_by = -1;
   /// The loop runs around a face of the mesh, a lone triangle with every edge on the border: it is
   /// skipped, since its fill could only be that face again (repair removes such debris).
@@ -193,8 +197,8 @@ struct FillReport {
 bool folds_back(const HoleReport& hole);
 
 /// The hole (one of report.holes) failed at a pinch of its border shared with a loop round a lone
-/// triangle (HoleReport::pinched_by, around_a_face): debris that repair removes, after which the
-/// hole can be filled.
+/// triangle (HoleReport::pinched_by, around_a_face), directly or through holes that failed at
+/// pinches the same way: debris that repair removes, after which the hole can be filled.
 bool open_at_lone_triangle(const FillReport& report, const HoleReport& hole);
 
 /// Called after every trial flow step with the holes being faired together (ascending indices).
