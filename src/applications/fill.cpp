@@ -859,7 +859,9 @@ bool open_at_lone_triangle(const FillReport& report, const HoleReport& hole) {
   // Along the chain of pinches; each hole on it names one found unfillable before it, so it ends.
   const HoleReport* at = &hole;
   for (std::size_t steps = 0; steps < report.holes.size(); ++steps) {
-    if (at->status != HoleStatus::failed || at->pinched_by < 0) return false;
+    if (at->status != HoleStatus::failed) return false;
+    if (at->lone_triangle >= 0) return true;
+    if (at->pinched_by < 0) return false;
     at = &report.holes[static_cast<std::size_t>(at->pinched_by)];
     if (at->around_a_face) return true;
   }
@@ -901,6 +903,10 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
       fill_failed_group_one_by_one(mesh, topo, loops, group, options, observer, report.holes, filled);
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
   }
+  for (auto& r : report.holes)
+    if (r.status == HoleStatus::failed && r.lone_triangle >= 0)
+      r.reason += "; the loop also runs round a lone triangle, face " + std::to_string(r.lone_triangle) +
+                  ", hanging at a vertex it passes twice: repair splits the vertex and removes the triangle";
   for (const auto& r : report.holes) {
     report.filled += r.status == HoleStatus::filled;
     report.skipped += r.status == HoleStatus::skipped;

@@ -126,6 +126,27 @@ bool around_a_face(const Faces& F, const Topology& topo, const std::vector<int>&
   return false;
 }
 
+// A face of the mesh whose three edges are all on `loop`, a loop of more than three edges (a lone
+// triangle hanging at a vertex the loop passes twice), or -1.
+int lone_triangle_on(const Faces& F, const Topology& topo, const std::vector<int>& loop) {
+  if (loop.size() <= 3) return -1;
+  std::set<std::pair<int, int>> edges;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const int a = loop[i], b = loop[(i + 1) % loop.size()];
+    edges.insert({std::min(a, b), std::max(a, b)});
+  }
+  for (int v : loop)
+    for (int f : topo.vertex_faces.row(v)) {
+      bool all_on_loop = true;
+      for (int k = 0; k < 3; ++k) {
+        const int a = F(f, k), b = F(f, (k + 1) % 3);
+        all_on_loop = all_on_loop && edges.contains({std::min(a, b), std::max(a, b)});
+      }
+      if (all_on_loop) return f;
+    }
+  return -1;
+}
+
 // Whether `loop` is the whole border of a flat piece: a part of the mesh, connected through its
 // vertices, all of whose vertices lie on the loop and all of whose faces lie in one plane (the two
 // triangles of a face of an unwelded soup, a flat polygon on its own). Such a piece has no vertex
@@ -193,6 +214,7 @@ std::vector<int> select_holes(const Vertices& V, const Faces& F, const Topology&
       reports[i].reason = "the loop runs around a lone triangle: filling it would add that face again, reversed";
       continue;
     }
+    reports[i].lone_triangle = lone_triangle_on(F, topo, loops[i]);
     if (borders_a_flat_piece(V, F, topo, loops[i])) {
       reports[i].reason =
           "the loop is the whole border of a flat piece with no vertex inside (a face of an unwelded triangle soup?): "

@@ -267,6 +267,51 @@ TEST(FillLoneTriangle, ALoopAroundAFaceIsSkippedNotFilledWithTheFaceReversed) {
   EXPECT_EQ(m.V, input.V);
 }
 
+// A square hole in a grid with one face of the square left, hanging at a corner of the hole's border
+// whose loop (as boundary_loops traces it) runs round the face too: one loop of 16 + 3 edges. The
+// report names the face (HoleReport::lone_triangle). In the plane the patch wraps round it and
+// the hole is filled, manifold: the face is not refused, only named (where such a hole fails, the
+// reason says that repair removes it: RealHoleLoneTriangle).
+TEST(FillLoneTriangle, AHoleWhoseLoopAlsoRunsRoundALoneTriangleIsFilledRoundIt) {
+  const Mesh grid = test::regular_grid(16, 16, 1.0);
+  const auto in_square = [&](int f) {
+    const Vec3 c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0;
+    return c.x() > 6 && c.x() < 10 && c.y() > 6 && c.y() < 10;
+  };
+  // Candidates: faces of the square with one corner on its border and two inside; keep the first
+  // whose loop boundary_loops traces into the square's.
+  for (int lone = 0; lone < grid.num_faces(); ++lone) {
+    if (!in_square(lone)) continue;
+    int inner = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 p = grid.V.row(grid.F(lone, k)).transpose();
+      inner += p.x() > 6.5 && p.x() < 9.5 && p.y() > 6.5 && p.y() < 9.5;
+    }
+    if (inner != 2) continue;
+    Mesh holed;
+    holed.V = grid.V;
+    std::vector<int> kept;
+    for (int f = 0; f < grid.num_faces(); ++f)
+      if (f == lone || !in_square(f)) kept.push_back(f);
+    holed.F.resize(static_cast<int>(kept.size()), 3);
+    for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
+    if (boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices())).size() != 2) continue;
+    FillOptions o = options_for(Continuity::G2);
+    o.skip_largest = true;
+    Mesh filled = holed;
+    const FillReport r = fill_holes(filled, o);
+    const auto hole = std::find_if(r.holes.begin(), r.holes.end(), [](const HoleReport& h) { return h.border_edges == 19; });
+    ASSERT_NE(hole, r.holes.end());
+    EXPECT_EQ(hole->lone_triangle, static_cast<int>(std::find(kept.begin(), kept.end(), lone) - kept.begin()));
+    EXPECT_FALSE(hole->around_a_face);
+    EXPECT_EQ(hole->status, HoleStatus::filled) << hole->reason;
+    EXPECT_FALSE(open_at_lone_triangle(r, *hole));
+    EXPECT_TRUE(validate(filled).manifold());
+    return;
+  }
+  FAIL() << "no face of the square is traced into the hole's loop";
+}
+
 // data/cube_soup.obj: a cube's 12 triangles, unwelded, so each square face is a piece of its own
 // whose border is a loop of 4 edges and which has no vertex inside. A fill could only lay each
 // square again, reversed, on itself (before, all 6 were "filled" so, C0 (linear)): the loops are

@@ -1071,3 +1071,70 @@ TEST(RealHolePinchChain, AHoleWhosePatchAloneWouldMakeAConeAtItsPinchSaysWhichHo
   EXPECT_GE(after.filled, 2);
   EXPECT_TRUE(validate(cut).manifold());
 }
+
+// A cut of airplane (`bench_stress --section fill --cut irregular --seed 101`, trial 128: a blob of
+// 381 faces) leaves one loop of 109 edges that also runs round a lone triangle: one face of the
+// blob's rim, hanging at a vertex the loop passes twice, its three edges on the loop. The patch
+// would have to wrap round it, and every patch of the fallback chain crosses the mesh. The hole
+// failed with that crossing as its only reason; it now also names the triangle and says that repair
+// removes it, and open_at_lone_triangle (the CLI's --repair hint) holds. After repair it is filled.
+constexpr int kAirplaneLoneTriangleFaces[] = {
+    8474, 8496, 8602, 8623, 8626, 8735, 8754, 8758, 8867, 8869, 8891, 8895, 9006, 9008, 9029, 9034, 9146, 9148,
+    9150, 9170, 9171, 9172, 9177, 9186, 9187, 9189, 9292, 9294, 9296, 9308, 9317, 9318, 9324, 9333, 9334, 9335,
+    9336, 9446, 9448, 9470, 9471, 9477, 9487, 9488, 9489, 9490, 9605, 9607, 9629, 9630, 9636, 9645, 9646, 9647,
+    9648, 9649, 9766, 9768, 9770, 9771, 9794, 9800, 9810, 9811, 9812, 9813, 9814, 9929, 9931, 9932, 9944, 9954,
+    9955, 9962, 9972, 9973, 9974, 9975, 9976, 10083, 10086, 10087, 10088, 10089, 10101, 10112, 10113, 10120, 10127,
+    10131, 10132, 10133, 10134, 10135, 10242, 10243, 10244, 10246, 10247, 10248, 10249, 10250, 10259, 10260, 10262,
+    10272, 10273, 10274, 10282, 10293, 10294, 10295, 10296, 10297, 10404, 10405, 10406, 10408, 10409, 10410, 10411,
+    10412, 10413, 10414, 10423, 10424, 10426, 10436, 10437, 10438, 10439, 10447, 10455, 10460, 10461, 10462, 10463,
+    10464, 10465, 10466, 10568, 10575, 10576, 10577, 10579, 10580, 10581, 10582, 10583, 10584, 10585, 10586, 10595,
+    10596, 10598, 10609, 10610, 10611, 10620, 10628, 10634, 10635, 10636, 10637, 10638, 10639, 10744, 10745, 10746,
+    10747, 10748, 10749, 10750, 10751, 10752, 10753, 10754, 10755, 10764, 10765, 10767, 10779, 10780, 10781, 10790,
+    10797, 10798, 10799, 10800, 10801, 10802, 10803, 10804, 10805, 10907, 10908, 10909, 10910, 10911, 10912, 10913,
+    10914, 10915, 10916, 10920, 10921, 10922, 10924, 10937, 10938, 10948, 10954, 10955, 10956, 10957, 10958, 11057,
+    11059, 11060, 11061, 11062, 11063, 11064, 11065, 11066, 11071, 11072, 11074, 11105, 11106, 11107, 11108, 11109,
+    11209, 11211, 11212, 11213, 11214, 11215, 11216, 11217, 11222, 11223, 11256, 11257, 11258, 11259, 11260, 11358,
+    11361, 11363, 11364, 11365, 11366, 11367, 11368, 11369, 11407, 11408, 11409, 11410, 11411, 11412, 11512, 11514,
+    11515, 11516, 11517, 11518, 11519, 11520, 11521, 11560, 11561, 11562, 11563, 11564, 11660, 11664, 11665, 11667,
+    11668, 11669, 11670, 11671, 11672, 11673, 11674, 11710, 11711, 11712, 11713, 11714, 11715, 11816, 11818, 11819,
+    11820, 11821, 11822, 11823, 11824, 11825, 11826, 11860, 11861, 11862, 11863, 11864, 11968, 11969, 11970, 11971,
+    11972, 11973, 11974, 11975, 12008, 12009, 12010, 12011, 12012, 12013, 12119, 12120, 12121, 12122, 12123, 12124,
+    12125, 12126, 12127, 12159, 12160, 12161, 12162, 12163, 12269, 12270, 12271, 12272, 12273, 12274, 12275, 12276,
+    12277, 12309, 12310, 12311, 12312, 12313, 12418, 12420, 12421, 12422, 12423, 12424, 12425, 12426, 12458, 12460,
+    12461, 12462, 12569, 12571, 12572, 12573, 12575, 12608, 12609, 12610, 12716, 12718, 12719, 12720, 12721, 12863,
+    12864, 12865, 13010, 13011};
+
+TEST(RealHoleLoneTriangle, AHoleWhoseLoopRunsRoundALoneTriangleAndFailsSaysRepairRemovesIt) {
+  const Mesh truth = read_mesh(test::data_path("airplane.obj"));
+  Mesh cut = test::cut_faces(truth, kAirplaneLoneTriangleFaces);
+  Mesh filled = cut;
+  const FillReport report = fill_holes(filled, FillOptions{});
+  ASSERT_EQ(report.holes.size(), 1u);
+  const HoleReport& hole = report.holes.front();
+  ASSERT_EQ(hole.border_edges, 109);
+  ASSERT_GE(hole.lone_triangle, 0);
+  const Topology topo = build_topology(cut.F, cut.num_vertices());
+  for (int k = 0; k < 3; ++k) {  // every edge of that face is a border edge: a lone triangle
+    const int a = cut.F(hole.lone_triangle, k), b = cut.F(hole.lone_triangle, (k + 1) % 3);
+    int faces_on_edge = 0;
+    for (int f : topo.vertex_faces.row(a))
+      faces_on_edge += cut.F(f, 0) == b || cut.F(f, 1) == b || cut.F(f, 2) == b;
+    EXPECT_EQ(faces_on_edge, 1);
+  }
+  EXPECT_FALSE(hole.around_a_face);
+  EXPECT_EQ(hole.status, HoleStatus::failed);
+  EXPECT_NE(hole.reason.find("; the loop also runs round a lone triangle, face " + std::to_string(hole.lone_triangle) +
+                             ", hanging at a vertex it passes twice: repair splits the vertex and removes the triangle"),
+            std::string::npos)
+      << hole.reason;
+  EXPECT_TRUE(open_at_lone_triangle(report, hole));
+  EXPECT_EQ(filled.F, cut.F);
+
+  repair(cut);
+  Mesh repaired = cut;
+  const FillReport after = fill_holes(repaired, FillOptions{});
+  ASSERT_EQ(after.holes.size(), 1u);
+  EXPECT_EQ(after.holes.front().status, HoleStatus::filled) << after.holes.front().reason;
+  EXPECT_EQ(after.holes.front().lone_triangle, -1);
+  EXPECT_TRUE(validate(repaired).manifold());
+}

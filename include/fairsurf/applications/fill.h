@@ -134,6 +134,12 @@ struct HoleReport {
   /// The loop runs around a face of the mesh, a lone triangle with every edge on the border: it is
   /// skipped, since its fill could only be that face again (repair removes such debris).
   bool around_a_face = false;
+  /// A longer loop that also runs around a lone triangle: a face of the mesh whose three edges are
+  /// all on this loop, hanging at a vertex the loop passes twice (debris a scan or a cut leaves
+  /// inside a hole). The patch must wrap round it, which it often cannot clear of the mesh; where
+  /// the hole fails, its reason says so and that repair removes the triangle
+  /// (open_at_lone_triangle). The face's index; −1 otherwise.
+  int lone_triangle = -1;
   Continuity requested = Continuity::G2;
   Continuity supported = Continuity::G2;  ///< the continuity the fairing used
   /// The patch is the linear ∆^k solution (k = supported + 1): C(k−1), not G(k−1) — the harmonic
@@ -198,7 +204,8 @@ bool folds_back(const HoleReport& hole);
 
 /// The hole (one of report.holes) failed at a pinch of its border shared with a loop round a lone
 /// triangle (HoleReport::pinched_by, around_a_face), directly or through holes that failed at
-/// pinches the same way: debris that repair removes, after which the hole can be filled.
+/// pinches the same way, or failed with a lone triangle on its own loop (HoleReport::lone_triangle):
+/// debris that repair removes, after which the hole can be filled.
 bool open_at_lone_triangle(const FillReport& report, const HoleReport& hole);
 
 /// Called after every trial flow step with the holes being faired together (ascending indices).
