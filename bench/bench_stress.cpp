@@ -156,7 +156,9 @@ Balls draw_irregular(const ClosedMesh& m, std::uint64_t seed, bool& slit) {
 // The holes still open after repairing `cut` and filling it again (the trial's holes that a lone
 // triangle kept open: does repair let them be filled?).
 int open_after_repair(Mesh cut) {
-  repair(cut);
+  RepairOptions options;  // as `fairsurf fill --repair`
+  options.keep_border_pinches = true;
+  repair(cut, options);
   Mesh filled = cut;
   return fill_holes(filled, FillOptions{}).failed;
 }

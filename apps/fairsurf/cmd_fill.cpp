@@ -172,7 +172,9 @@ void run_fill(const FillArgs& args) {
   const FillOptions options = fill_options(args);
   Mesh mesh = read_input(args.input);
   drop_shape_properties(mesh, args.input);
-  const auto repaired = repair_input(mesh, args.repair, args.input);
+  RepairOptions repair_options;  // fill relinks a pinch of the border; split, it would not be one
+  repair_options.keep_border_pinches = true;
+  const auto repaired = repair_input(mesh, args.repair, args.input, false, repair_options);
   const bool progress = progress_wanted(args.quiet);
   std::map<int, nlohmann::json> steps;  // by the first hole of each jointly faired group
   const FillObserver observer = [&](std::span<const int> holes, const StepRecord& r) {

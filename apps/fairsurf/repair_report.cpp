@@ -74,9 +74,10 @@ void add_repair_flag(CLI::App* command, bool& repair_flag) {
                     "Repair the input first (fairsurf repair's defaults; docs/repair.md) and report it");
 }
 
-std::optional<RepairReport> repair_input(Mesh& mesh, bool enabled, const std::string& path, bool quiet) {
+std::optional<RepairReport> repair_input(Mesh& mesh, bool enabled, const std::string& path, bool quiet,
+                                         const RepairOptions& options) {
   if (!enabled) return std::nullopt;
-  const RepairReport report = repair(mesh);
+  const RepairReport report = repair(mesh, options);
   if (!quiet) std::printf("repaired %s: %s\n", path.c_str(), describe(report).c_str());
   return report;
 }

@@ -21,11 +21,11 @@ nlohmann::json to_json(const RepairReport& report);
 /// Adds the --repair flag to a command.
 void add_repair_flag(CLI::App* command, bool& repair_flag);
 
-/// With `enabled`, repairs `mesh` with the default options and, unless `quiet` (a command printing
-/// JSON), prints "repaired PATH: ..." to standard output; returns the report (nothing when not
-/// enabled).
+/// With `enabled`, repairs `mesh` with `options` (fill's keep the border's pinches) and, unless
+/// `quiet` (a command printing JSON), prints "repaired PATH: ..." to standard output; returns the
+/// report (nothing when not enabled).
 std::optional<RepairReport> repair_input(Mesh& mesh, bool enabled, const std::string& path,
-                                         bool quiet = false);
+                                         bool quiet = false, const RepairOptions& options = {});
 
 /// The report as JSON for a --log, null when no repair ran.
 nlohmann::json repair_json(const std::optional<RepairReport>& report);

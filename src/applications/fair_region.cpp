@@ -352,7 +352,9 @@ FairRegionReport fair_valid_mesh_from(Mesh& mesh, const Topology& topo, std::spa
 FairRegionReport fair_checked_mesh(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                                    const FairRegionOptions& options, const FlowObserver& observer, bool measure,
                                    bool* whole, const Vertices* refined) {
-  require_valid(validate(mesh, topo), Requirements{}, "fair_region");
+  ValidationReport report = validate(mesh, topo);
+  detail::allow_border_pinches(report, topo);
+  require_valid(report, Requirements{}, "fair_region");
   return fair_valid(mesh, topo, free_vertices, options, observer, measure, whole, nullptr, refined);
 }
 

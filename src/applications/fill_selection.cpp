@@ -192,8 +192,12 @@ std::vector<int> select_holes(const Vertices& V, const Faces& F, const Topology&
                             ") (the mesh has " + std::to_string(n) + " boundary loops)");
     selected[i] = 1;
   }
-  for (int i = 0; i < n; ++i)
+  for (int i = 0; i < n; ++i) {
+    // Set on every loop, selected or not: a hole pinched by a lone triangle's loop then says that
+    // repair removes it, whether or not that loop was selected.
+    reports[i].around_a_face = around_a_face(F, topo, loops[i]);
     if (!selected[i]) reports[i].reason = "not selected";
+  }
   if (options.skip_largest && n > 0) {
     const auto largest = std::max_element(loops.begin(), loops.end(),
                                           [](const auto& a, const auto& b) { return a.size() < b.size(); });
@@ -209,8 +213,7 @@ std::vector<int> select_holes(const Vertices& V, const Faces& F, const Topology&
                           std::to_string(options.max_hole_edges);
       continue;
     }
-    if (around_a_face(F, topo, loops[i])) {
-      reports[i].around_a_face = true;
+    if (reports[i].around_a_face) {
       reports[i].reason = "the loop runs around a lone triangle: filling it would add that face again, reversed";
       continue;
     }
@@ -233,12 +236,7 @@ Topology require_fillable(const Mesh& mesh) {
   ValidationReport report = detail::validate_keeping_topology(mesh, topo);
   const bool well_formed = !report.no_faces && report.out_of_range_indices.count == 0 &&
                            report.repeated_vertex_faces.count == 0 && report.nan_vertices.count == 0;
-  if (well_formed) {
-    const std::vector<int> border = border_edge_counts(topo);
-    Finding& vertices = report.non_manifold_vertices;
-    vertices.count -= static_cast<int>(std::count_if(border.begin(), border.end(), [](int c) { return c > 2; }));
-    std::erase_if(vertices.examples, [&](int v) { return border[v] > 2; });
-  }
+  if (well_formed) detail::allow_border_pinches(report, topo);
   require_valid(report, Requirements{}, "fill_holes");
   return topo;
 }

@@ -78,7 +78,10 @@ FairRegionReport fair_valid_mesh(Mesh& mesh, const Topology& topo, std::span<con
 FairRegionReport fair_valid_mesh_from(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                                       const FairRegionOptions& options, const HarmonicReport& start);
 
-/// fair_valid_mesh after require_valid(validate(mesh, topo)): fair_region(mesh, topo, ...) with
+/// fair_valid_mesh after require_valid(validate(mesh, topo)), a pinch of the border allowed
+/// (detail::allow_border_pinches): fill's fairing of a hole's neighbourhood, which may hold a loop
+/// through a pinch that is not filled (a lone triangle hanging at another hole's border), outside
+/// the region or in its rings as a border vertex. fair_region(mesh, topo, ...) with
 /// fair_valid_mesh's further arguments.
 /// `refined` (fill): other positions of mesh's free vertices (#V by 3, equal elsewhere), from which
 /// one ∆^k solve is a further candidate of the held-out choice (FairRegionReport::refined_start).

@@ -62,27 +62,74 @@ Cut cut_non_manifold_edges(const Work& work, const Adjacency& adj, bool resolve)
   return cut;
 }
 
-// Gives every fan beyond the first of an eligible vertex its own copy; returns the vertices split.
-int split_fans(Work& work, const Adjacency& adj, const Cut& cut, bool split_all, RepairReport& report) {
-  const std::vector<int> fan = fan_numbers(work.faces, adj, cut.joined);
+bool on_border(const Adjacency& adj, int corner) { return adj.corners(adj.corner_edge[corner]).size() == 1; }
+
+// At each vertex, which fans keep the vertex (false) and which get a copy of it (true): every fan
+// beyond the first of a non-manifold vertex, except at a pinch of the border with
+// keep_border_pinches, where only lone triangles go (RepairOptions::keep_border_pinches). Indexed
+// by the vertex's first fan entry, `first_fan[v]` + fan number.
+struct FanSplit {
+  std::vector<int> first_fan;  ///< #V + 1: offsets into `copy`
+  std::vector<char> copy;
+};
+
+FanSplit fans_to_split(const Work& work, const Adjacency& adj, const std::vector<int>& fan, const Cut& cut,
+                       bool split_all, bool keep_border_pinches) {
   const int n = work.num_vertices();
   std::vector<int> fans(n, 1);
   for (int c = 0; c < static_cast<int>(fan.size()); ++c)
     fans[from(work.faces, c)] = std::max(fans[from(work.faces, c)], fan[c] + 1);
-  std::vector<int> first_copy(n, -1);
-  int split = 0;
+  FanSplit split{std::vector<int>(n + 1, 0), {}};
+  for (int v = 0; v < n; ++v) split.first_fan[v + 1] = split.first_fan[v] + fans[v];
+  split.copy.assign(split.first_fan[n], 0);
+  // Per fan: open (a border edge at the vertex), and its faces; a lone triangle is a fan of one
+  // face whose three edges are on the border.
+  std::vector<char> open(split.first_fan[n], 0);
+  std::vector<int> faces_in(split.first_fan[n], 0), lone(split.first_fan[n], 0);
+  for (int c = 0; c < static_cast<int>(fan.size()); ++c) {
+    const int f = c / 3, slot = split.first_fan[from(work.faces, c)] + fan[c];
+    const int before = 3 * f + (c % 3 + 2) % 3;  // the corner of the edge into this vertex
+    open[slot] = open[slot] || on_border(adj, c) || on_border(adj, before);
+    ++faces_in[slot];
+    lone[slot] = on_border(adj, 3 * f) && on_border(adj, 3 * f + 1) && on_border(adj, 3 * f + 2);
+  }
   for (int v = 0; v < n; ++v) {
     if (fans[v] < 2 || !(split_all || cut.on_cut[v])) continue;
-    ++split;
-    first_copy[v] = work.add_copy(v);
-    for (int i = 2; i < fans[v]; ++i) work.add_copy(v);
-    report.vertices_added += fans[v] - 1;
+    const int first = split.first_fan[v];
+    const auto is_lone = [&](int i) { return faces_in[first + i] == 1 && lone[first + i]; };
+    bool pinch = keep_border_pinches && split_all && !cut.on_cut[v];
+    int lone_fans = 0;
+    for (int i = 0; i < fans[v]; ++i) pinch = pinch && open[first + i], lone_fans += is_lone(i);
+    if (!pinch || lone_fans == fans[v]) {
+      for (int i = 1; i < fans[v]; ++i) split.copy[first + i] = 1;
+      continue;
+    }
+    for (int i = 0; i < fans[v]; ++i) split.copy[first + i] = is_lone(i);
+  }
+  return split;
+}
+
+// Gives the fans fans_to_split picks their own copies of their vertex; returns the vertices split.
+int split_fans(Work& work, const Adjacency& adj, const Cut& cut, const RepairOptions& options,
+               RepairReport& report) {
+  const std::vector<int> fan = fan_numbers(work.faces, adj, cut.joined);
+  const FanSplit split = fans_to_split(work, adj, fan, cut, options.split_non_manifold_vertices,
+                                       options.keep_border_pinches);
+  const int n = work.num_vertices();
+  std::vector<int> copy_of(split.copy.size(), -1);  // per fan: the vertex it ends on
+  int vertices_split = 0;
+  for (int v = 0; v < n; ++v) {
+    bool any = false;
+    for (int slot = split.first_fan[v]; slot < split.first_fan[v + 1]; ++slot)
+      if (split.copy[slot]) copy_of[slot] = work.add_copy(v), ++report.vertices_added, any = true;
+    vertices_split += any;
   }
   for (int c = 0; c < static_cast<int>(fan.size()); ++c) {
     int& v = work.faces[c / 3][c % 3];
-    if (fan[c] > 0 && first_copy[v] >= 0) v = first_copy[v] + fan[c] - 1;
+    const int slot = split.first_fan[v] + fan[c];
+    if (copy_of[slot] >= 0) v = copy_of[slot];
   }
-  return split;
+  return vertices_split;
 }
 
 // Last resort for an edge the fans could not separate (its extra faces reach the kept pair around
@@ -110,7 +157,7 @@ void split_non_manifold(Work& work, const RepairOptions& options, RepairReport& 
       detach_extra_faces(work, cut, report);
       continue;  // the adjacency no longer describes the faces
     }
-    const int split = split_fans(work, adj, cut, options.split_non_manifold_vertices, report);
+    const int split = split_fans(work, adj, cut, options, report);
     if (round == 0) report.vertices_split += split;
     if (split == 0 && (cut.edges == 0 || !resolve)) {
       if (round == 0 && unchanged) *unchanged = std::move(adj);

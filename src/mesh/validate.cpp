@@ -285,6 +285,15 @@ Topology validated_topology(const Mesh& mesh, const Requirements& requirements, 
   return topo;  // every face is well formed once require_valid passed: the topology of mesh.F
 }
 
+void allow_border_pinches(ValidationReport& report, const Topology& topo) {
+  std::vector<int> border(topo.num_vertices, 0);
+  for (int e = 0; e < topo.edges.rows(); ++e)
+    if (topo.is_boundary_edge(e)) ++border[topo.edges(e, 0)], ++border[topo.edges(e, 1)];
+  Finding& vertices = report.non_manifold_vertices;
+  vertices.count -= static_cast<int>(std::count_if(border.begin(), border.end(), [](int c) { return c > 2; }));
+  std::erase_if(vertices.examples, [&](int v) { return border[v] > 2; });
+}
+
 }  // namespace detail
 
 std::vector<NamedFinding> named_findings(const ValidationReport& r) {

@@ -15,4 +15,10 @@ ValidationReport validate_keeping_topology(const Mesh& mesh, Topology& topo);
 /// validate built.
 Topology validated_topology(const Mesh& mesh, const Requirements& requirements, const char* caller);
 
+/// Takes the pinches of the border (vertices with more than two border edges) out of
+/// report.non_manifold_vertices: fill_holes fills the loops through such a vertex together, and a
+/// region faired near one sees it as a border vertex. `topo` is the connectivity of the mesh
+/// `report` validated, whose faces are well formed.
+void allow_border_pinches(ValidationReport& report, const Topology& topo);
+
 }  // namespace fairsurf::detail

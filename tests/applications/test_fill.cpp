@@ -650,43 +650,21 @@ TEST(FillPinches, OneHoleOfAPinchIsFilledAloneWhereItsPatchJoinsTheTwoFans) {
   EXPECT_EQ(boundary_loops(filled.F, after).size(), 2u);
 }
 
-// A chain of pinches: hole A touches hole B at a corner, and a lone triangle hangs at another
-// vertex of B's border. B cannot be filled (the lone triangle's loop never is, and B's patch would
+// The loop of grid_with_chained_pinches' hole through grid vertex (x, y), -1 if none.
+int hole_through(const std::vector<std::vector<int>>& loops, int x, int y) {
+  for (int i = 0; i < static_cast<int>(loops.size()); ++i)
+    if (loops[i].size() > 3 && loops[i].size() < 40 && std::count(loops[i].begin(), loops[i].end(), y * 17 + x))
+      return i;
+  return -1;
+}
+
+// A chain of pinches: B cannot be filled (the lone triangle's loop never is, and B's patch would
 // close the fan beside it into a cone). A's patch alone joins the fans of its corner, so A is
 // filled though B stays open.
 TEST(FillPinches, AHoleTouchingAHoleThatALoneTriangleKeepsOpenIsFilledAlone) {
-  const Mesh grid = test::regular_grid(16, 16, 1.0);
-  const auto centroid = [&](int f) {
-    return Vec3((grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0);
-  };
-  const auto in_a = [](const Vec3& c) { return c.x() > 4 && c.x() < 6 && c.y() > 4 && c.y() < 6; };
-  const auto in_b = [](const Vec3& c) { return c.x() > 6 && c.x() < 10 && c.y() > 6 && c.y() < 10; };
-  // The lone triangle: a face of B's square with one corner on B's border and two inside it.
-  const auto inside_b = [](const Vec3& p) { return p.x() > 6.5 && p.x() < 9.5 && p.y() > 6.5 && p.y() < 9.5; };
-  int lone = -1;
-  for (int f = 0; f < grid.num_faces() && lone < 0; ++f) {
-    if (!in_b(centroid(f))) continue;
-    int inner = 0;
-    for (int k = 0; k < 3; ++k) inner += inside_b(grid.V.row(grid.F(f, k)).transpose());
-    if (inner == 2) lone = f;
-  }
-  ASSERT_GE(lone, 0);
-  Mesh holed;
-  holed.V = grid.V;
-  std::vector<int> kept;
-  for (int f = 0; f < grid.num_faces(); ++f)
-    if (f == lone || (!in_a(centroid(f)) && !in_b(centroid(f)))) kept.push_back(f);
-  holed.F.resize(static_cast<int>(kept.size()), 3);
-  for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
-
+  const Mesh holed = test::grid_with_chained_pinches();
   const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
-  const auto hole_through = [&](int x, int y) {
-    for (int i = 0; i < static_cast<int>(loops.size()); ++i)
-      if (loops[i].size() > 3 && loops[i].size() < 40 && std::count(loops[i].begin(), loops[i].end(), y * 17 + x))
-        return i;
-    return -1;
-  };
-  const int a = hole_through(4, 4), b = hole_through(10, 10);
+  const int a = hole_through(loops, 4, 4), b = hole_through(loops, 10, 10);
   ASSERT_GE(a, 0);
   ASSERT_GE(b, 0);
   ASSERT_NE(a, b);
@@ -700,10 +678,42 @@ TEST(FillPinches, AHoleTouchingAHoleThatALoneTriangleKeepsOpenIsFilledAlone) {
   EXPECT_TRUE(r.holes[hole_b.pinched_by].around_a_face);
   EXPECT_TRUE(open_at_lone_triangle(r, hole_b));
   EXPECT_EQ(r.holes[a].status, HoleStatus::filled) << r.holes[a].reason;
+  // Faired: the lone triangle's corner, a pinch of the border within A's neighbourhood, is a border
+  // vertex to A's region (B's open border leaves it two complete rings: G1), not a mesh the
+  // fairing refuses (it was, and A was delivered unfaired, C0).
+  EXPECT_EQ(r.holes[a].supported, Continuity::G1) << r.holes[a].note;
   EXPECT_EQ(r.filled, 1);
   const ValidationReport v = validate(filled);
   EXPECT_EQ(v.non_manifold_vertices.count, 1);  // the lone triangle's corner, as in the input
   EXPECT_EQ(v.non_manifold_edges.count, 0);
+}
+
+// Repair as `fairsurf fill --repair` runs it (RepairOptions::keep_border_pinches) removes the lone
+// triangle and leaves the corner where A and B touch joined: fill then closes both holes in one
+// group, relinked at the corner. Repair's default splits that corner too, and A and B become one
+// loop through both copies of it, which the flat patch runs into: the hole fails.
+TEST(FillPinches, RepairKeepingTheBorderPinchesLetsTheChainBeFilled) {
+  FillOptions o = options_for(Continuity::G2, FairMethod::harmonic);
+  o.skip_largest = true;
+
+  Mesh kept_pinch = test::grid_with_chained_pinches();
+  RepairOptions for_fill;
+  for_fill.keep_border_pinches = true;
+  const RepairReport repaired = repair(kept_pinch, for_fill);
+  EXPECT_EQ(repaired.vertices_split, 1);
+  EXPECT_EQ(repaired.small_components_removed, 1);
+  EXPECT_EQ(validate(kept_pinch).non_manifold_vertices.count, 1);  // the corner (6, 6)
+  Mesh again = kept_pinch;
+  EXPECT_FALSE(repair(again, for_fill).changed());  // a fixed point, as repair's default is
+  const FillReport r = fill_holes(kept_pinch, o);
+  EXPECT_EQ(r.filled, 2);
+  EXPECT_EQ(r.failed, 0);
+  EXPECT_TRUE(validate(kept_pinch).manifold());
+
+  Mesh split = test::grid_with_chained_pinches();
+  EXPECT_EQ(repair(split).vertices_split, 2);
+  const FillReport after_split = fill_holes(split, o);
+  EXPECT_EQ(after_split.failed, 1);
 }
 
 // A lone triangle hanging at a vertex of a hole's border (debris a scan or a cut leaves) pinches the

@@ -145,53 +145,37 @@ TEST_F(CliFill, KeepFlowDeliversTheSettledFlowWhereTheHeldOutRingsChoseTheFloor)
 }
 
 TEST_F(CliFill, SomeHolesFailingExitsFourAndKeepsTheFilledOnes) {
-  // A grid with a square hole that a lone triangle pinches at a vertex of its border (its patch
-  // alone would close the fan there into a cone: unfillable) and a clean hole; both are selected.
-  const Mesh grid = test::regular_grid(24, 12, 1.0);
-  const auto centroid = [&](int f) {
-    return Eigen::Vector3d((grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3);
-  };
-  const auto in_square = [](const Eigen::Vector3d& c) { return c.x() > 6 && c.x() < 10 && c.y() > 6 && c.y() < 10; };
-  const auto inside_square = [](const Eigen::Vector3d& p) {
-    return p.x() > 6.5 && p.x() < 9.5 && p.y() > 6.5 && p.y() < 9.5;
-  };
-  int lone = -1;  // a face of the square with one corner on its border and two inside
-  for (int f = 0; f < grid.num_faces() && lone < 0; ++f) {
-    if (!in_square(centroid(f))) continue;
-    int inner = 0;
-    for (int k = 0; k < 3; ++k) inner += inside_square(grid.V.row(grid.F(f, k)).transpose());
-    if (inner == 2) lone = f;
-  }
-  ASSERT_GE(lone, 0);
-  Mesh holed;
-  holed.V = grid.V;
-  std::vector<int> kept;
-  for (int f = 0; f < grid.num_faces(); ++f) {
-    const Eigen::Vector3d c = centroid(f);
-    const bool removed = (in_square(c) && f != lone) || (c.x() > 16 && c.x() < 18 && c.y() > 4 && c.y() < 6);
-    if (!removed) kept.push_back(f);
-  }
-  holed.F.resize(static_cast<int>(kept.size()), 3);
-  for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
+  // test::grid_with_chained_pinches: hole B, which a lone triangle pinches (its patch alone would
+  // close the fan there into a cone), fails; hole A, touching B at a corner, is filled alone.
+  const Mesh holed = test::grid_with_chained_pinches();
   write_mesh(path("pinched.obj"), holed);
-
   const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
-  int pinched = -1, clean = -1;
+  int a = -1, b = -1;
   for (int i = 0; i < static_cast<int>(loops.size()); ++i) {
-    if (std::count(loops[i].begin(), loops[i].end(), 10 * 25 + 10)) pinched = i;
-    if (std::count(loops[i].begin(), loops[i].end(), 4 * 25 + 16)) clean = i;
+    if (loops[i].size() <= 3 || loops[i].size() >= 40) continue;  // the lone triangle, the outer border
+    if (std::count(loops[i].begin(), loops[i].end(), 4 * 17 + 4)) a = i;
+    if (std::count(loops[i].begin(), loops[i].end(), 10 * 17 + 10)) b = i;
   }
-  ASSERT_GE(pinched, 0);
-  ASSERT_GE(clean, 0);
+  ASSERT_GE(a, 0);
+  ASSERT_GE(b, 0);
   const auto run = test::run_cli("fill " + quoted(path("pinched.obj")) + " -o " + quoted(path("out.obj")) +
-                                 " --holes " + std::to_string(pinched) + "," + std::to_string(clean));
+                                 " --holes " + std::to_string(a) + "," + std::to_string(b));
   EXPECT_EQ(run.exit_code, 4) << run.out;
-  EXPECT_NE(run.out.find("hole " + std::to_string(pinched) + " (16 border edges): failed: non-manifold border: vertex "),
+  EXPECT_NE(run.out.find("hole " + std::to_string(b) + " (16 border edges): failed: non-manifold border: vertex "),
             std::string::npos)
       << run.out;
-  EXPECT_NE(run.out.find("still holds the 1 hole that was filled"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("still holds the 1 hole that was filled; a lone triangle hangs at a pinch"), std::string::npos)
+      << run.out;
   const Mesh out = read_mesh(path("out.obj"));
   EXPECT_GT(out.num_faces(), holed.num_faces());
+
+  // --repair keeps the corner where A and B touch joined (it splits off the lone triangle only), and
+  // fill closes both; repair's default would split the corner, and the joined loop would fail.
+  const auto repaired = test::run_cli("fill " + quoted(path("pinched.obj")) + " -o " + quoted(path("repaired.obj")) +
+                                      " --repair --skip-largest --method harmonic");
+  EXPECT_EQ(repaired.exit_code, 0) << repaired.out;
+  EXPECT_NE(repaired.out.find("1 vertex split"), std::string::npos) << repaired.out;
+  EXPECT_EQ(loop_count(read_mesh(path("repaired.obj"))), 1);  // the grid's outer border
 }
 
 // A hole with a lone triangle hanging at its border (test::sphere_hole_with_lone_triangle) fails at

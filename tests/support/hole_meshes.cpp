@@ -1,6 +1,7 @@
 #include "hole_meshes.h"
 
 #include "analytic_meshes.h"
+#include "test_support.h"
 
 #include <fairsurf/mesh/topology.h>
 
@@ -64,6 +65,32 @@ Mesh cut_faces(const Mesh& mesh, std::span<const int> faces) {
   std::vector<char> removed(static_cast<std::size_t>(mesh.num_faces()), 0);
   for (int f : faces) removed.at(static_cast<std::size_t>(f)) = 1;
   return keep_faces(mesh, [&](int f) { return !removed[static_cast<std::size_t>(f)]; });
+}
+
+Mesh grid_with_chained_pinches() {
+  const Mesh grid = test::regular_grid(16, 16, 1.0);
+  const auto centroid = [&](int f) {
+    return Vec3((grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0);
+  };
+  const auto in_a = [](const Vec3& c) { return c.x() > 4 && c.x() < 6 && c.y() > 4 && c.y() < 6; };
+  const auto in_b = [](const Vec3& c) { return c.x() > 6 && c.x() < 10 && c.y() > 6 && c.y() < 10; };
+  // The lone triangle: a face of B's square with one corner on B's border and two inside it.
+  const auto inside_b = [](const Vec3& p) { return p.x() > 6.5 && p.x() < 9.5 && p.y() > 6.5 && p.y() < 9.5; };
+  int lone = -1;
+  for (int f = 0; f < grid.num_faces() && lone < 0; ++f) {
+    if (!in_b(centroid(f))) continue;
+    int inner = 0;
+    for (int k = 0; k < 3; ++k) inner += inside_b(grid.V.row(grid.F(f, k)).transpose());
+    if (inner == 2) lone = f;
+  }
+  Mesh holed;
+  holed.V = grid.V;
+  std::vector<int> kept;
+  for (int f = 0; f < grid.num_faces(); ++f)
+    if (f == lone || (!in_a(centroid(f)) && !in_b(centroid(f)))) kept.push_back(f);
+  holed.F.resize(static_cast<int>(kept.size()), 3);
+  for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
+  return holed;
 }
 
 Mesh sphere_hole_with_lone_triangle(int* pinch) {

@@ -38,6 +38,12 @@ Mesh s_sheet_with_hole();
 /// cut leaves. Its loop pinches the hole's border at `pinch` (set when given).
 Mesh sphere_hole_with_lone_triangle(int* pinch = nullptr);
 
+/// A 16 × 16 grid (test::regular_grid, unit cells, vertex (x, y) at index 17y + x, every vertex
+/// kept) with hole A, a square of 2 × 2 cells, touching hole B, 4 × 4 cells, at the corner (6, 6),
+/// and one face of B's square left: a lone triangle hanging at a vertex of B's border. A chain of
+/// pinches: B cannot be filled, A can alone (its patch joins the corner's two fans).
+Mesh grid_with_chained_pinches();
+
 /// Moves every vertex of `mesh` along its area-weighted normal by a normal deviate of standard
 /// deviation `sigma` (a scan's noise; the same `seed` gives the same draw).
 void add_normal_noise(Mesh& mesh, double sigma, unsigned seed);

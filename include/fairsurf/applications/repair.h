@@ -40,6 +40,14 @@ struct RepairOptions {
   double degenerate_tolerance = 1e-12;
   /// Give each extra fan of a non-manifold vertex its own copy of the vertex.
   bool split_non_manifold_vertices = true;
+  /// With split_non_manifold_vertices: leave a pinch of the border joined, a vertex every fan of
+  /// which meets the border there (two holes touching at a corner, a hole through one vertex
+  /// twice), and split off only its lone triangles (fans of one face whose three edges are all on
+  /// the border, which remove_small_components then removes). fill_holes fills the loops through
+  /// such a pinch together, which makes it manifold; split, the pinch leaves two coincident
+  /// vertices on one hole's border, which a patch can run into. `fairsurf fill --repair` sets it
+  /// (docs/repair.md). The vertex stays non-manifold where no hole through it is filled.
+  bool keep_border_pinches = false;
   /// At an edge with more than two faces keep two of them joined and detach the others (their
   /// fans get their own copies of the edge's vertices).
   bool resolve_non_manifold_edges = true;
