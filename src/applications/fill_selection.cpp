@@ -5,6 +5,7 @@
 #include <fairsurf/mesh/validate.h>
 
 #include "mesh/validated.h"
+#include "patch/border_pinches.h"
 
 #include <Eigen/Geometry>
 
@@ -17,14 +18,6 @@
 namespace fairsurf::fill_detail {
 namespace {
 
-// Border edges at each vertex (#V).
-std::vector<int> border_edge_counts(const Topology& topo) {
-  std::vector<int> count(topo.num_vertices, 0);
-  for (int e = 0; e < topo.edges.rows(); ++e)
-    if (topo.is_boundary_edge(e)) ++count[topo.edges(e, 0)], ++count[topo.edges(e, 1)];
-  return count;
-}
-
 // The holes through each pinch of the border (a vertex with more than two border edges).
 std::unordered_map<int, std::vector<int>> holes_at_pinches(const std::vector<std::vector<int>>& loops,
                                                            const std::vector<int>& border_edges) {
@@ -35,34 +28,6 @@ std::unordered_map<int, std::vector<int>> holes_at_pinches(const std::vector<std
   return at;
 }
 
-// The fan of each face at vertex v (faces at v joined across their edges at v), in the order of
-// topo.vertex_faces' row, and the number of fans.
-std::pair<std::vector<int>, int> fans_at(const Faces& F, const Topology& topo, int v) {
-  const auto faces = topo.vertex_faces.row(v);
-  const int n = static_cast<int>(faces.size());
-  std::vector<int> fan(n, -1);
-  int count = 0;
-  for (int seed = 0; seed < n; ++seed) {
-    if (fan[seed] >= 0) continue;
-    std::vector<int> stack{seed};
-    fan[seed] = count;
-    while (!stack.empty()) {
-      const int i = stack.back();
-      stack.pop_back();
-      for (int j = 0; j < n; ++j) {
-        if (fan[j] >= 0) continue;
-        bool shared_edge = false;  // another corner than v in common: the edge between them and v
-        for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b)
-            shared_edge = shared_edge || (F(faces[i], a) != v && F(faces[i], a) == F(faces[j], b));
-        if (shared_edge) fan[j] = count, stack.push_back(j);
-      }
-    }
-    ++count;
-  }
-  return {fan, count};
-}
-
 // Whether filling `loop` alone leaves its pinch v manifold: v has two fans of faces and four border
 // edges, the loop passes v once, and its two border edges there bound different fans, so that its
 // patch joins them and the other loop through v stays v's one opening (two holes touching at a
@@ -71,7 +36,8 @@ std::pair<std::vector<int>, int> fans_at(const Faces& F, const Topology& topo, i
 bool fill_alone_joins_the_fans(const Faces& F, const Topology& topo, const std::vector<int>& loop, int v,
                                int border_edges_at_v) {
   if (border_edges_at_v != 4 || std::count(loop.begin(), loop.end(), v) != 1) return false;
-  const auto [fan, count] = fans_at(F, topo, v);
+  int count = 0;
+  const std::vector<int> fan = detail::fans_at(F, topo, v, count);
   if (count != 2) return false;
   const std::size_t n = loop.size();
   const std::size_t at = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), v) - loop.begin());
@@ -244,7 +210,7 @@ Topology require_fillable(const Mesh& mesh) {
 std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topology& topo,
                                 const std::vector<std::vector<int>>& loops, const FillOptions& options,
                                 std::vector<HoleReport>& reports) {
-  const std::vector<int> border_edges = border_edge_counts(topo);
+  const std::vector<int> border_edges = detail::border_edge_counts(topo);
   const std::vector<int> chosen = select_holes(V, F, topo, loops, options, reports);
   std::vector<char> is_chosen(loops.size(), 0);
   for (int h : chosen) is_chosen[h] = 1;

@@ -285,10 +285,15 @@ Topology validated_topology(const Mesh& mesh, const Requirements& requirements, 
   return topo;  // every face is well formed once require_valid passed: the topology of mesh.F
 }
 
-void allow_border_pinches(ValidationReport& report, const Topology& topo) {
-  std::vector<int> border(topo.num_vertices, 0);
+std::vector<int> border_edge_counts(const Topology& topo) {
+  std::vector<int> count(topo.num_vertices, 0);
   for (int e = 0; e < topo.edges.rows(); ++e)
-    if (topo.is_boundary_edge(e)) ++border[topo.edges(e, 0)], ++border[topo.edges(e, 1)];
+    if (topo.is_boundary_edge(e)) ++count[topo.edges(e, 0)], ++count[topo.edges(e, 1)];
+  return count;
+}
+
+void allow_border_pinches(ValidationReport& report, const Topology& topo) {
+  const std::vector<int> border = border_edge_counts(topo);
   Finding& vertices = report.non_manifold_vertices;
   vertices.count -= static_cast<int>(std::count_if(border.begin(), border.end(), [](int c) { return c > 2; }));
   std::erase_if(vertices.examples, [&](int v) { return border[v] > 2; });

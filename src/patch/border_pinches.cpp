@@ -25,30 +25,6 @@ int find_root(std::vector<int>& parent, int i) {
   return i;
 }
 
-// Fan (wedge) id of each face around v, in topo.vertex_faces order, and the number of fans: two
-// faces at v are in one fan when they share an edge v-x.
-std::vector<int> fans_at(const Faces& F, const Topology& topo, int v, int& count) {
-  const auto faces = topo.vertex_faces.row(v);
-  const int n = static_cast<int>(faces.size());
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  std::unordered_map<int, int> face_at_link;  // link vertex x -> first face (position) on edge v-x
-  for (int i = 0; i < n; ++i)
-    for (int k = 0; k < 3; ++k) {
-      const int x = F(faces[i], k);
-      if (x == v) continue;
-      const auto [it, fresh] = face_at_link.emplace(x, i);
-      if (!fresh) parent[find_root(parent, i)] = find_root(parent, it->second);
-    }
-  std::vector<int> id(n, -1), root_id(n, -1);
-  count = 0;
-  for (int i = 0; i < n; ++i) {
-    const int r = find_root(parent, i);
-    if (root_id[r] < 0) root_id[r] = count++;
-    id[i] = root_id[r];
-  }
-  return id;
-}
 
 // Links, at the pinch p, each incoming half-edge to the outgoing one of the next wedge
 // counter-clockwise about p's normal (next[incoming] = outgoing).
@@ -83,6 +59,29 @@ void link_pinch(const Vertices& V, const Faces& F, const Topology& topo, int p, 
 }
 
 }  // namespace
+
+std::vector<int> fans_at(const Faces& F, const Topology& topo, int v, int& count) {
+  const auto faces = topo.vertex_faces.row(v);
+  const int n = static_cast<int>(faces.size());
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::unordered_map<int, int> face_at_link;  // link vertex x -> first face (position) on edge v-x
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const int x = F(faces[i], k);
+      if (x == v) continue;
+      const auto [it, fresh] = face_at_link.emplace(x, i);
+      if (!fresh) parent[find_root(parent, i)] = find_root(parent, it->second);
+    }
+  std::vector<int> id(n, -1), root_id(n, -1);
+  count = 0;
+  for (int i = 0; i < n; ++i) {
+    const int r = find_root(parent, i);
+    if (root_id[r] < 0) root_id[r] = count++;
+    id[i] = root_id[r];
+  }
+  return id;
+}
 
 std::vector<std::vector<int>> relink_pinched_loops(const Vertices& V, const Faces& F, const Topology& topo,
                                                    const std::vector<std::vector<int>>& loops) {

@@ -33,6 +33,10 @@ namespace fairsurf::detail {
 std::vector<std::vector<int>> relink_pinched_loops(const Vertices& V, const Faces& F, const Topology& topo,
                                                    const std::vector<std::vector<int>>& loops);
 
+/// The fan (wedge) of each face around vertex v, in topo.vertex_faces' order, and in `count` the
+/// number of fans: two faces at v are in one fan when they share an edge v-x.
+std::vector<int> fans_at(const Faces& F, const Topology& topo, int v, int& count);
+
 /// Why the faces [first_face, #F) make the mesh (F, its topology `topo`) non-manifold at one of
 /// their edges (more than two faces) or vertices (more than one fan of faces), or "" if they do not.
 std::string patch_non_manifold(const Faces& F, const Topology& topo, int first_face);
