@@ -269,7 +269,9 @@ void setup_fill(CLI::App& app) {
   cmd->add_option("--max-steps", args->max_steps, "Stop each hole's flow after this many accepted steps (>= 1)")
       ->check(whole_number_at_least(1));
   cmd->add_option("--log", args->log, "Write a per-hole JSON report with every flow step here");
-  add_repair_flag(cmd, args->repair);
+  add_repair_flag(cmd, args->repair,
+                  "fairsurf repair's defaults, but a pinch of the border stays joined for fill to close, only its "
+                  "lone triangles split off");
   cmd->add_flag("--quiet", args->quiet, "Only the summary line; no progress");
   cmd->add_flag("--force", args->force, "Allow outputs to overwrite the input");
   cmd->callback([args] { run_fill(*args); });

@@ -69,9 +69,8 @@ nlohmann::json to_json(const RepairReport& r) {
           {"changed", r.changed()}};
 }
 
-void add_repair_flag(CLI::App* command, bool& repair_flag) {
-  command->add_flag("--repair", repair_flag,
-                    "Repair the input first (fairsurf repair's defaults; docs/repair.md) and report it");
+void add_repair_flag(CLI::App* command, bool& repair_flag, const std::string& how) {
+  command->add_flag("--repair", repair_flag, "Repair the input first (" + how + "; docs/repair.md) and report it");
 }
 
 std::optional<RepairReport> repair_input(Mesh& mesh, bool enabled, const std::string& path, bool quiet,

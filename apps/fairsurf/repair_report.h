@@ -18,8 +18,8 @@ std::string describe(const RepairReport& report);
 /// Every count of the report, keyed by its field name.
 nlohmann::json to_json(const RepairReport& report);
 
-/// Adds the --repair flag to a command.
-void add_repair_flag(CLI::App* command, bool& repair_flag);
+/// Adds the --repair flag to a command; `how` says which options repair_input gets.
+void add_repair_flag(CLI::App* command, bool& repair_flag, const std::string& how = "fairsurf repair's defaults");
 
 /// With `enabled`, repairs `mesh` with `options` (fill's keep the border's pinches) and, unless
 /// `quiet` (a command printing JSON), prints "repaired PATH: ..." to standard output; returns the
