@@ -831,6 +831,19 @@ void fill_failed_group_one_by_one(Mesh& mesh, const Topology& topo, const std::v
   }
 }
 
+// A failed hole's reason, told that its loop also runs round lone triangle `r.lone_triangle`, with
+// one repair hint where the reason already gives one for the triangle at a pinch.
+void add_lone_triangle_reason(HoleReport& r) {
+  const std::string lone = "; the loop also runs round a lone triangle, face " + std::to_string(r.lone_triangle) +
+                           ", hanging at a vertex it passes twice: ";
+  if (!r.reason.ends_with(fill_detail::kLoneTriangleRepairHint)) {
+    r.reason += lone + "repair splits the vertex and removes the triangle";
+    return;
+  }
+  r.reason.resize(r.reason.size() - fill_detail::kLoneTriangleRepairHint.size());
+  r.reason += lone + "repair splits those vertices and removes the lone triangles";
+}
+
 }  // namespace
 
 const char* to_string(HoleStatus status) {
@@ -904,9 +917,7 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
   }
   for (auto& r : report.holes)
-    if (r.status == HoleStatus::failed && r.lone_triangle >= 0)
-      r.reason += "; the loop also runs round a lone triangle, face " + std::to_string(r.lone_triangle) +
-                  ", hanging at a vertex it passes twice: repair splits the vertex and removes the triangle";
+    if (r.status == HoleStatus::failed && r.lone_triangle >= 0) add_lone_triangle_reason(r);
   for (const auto& r : report.holes) {
     report.filled += r.status == HoleStatus::filled;
     report.skipped += r.status == HoleStatus::skipped;

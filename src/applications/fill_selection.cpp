@@ -73,7 +73,7 @@ std::string unfillable_border(int hole, const Faces& F, const Topology& topo, co
                         std::to_string(other) + ", which is not filled";
       const std::string& skipped = reports[other].reason;
       if (!skipped.empty()) why += " (" + skipped + ")";
-      if (reports[other].around_a_face) why += "; repair splits the vertex and removes the lone triangle";
+      if (reports[other].around_a_face) why += kLoneTriangleRepairHint;
       pinched_by = other;
       return why;
     }

@@ -6,6 +6,7 @@
 #include <fairsurf/applications/fill.h>
 #include <fairsurf/mesh/topology.h>
 
+#include <string_view>
 #include <vector>
 
 namespace fairsurf::fill_detail {
@@ -15,6 +16,10 @@ namespace fairsurf::fill_detail {
 /// it together makes it manifold (border_pinches.h), and a hole that cannot be is reported per hole.
 /// Returns the mesh's connectivity, which validate built. Throws as require_valid.
 Topology require_fillable(const Mesh& mesh);
+
+/// What a reason of fillable_holes ends with where the loop sharing the pinch runs around a lone
+/// triangle.
+inline constexpr std::string_view kLoneTriangleRepairHint = "; repair splits the vertex and removes the lone triangle";
 
 /// The loops of `loops` (boundary_loops of the mesh (V, F), connectivity `topo`) to fill, ascending.
 /// The others get their status in `reports` (one per loop) with the reason: skipped where the

@@ -312,6 +312,54 @@ TEST(FillLoneTriangle, AHoleWhoseLoopAlsoRunsRoundALoneTriangleIsFilledRoundIt) 
   FAIL() << "no face of the square is traced into the hole's loop";
 }
 
+// The same square with two of its faces left, each hanging at a corner on the square's border: one
+// traced into the hole's loop, the other a loop of its own that pinches the border and is never
+// filled. The hole fails at that pinch, and its reason names both triangles with one repair hint.
+TEST(FillLoneTriangle, AHoleFailingAtOneLoneTriangleAndRunningRoundAnotherGetsOneRepairHint) {
+  const Mesh grid = test::regular_grid(16, 16, 1.0);
+  const auto in_square = [&](int f) {
+    const Vec3 c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0;
+    return c.x() > 6 && c.x() < 10 && c.y() > 6 && c.y() < 10;
+  };
+  std::vector<int> hanging;  // faces of the square with one corner on its border and two inside
+  for (int f = 0; f < grid.num_faces(); ++f) {
+    if (!in_square(f)) continue;
+    int inner = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 p = grid.V.row(grid.F(f, k)).transpose();
+      inner += p.x() > 6.5 && p.x() < 9.5 && p.y() > 6.5 && p.y() < 9.5;
+    }
+    if (inner == 2) hanging.push_back(f);
+  }
+  for (std::size_t i = 0; i < hanging.size(); ++i)
+    for (std::size_t j = i + 1; j < hanging.size(); ++j) {
+      Mesh holed;
+      holed.V = grid.V;
+      std::vector<int> kept;
+      for (int f = 0; f < grid.num_faces(); ++f)
+        if (f == hanging[i] || f == hanging[j] || !in_square(f)) kept.push_back(f);
+      holed.F.resize(static_cast<int>(kept.size()), 3);
+      for (int k = 0; k < static_cast<int>(kept.size()); ++k) holed.F.row(k) = grid.F.row(kept[k]);
+      if (boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices())).size() != 3) continue;
+      FillOptions o = options_for(Continuity::G2, FairMethod::harmonic);
+      o.skip_largest = true;
+      Mesh filled = holed;
+      const FillReport r = fill_holes(filled, o);
+      const auto hole = std::find_if(r.holes.begin(), r.holes.end(), [](const HoleReport& h) { return h.border_edges == 19; });
+      if (hole == r.holes.end() || hole->lone_triangle < 0) continue;
+      EXPECT_EQ(hole->status, HoleStatus::failed);
+      const std::string ending = "; the loop also runs round a lone triangle, face " +
+                                 std::to_string(hole->lone_triangle) +
+                                 ", hanging at a vertex it passes twice: repair splits those vertices and removes "
+                                 "the lone triangles";
+      EXPECT_TRUE(hole->reason.ends_with(ending)) << hole->reason;
+      EXPECT_EQ(hole->reason.find("repair"), hole->reason.rfind("repair")) << hole->reason;
+      EXPECT_TRUE(open_at_lone_triangle(r, *hole));
+      return;
+    }
+  FAIL() << "no two faces of the square leave a lone triangle on the hole's loop and one beside it";
+}
+
 // data/cube_soup.obj: a cube's 12 triangles, unwelded, so each square face is a piece of its own
 // whose border is a loop of 4 edges and which has no vertex inside. A fill could only lay each
 // square again, reversed, on itself (before, all 6 were "filled" so, C0 (linear)): the loops are
