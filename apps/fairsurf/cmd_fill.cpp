@@ -106,6 +106,7 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"patch_shared_with", r.patch_shared_with},
                    {"pinched_by", r.pinched_by},
                    {"around_a_face", r.around_a_face},
+                   {"hanging_piece_at", r.hanging_piece_at},
                    {"lone_triangle", r.lone_triangle},
                    {"requested_continuity", to_string(r.requested)},
                    {"supported_continuity", to_string(r.supported)},

@@ -94,6 +94,7 @@ py::dict hole_dict(const HoleReport& r) {
                   "reason"_a = r.reason, "filled_with"_a = r.filled_with, "vertices_added"_a = r.vertices_added,
                   "faces_added"_a = r.faces_added, "patch_shared_with"_a = r.patch_shared_with,
                   "pinched_by"_a = r.pinched_by, "around_a_face"_a = r.around_a_face,
+                  "hanging_piece_at"_a = r.hanging_piece_at,
                   "lone_triangle"_a = r.lone_triangle,
                   "requested_continuity"_a = to_string(r.requested),
                   "supported_continuity"_a = to_string(r.supported),

@@ -211,7 +211,11 @@ void report_shared_patches(const std::vector<int>& patch_hole, const std::vector
     if (owner == h) continue;
     HoleReport shared = reports[owner];
     shared.index = h;
+    // What the loop itself is stays this loop's.
     shared.border_edges = reports[h].border_edges;
+    shared.around_a_face = reports[h].around_a_face;
+    shared.hanging_piece_at = reports[h].hanging_piece_at;
+    shared.lone_triangle = reports[h].lone_triangle;
     shared.filled_with = reports[h].filled_with;
     shared.vertices_added = shared.faces_added = 0;
     shared.patch_shared_with = owner;
@@ -916,8 +920,13 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
       fill_failed_group_one_by_one(mesh, topo, loops, group, options, observer, report.holes, filled);
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
   }
-  for (auto& r : report.holes)
-    if (r.status == HoleStatus::failed && r.lone_triangle >= 0) add_lone_triangle_reason(r);
+  for (auto& r : report.holes) {
+    if (r.status != HoleStatus::failed) continue;
+    if (r.lone_triangle >= 0) add_lone_triangle_reason(r);
+    if (r.hanging_piece_at >= 0)
+      r.reason += "; the loop is the whole border of a piece with no vertex inside that hangs at vertex " +
+                  std::to_string(r.hanging_piece_at) + " (debris?): no patch took it in";
+  }
   for (const auto& r : report.holes) {
     report.filled += r.status == HoleStatus::filled;
     report.skipped += r.status == HoleStatus::skipped;

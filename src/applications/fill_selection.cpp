@@ -113,6 +113,40 @@ int lone_triangle_on(const Faces& F, const Topology& topo, const std::vector<int
   return -1;
 }
 
+// Where `loop` is the whole border of a piece of more than one face with no vertex inside (the faces
+// reached across edges from the face on its first edge, every vertex of which is on the loop) that
+// touches the rest of the mesh at a vertex of the loop, that vertex; −1 otherwise. Such a piece hangs
+// inside a hole (a ball cut through a thin part leaves one): filled alone it would close on itself
+// there, a pillow joined to the mesh at one vertex, so only a patch of both loops that takes the piece
+// in can fill them.
+int hanging_piece_vertex(const Faces& F, const Topology& topo, const std::vector<int>& loop) {
+  if (loop.size() <= 3) return -1;  // a lone triangle: around_a_face
+  const std::set<int> on_loop(loop.begin(), loop.end());
+  const std::size_t most_faces = loop.size() - 2;  // a triangulated polygon without inner vertices
+  int first = -1;  // the face on the loop's first edge
+  for (int f : topo.vertex_faces.row(loop[0]))
+    if (F(f, 0) == loop[1] || F(f, 1) == loop[1] || F(f, 2) == loop[1]) first = f;
+  if (first < 0) return -1;
+  std::set<int> piece;
+  std::vector<int> queue{first};
+  while (!queue.empty()) {
+    const int f = queue.back();
+    queue.pop_back();
+    if (!piece.insert(f).second) continue;
+    if (piece.size() > most_faces) return -1;
+    for (int k = 0; k < 3; ++k) {
+      if (!on_loop.contains(F(f, k))) return -1;
+      for (int g : topo.edge_faces.row(topo.face_edges[3 * f + k]))
+        if (!piece.contains(g)) queue.push_back(g);
+    }
+  }
+  if (piece.size() < 2) return -1;
+  for (int v : loop)
+    for (int f : topo.vertex_faces.row(v))
+      if (!piece.contains(f)) return v;
+  return -1;
+}
+
 // Whether `loop` is the whole border of a flat piece: a part of the mesh, connected through its
 // vertices, all of whose vertices lie on the loop and all of whose faces lie in one plane (the two
 // triangles of a face of an unwelded soup, a flat polygon on its own). Such a piece has no vertex
@@ -162,6 +196,7 @@ std::vector<int> select_holes(const Vertices& V, const Faces& F, const Topology&
     // Set on every loop, selected or not: a hole pinched by a lone triangle's loop then says that
     // repair removes it, whether or not that loop was selected.
     reports[i].around_a_face = around_a_face(F, topo, loops[i]);
+    reports[i].hanging_piece_at = hanging_piece_vertex(F, topo, loops[i]);
     if (!selected[i]) reports[i].reason = "not selected";
   }
   if (options.skip_largest && n > 0) {

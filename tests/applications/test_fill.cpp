@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -358,6 +359,73 @@ TEST(FillLoneTriangle, AHoleFailingAtOneLoneTriangleAndRunningRoundAnotherGetsOn
       return;
     }
   FAIL() << "no two faces of the square leave a lone triangle on the hole's loop and one beside it";
+}
+
+// Two faces of a square hole's inside left hanging at one vertex of its border (a cut through a thin
+// part leaves such pieces): the piece's 4-edge loop is its whole border, with no vertex inside
+// (HoleReport::hanging_piece_at, this loop's own even where the report repeats the shared patch's),
+// and filled alone it would close on itself there. The hole's patch, relinked at the vertex with
+// the piece's loop, takes the piece in, manifold; where the piece's loop fails, its reason says
+// what the loop is (bench_stress --seed 2001, spot trial 2002: the joint patch crossed the mesh).
+TEST(FillLoneTriangle, APieceWithNoVertexInsideHangingInAHoleIsTakenInOrNamed) {
+  const Mesh grid = test::regular_grid(16, 16, 1.0);
+  const auto in_square = [&](int f) {
+    const Vec3 c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0;
+    return c.x() > 6 && c.x() < 10 && c.y() > 6 && c.y() < 10;
+  };
+  const auto on_square_border = [&](int v) {
+    const Vec3 p = grid.V.row(v).transpose();
+    return !(p.x() > 6.5 && p.x() < 9.5 && p.y() > 6.5 && p.y() < 9.5);
+  };
+  const Topology topo = build_topology(grid.F, grid.num_vertices());
+  for (int e = 0; e < topo.edges.rows(); ++e) {
+    if (topo.edge_faces.size(e) != 2) continue;
+    const int a = topo.edge_faces.row(e)[0], b = topo.edge_faces.row(e)[1];
+    if (!in_square(a) || !in_square(b)) continue;
+    std::set<int> corners;
+    for (int k = 0; k < 3; ++k) corners.insert({grid.F(a, k), grid.F(b, k)});
+    if (std::count_if(corners.begin(), corners.end(), on_square_border) != 1) continue;
+    const int hanging = *std::find_if(corners.begin(), corners.end(), on_square_border);
+    Mesh holed;
+    holed.V = grid.V;
+    std::vector<int> kept;
+    for (int f = 0; f < grid.num_faces(); ++f)
+      if (f == a || f == b || !in_square(f)) kept.push_back(f);
+    holed.F.resize(static_cast<int>(kept.size()), 3);
+    for (int k = 0; k < static_cast<int>(kept.size()); ++k) holed.F.row(k) = grid.F.row(kept[k]);
+    if (boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices())).size() != 3) continue;
+    FillOptions o = options_for(Continuity::G2, FairMethod::harmonic);
+    o.skip_largest = true;
+    const auto with_edges = [](const FillReport& r, int edges) {
+      return std::find_if(r.holes.begin(), r.holes.end(), [&](const HoleReport& h) { return h.border_edges == edges; });
+    };
+    Mesh flat = holed;
+    const FillReport taken_in = fill_holes(flat, o);
+    const auto piece = with_edges(taken_in, 4), hole = with_edges(taken_in, 16);
+    ASSERT_NE(piece, taken_in.holes.end());
+    ASSERT_NE(hole, taken_in.holes.end());
+    EXPECT_EQ(piece->hanging_piece_at, hanging);
+    EXPECT_EQ(hole->hanging_piece_at, -1);
+    EXPECT_EQ(taken_in.filled, 2) << piece->reason << hole->reason;
+    EXPECT_TRUE(validate(flat).manifold());
+
+    // Selected alone, the piece's loop cannot be filled (its patch would close the piece into a
+    // pillow beside the hole): it fails at the pinch, and its reason says what the loop is.
+    FillOptions alone = o;
+    alone.holes = {piece->index};
+    Mesh untouched = holed;
+    const FillReport named = fill_holes(untouched, alone);
+    const HoleReport& piece_alone = named.holes[static_cast<std::size_t>(piece->index)];
+    EXPECT_EQ(piece_alone.status, HoleStatus::failed);
+    EXPECT_EQ(piece_alone.pinched_by, hole->index);
+    EXPECT_TRUE(piece_alone.reason.ends_with("; the loop is the whole border of a piece with no vertex inside that "
+                                             "hangs at vertex " +
+                                             std::to_string(hanging) + " (debris?): no patch took it in"))
+        << piece_alone.reason;
+    EXPECT_EQ(untouched.F, holed.F);
+    return;
+  }
+  FAIL() << "no two faces of the square hang at one vertex of its border";
 }
 
 // data/cube_soup.obj: a cube's 12 triangles, unwelded, so each square face is a piece of its own

@@ -26,6 +26,7 @@ def test_fill_closes_the_hole_like_the_cli(tmp_path, cli, data_dir, hand):
     assert report["holes"][0]["patch_shared_with"] == cli_report["holes"][0]["patch_shared_with"] == -1
     assert report["holes"][0]["pinched_by"] == cli_report["holes"][0]["pinched_by"] == -1
     assert report["holes"][0]["around_a_face"] is cli_report["holes"][0]["around_a_face"] is False
+    assert report["holes"][0]["hanging_piece_at"] == cli_report["holes"][0]["hanging_piece_at"] == -1
     assert report["holes"][0]["lone_triangle"] == cli_report["holes"][0]["lone_triangle"] == -1
 
 

@@ -134,6 +134,12 @@ struct HoleReport {
   /// The loop runs around a face of the mesh, a lone triangle with every edge on the border: it is
   /// skipped, since its fill could only be that face again (repair removes such debris).
   bool around_a_face = false;
+  /// The loop is the whole border of a piece of more than one face with no vertex inside, joined
+  /// to the rest of the mesh at this vertex of the loop (a piece hanging inside a hole, as a cut
+  /// through a thin part leaves): only a patch of this loop and the hole's, relinked at the vertex,
+  /// can take the piece in, and where none does, this hole's reason says what the loop is. −1
+  /// otherwise.
+  int hanging_piece_at = -1;
   /// A longer loop that also runs around a lone triangle: a face of the mesh whose three edges are
   /// all on this loop, hanging at a vertex the loop passes twice (debris a scan or a cut leaves
   /// inside a hole). The patch must wrap round it, which it often cannot clear of the mesh; where
