@@ -268,42 +268,73 @@ TEST(FillLoneTriangle, ALoopAroundAFaceIsSkippedNotFilledWithTheFaceReversed) {
   EXPECT_EQ(m.V, input.V);
 }
 
+namespace {
+
+// test::regular_grid(16, 16, 1) with a square hole, (6, 10)², in which some of its faces are left.
+struct GridWithSquareHole {
+  Mesh grid = test::regular_grid(16, 16, 1.0);
+  bool in_square(int f) const {
+    const Vec3 c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0;
+    return c.x() > 6 && c.x() < 10 && c.y() > 6 && c.y() < 10;
+  }
+  bool on_square_border(int v) const {
+    const Vec3 p = grid.V.row(v).transpose();
+    return !(p.x() > 6.5 && p.x() < 9.5 && p.y() > 6.5 && p.y() < 9.5);
+  }
+  // The faces of the square with one corner on its border and two inside.
+  std::vector<int> hanging_at_one_corner() const {
+    std::vector<int> faces;
+    for (int f = 0; f < grid.num_faces(); ++f) {
+      if (!in_square(f)) continue;
+      int on_border = 0;
+      for (int k = 0; k < 3; ++k) on_border += on_square_border(grid.F(f, k));
+      if (on_border == 1) faces.push_back(f);
+    }
+    return faces;
+  }
+  // The grid without the square's faces except `left` (grid face indices); `row_of_left` gets their
+  // rows in the result.
+  Mesh holed(const std::vector<int>& left, std::vector<int>* row_of_left = nullptr) const {
+    Mesh out;
+    out.V = grid.V;
+    std::vector<int> kept;
+    for (int f = 0; f < grid.num_faces(); ++f) {
+      const auto at = std::find(left.begin(), left.end(), f);
+      if (at == left.end() && in_square(f)) continue;
+      if (at != left.end() && row_of_left) (*row_of_left)[static_cast<std::size_t>(at - left.begin())] = static_cast<int>(kept.size());
+      kept.push_back(f);
+    }
+    out.F.resize(static_cast<int>(kept.size()), 3);
+    for (int i = 0; i < static_cast<int>(kept.size()); ++i) out.F.row(i) = grid.F.row(kept[i]);
+    return out;
+  }
+};
+
+int loop_count(const Mesh& m) {
+  return static_cast<int>(boundary_loops(m.F, build_topology(m.F, m.num_vertices())).size());
+}
+
+}  // namespace
+
 // A square hole in a grid with one face of the square left, hanging at a corner of the hole's border
 // whose loop (as boundary_loops traces it) runs round the face too: one loop of 16 + 3 edges. The
 // report names the face (HoleReport::lone_triangle). In the plane the patch wraps round it and
 // the hole is filled, manifold: the face is not refused, only named (where such a hole fails, the
 // reason says that repair removes it: RealHoleLoneTriangle).
 TEST(FillLoneTriangle, AHoleWhoseLoopAlsoRunsRoundALoneTriangleIsFilledRoundIt) {
-  const Mesh grid = test::regular_grid(16, 16, 1.0);
-  const auto in_square = [&](int f) {
-    const Vec3 c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0;
-    return c.x() > 6 && c.x() < 10 && c.y() > 6 && c.y() < 10;
-  };
-  // Candidates: faces of the square with one corner on its border and two inside; keep the first
-  // whose loop boundary_loops traces into the square's.
-  for (int lone = 0; lone < grid.num_faces(); ++lone) {
-    if (!in_square(lone)) continue;
-    int inner = 0;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 p = grid.V.row(grid.F(lone, k)).transpose();
-      inner += p.x() > 6.5 && p.x() < 9.5 && p.y() > 6.5 && p.y() < 9.5;
-    }
-    if (inner != 2) continue;
-    Mesh holed;
-    holed.V = grid.V;
-    std::vector<int> kept;
-    for (int f = 0; f < grid.num_faces(); ++f)
-      if (f == lone || !in_square(f)) kept.push_back(f);
-    holed.F.resize(static_cast<int>(kept.size()), 3);
-    for (int i = 0; i < static_cast<int>(kept.size()); ++i) holed.F.row(i) = grid.F.row(kept[i]);
-    if (boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices())).size() != 2) continue;
+  const GridWithSquareHole square;
+  // Keep the first face hanging at one corner whose loop boundary_loops traces into the square's.
+  for (int lone : square.hanging_at_one_corner()) {
+    std::vector<int> row(1);
+    const Mesh holed = square.holed({lone}, &row);
+    if (loop_count(holed) != 2) continue;
     FillOptions o = options_for(Continuity::G2);
     o.skip_largest = true;
     Mesh filled = holed;
     const FillReport r = fill_holes(filled, o);
     const auto hole = std::find_if(r.holes.begin(), r.holes.end(), [](const HoleReport& h) { return h.border_edges == 19; });
     ASSERT_NE(hole, r.holes.end());
-    EXPECT_EQ(hole->lone_triangle, static_cast<int>(std::find(kept.begin(), kept.end(), lone) - kept.begin()));
+    EXPECT_EQ(hole->lone_triangle, row[0]);
     EXPECT_FALSE(hole->around_a_face);
     EXPECT_EQ(hole->status, HoleStatus::filled) << hole->reason;
     EXPECT_FALSE(open_at_lone_triangle(r, *hole));
@@ -317,31 +348,12 @@ TEST(FillLoneTriangle, AHoleWhoseLoopAlsoRunsRoundALoneTriangleIsFilledRoundIt) 
 // traced into the hole's loop, the other a loop of its own that pinches the border and is never
 // filled. The hole fails at that pinch, and its reason names both triangles with one repair hint.
 TEST(FillLoneTriangle, AHoleFailingAtOneLoneTriangleAndRunningRoundAnotherGetsOneRepairHint) {
-  const Mesh grid = test::regular_grid(16, 16, 1.0);
-  const auto in_square = [&](int f) {
-    const Vec3 c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0;
-    return c.x() > 6 && c.x() < 10 && c.y() > 6 && c.y() < 10;
-  };
-  std::vector<int> hanging;  // faces of the square with one corner on its border and two inside
-  for (int f = 0; f < grid.num_faces(); ++f) {
-    if (!in_square(f)) continue;
-    int inner = 0;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 p = grid.V.row(grid.F(f, k)).transpose();
-      inner += p.x() > 6.5 && p.x() < 9.5 && p.y() > 6.5 && p.y() < 9.5;
-    }
-    if (inner == 2) hanging.push_back(f);
-  }
+  const GridWithSquareHole square;
+  const std::vector<int> hanging = square.hanging_at_one_corner();
   for (std::size_t i = 0; i < hanging.size(); ++i)
     for (std::size_t j = i + 1; j < hanging.size(); ++j) {
-      Mesh holed;
-      holed.V = grid.V;
-      std::vector<int> kept;
-      for (int f = 0; f < grid.num_faces(); ++f)
-        if (f == hanging[i] || f == hanging[j] || !in_square(f)) kept.push_back(f);
-      holed.F.resize(static_cast<int>(kept.size()), 3);
-      for (int k = 0; k < static_cast<int>(kept.size()); ++k) holed.F.row(k) = grid.F.row(kept[k]);
-      if (boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices())).size() != 3) continue;
+      const Mesh holed = square.holed({hanging[i], hanging[j]});
+      if (loop_count(holed) != 3) continue;
       FillOptions o = options_for(Continuity::G2, FairMethod::harmonic);
       o.skip_largest = true;
       Mesh filled = holed;
@@ -368,32 +380,20 @@ TEST(FillLoneTriangle, AHoleFailingAtOneLoneTriangleAndRunningRoundAnotherGetsOn
 // the piece's loop, takes the piece in, manifold; where the piece's loop fails, its reason says
 // what the loop is (bench_stress --seed 2001, spot trial 2002: the joint patch crossed the mesh).
 TEST(FillLoneTriangle, APieceWithNoVertexInsideHangingInAHoleIsTakenInOrNamed) {
-  const Mesh grid = test::regular_grid(16, 16, 1.0);
-  const auto in_square = [&](int f) {
-    const Vec3 c = (grid.V.row(grid.F(f, 0)) + grid.V.row(grid.F(f, 1)) + grid.V.row(grid.F(f, 2))) / 3.0;
-    return c.x() > 6 && c.x() < 10 && c.y() > 6 && c.y() < 10;
-  };
-  const auto on_square_border = [&](int v) {
-    const Vec3 p = grid.V.row(v).transpose();
-    return !(p.x() > 6.5 && p.x() < 9.5 && p.y() > 6.5 && p.y() < 9.5);
-  };
+  const GridWithSquareHole square;
+  const Mesh& grid = square.grid;
   const Topology topo = build_topology(grid.F, grid.num_vertices());
   for (int e = 0; e < topo.edges.rows(); ++e) {
     if (topo.edge_faces.size(e) != 2) continue;
     const int a = topo.edge_faces.row(e)[0], b = topo.edge_faces.row(e)[1];
-    if (!in_square(a) || !in_square(b)) continue;
+    if (!square.in_square(a) || !square.in_square(b)) continue;
     std::set<int> corners;
     for (int k = 0; k < 3; ++k) corners.insert({grid.F(a, k), grid.F(b, k)});
-    if (std::count_if(corners.begin(), corners.end(), on_square_border) != 1) continue;
-    const int hanging = *std::find_if(corners.begin(), corners.end(), on_square_border);
-    Mesh holed;
-    holed.V = grid.V;
-    std::vector<int> kept;
-    for (int f = 0; f < grid.num_faces(); ++f)
-      if (f == a || f == b || !in_square(f)) kept.push_back(f);
-    holed.F.resize(static_cast<int>(kept.size()), 3);
-    for (int k = 0; k < static_cast<int>(kept.size()); ++k) holed.F.row(k) = grid.F.row(kept[k]);
-    if (boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices())).size() != 3) continue;
+    const auto on_border = [&](int v) { return square.on_square_border(v); };
+    if (std::count_if(corners.begin(), corners.end(), on_border) != 1) continue;
+    const int hanging = *std::find_if(corners.begin(), corners.end(), on_border);
+    const Mesh holed = square.holed({a, b});
+    if (loop_count(holed) != 3) continue;
     FillOptions o = options_for(Continuity::G2, FairMethod::harmonic);
     o.skip_largest = true;
     const auto with_edges = [](const FillReport& r, int edges) {
