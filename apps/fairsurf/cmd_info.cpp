@@ -79,8 +79,8 @@ void print_text(const std::string& path, const ReadReport& read, const MeshSumma
     std::cout << " (edges: " << join(s.boundary_loop_lengths) << ")";
   if (s.lone_triangles > 0)
     std::cout << "\nlone triangles: " << s.lone_triangles
-              << " (every edge on the border: fill never fills one's own loop, and a hole at whose border one "
-                 "hangs may fail until repair welds or removes it)";
+              << " (every edge on the border: fill takes one hanging at a hole's border into that hole's "
+                 "patch where it can, and never fills one's loop alone)";
   std::cout << "\ncomponents: " << s.components << "\n"
             << "euler characteristic: " << s.euler_characteristic << "\n"
             << "genus: " << genus_text(s, report) << "\n";

@@ -418,9 +418,14 @@ void retriangulate_if_failed(const Mesh& mesh, const Topology& topo, const std::
                            "failed too (" + failed_again + ")";
 }
 
+// Whether a loop of `group` runs around a lone triangle, which the group's patch takes in.
+bool takes_in_a_lone_triangle(const std::vector<HoleReport>& reports, const std::vector<int>& group) {
+  return std::any_of(group.begin(), group.end(), [&](int h) { return reports[h].around_a_face; });
+}
+
 // Fills `group` from the membrane and the refined triangulation (fill_from_membrane), triangulated
 // again where that fill folds back (retriangulate_if_folded_back) or fails (retriangulate_if_failed),
-// and commits the fill.
+// and commits the fill, unless it folds back against a lone triangle it takes in.
 void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                              const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
                              const FillOptions& options, const FillObserver& observer,
@@ -436,6 +441,18 @@ void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector
   else
     retriangulate_if_failed(mesh, current, loops, group, patch_loops, patches, options, observer, unfilled, reports,
                             outcome);
+  if (outcome.reason.empty() && takes_in_a_lone_triangle(reports, group) && group_folds_back(reports, group)) {
+    // A lone triangle folded against the patch that took it in: not a fill of the surface it was
+    // cut from; the group fails, and the triangle's loop is reported as not taken in.
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "the patch that takes the lone triangle in folds back (it turns the normal across the border by "
+                  "%.1f deg)",
+                  largest_border_angle(reports, group) * kDegrees);
+    for (std::size_t k = 0; k < group.size(); ++k) reports[group[k]] = unfilled[k];
+    mark(reports, group, HoleStatus::failed, text);
+    return;
+  }
   if (outcome.reason.empty()) commit(outcome.filled, mesh, filled);
 }
 
@@ -462,6 +479,17 @@ std::string hole_list(const std::vector<int>& holes) {
   return text;
 }
 
+// Whether loop `h` shares a vertex with a loop of `group` around a lone triangle.
+bool beside_a_lone_triangle(const std::vector<std::vector<int>>& loops, const std::vector<int>& group,
+                            const std::vector<HoleReport>& reports, int h) {
+  for (int other : group) {
+    if (other == h || !reports[other].around_a_face) continue;
+    for (int v : loops[other])
+      if (std::find(loops[h].begin(), loops[h].end(), v) != loops[h].end()) return true;
+  }
+  return false;
+}
+
 // A joint group that failed as a whole (fill_group_falling_back): each hole again alone, in order,
 // the others open or as filled before it, so that one hole no fairing can close (the outer border of
 // an open surface) does not keep the holes whose rings overlap its own open. A hole filled alone
@@ -476,6 +504,9 @@ void fill_failed_group_one_by_one(Mesh& mesh, const Topology& topo, const std::v
     const std::string joint_fill = "the joint fill with " + hole_list(r.filled_with);
     const std::string joint = joint_fill + " failed (" + joint_failure + ")";
     r.filled_with.clear();
+    // A lone triangle's loop alone, or a loop through its pinch alone, could only close a cone
+    // there: they keep the joint failure (report_lone_triangles_not_taken_in says the rest).
+    if (r.around_a_face || beside_a_lone_triangle(loops, group, reports, h)) continue;
     std::string relink_error;
     const auto patch_loops = relinked_loops(mesh, topo, loops, {h}, relink_error);
     if (!patch_loops) {
@@ -575,6 +606,7 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
       fill_failed_group_one_by_one(mesh, topo, loops, group, options, observer, report.holes, filled);
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
   }
+  fill_detail::report_lone_triangles_not_taken_in(loops, topo, report.holes);
   for (auto& r : report.holes) {
     if (r.status != HoleStatus::failed) continue;
     if (r.lone_triangle >= 0) add_lone_triangle_reason(r);

@@ -56,7 +56,7 @@ bool fill_alone_joins_the_fans(const Faces& F, const Topology& topo, const std::
 // (border_pinches.h), unless the loop's patch alone joins them (fill_alone_joins_the_fans). The
 // reason says why the other loop is not filled (`reports`, as select_holes or this check left
 // them), and `pinched_by` names it; a lone triangle hanging at the vertex (debris a scan or a cut
-// leaves) is never filled, and repair is what removes it.
+// leaves) that is not taken into a patch is what repair removes.
 std::string unfillable_border(int hole, const Faces& F, const Topology& topo, const std::vector<std::vector<int>>& loops,
                               const std::vector<int>& border_edges,
                               const std::unordered_map<int, std::vector<int>>& pinches,
@@ -182,8 +182,8 @@ bool borders_a_flat_piece(const Vertices& V, const Faces& F, const Topology& top
 
 // Marks the loops that are not to be filled as skipped, with the reason; returns the others.
 std::vector<int> select_holes(const Vertices& V, const Faces& F, const Topology& topo,
-                              const std::vector<std::vector<int>>& loops, const FillOptions& options,
-                              std::vector<HoleReport>& reports) {
+                              const std::vector<std::vector<int>>& loops, const std::vector<int>& border_edges,
+                              const FillOptions& options, std::vector<HoleReport>& reports) {
   const int n = static_cast<int>(loops.size());
   std::vector<char> selected(n, options.holes.empty() ? 1 : 0);
   for (int i : options.holes) {
@@ -214,8 +214,10 @@ std::vector<int> select_holes(const Vertices& V, const Faces& F, const Topology&
                           std::to_string(options.max_hole_edges);
       continue;
     }
-    if (reports[i].around_a_face) {
-      reports[i].reason = "the loop runs around a lone triangle: filling it would add that face again, reversed";
+    const bool at_pinch =
+        std::any_of(loops[i].begin(), loops[i].end(), [&](int v) { return border_edges[v] > 2; });
+    if (reports[i].around_a_face && !at_pinch) {
+      reports[i].reason = kLoneTriangleSkipped;
       continue;
     }
     reports[i].lone_triangle = lone_triangle_on(F, topo, loops[i]);
@@ -246,13 +248,13 @@ std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topolog
                                 const std::vector<std::vector<int>>& loops, const FillOptions& options,
                                 std::vector<HoleReport>& reports) {
   const std::vector<int> border_edges = detail::border_edge_counts(topo);
-  const std::vector<int> chosen = select_holes(V, F, topo, loops, options, reports);
+  const std::vector<int> chosen = select_holes(V, F, topo, loops, border_edges, options, reports);
   std::vector<char> is_chosen(loops.size(), 0);
   for (int h : chosen) is_chosen[h] = 1;
   const auto pinches = holes_at_pinches(loops, border_edges);
   // A hole found unfillable is not filled either, so the holes it shares a pinch with are checked
-  // again: along a chain of pinches that ends at a lone triangle, each hole is filled only where its
-  // patch alone can make its pinch manifold.
+  // again: along a chain of pinches that ends at a lone triangle not taken in, each hole is filled
+  // only where its patch alone can make its pinch manifold.
   for (bool changed = true; changed;) {
     changed = false;
     for (int h : chosen) {
@@ -260,15 +262,45 @@ std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topolog
       int pinched_by = -1;
       const std::string bad = unfillable_border(h, F, topo, loops, border_edges, pinches, is_chosen, reports, pinched_by);
       if (bad.empty()) continue;
-      reports[h].status = HoleStatus::failed, reports[h].reason = bad, reports[h].pinched_by = pinched_by;
       is_chosen[h] = 0;
       changed = true;
+      if (reports[h].around_a_face) {  // not taken into a hole's patch: as elsewhere
+        reports[h].reason = kLoneTriangleSkipped;
+        continue;
+      }
+      reports[h].status = HoleStatus::failed, reports[h].reason = bad, reports[h].pinched_by = pinched_by;
     }
   }
   std::vector<int> fillable;
   for (int h : chosen)
     if (is_chosen[h]) fillable.push_back(h);
   return fillable;
+}
+
+void report_lone_triangles_not_taken_in(const std::vector<std::vector<int>>& loops, const Topology& topo,
+                                        std::vector<HoleReport>& reports) {
+  std::vector<char> reverted(loops.size(), 0);
+  for (HoleReport& r : reports)
+    if (r.around_a_face && r.status == HoleStatus::failed) {
+      r.status = HoleStatus::skipped, r.reason = kLoneTriangleSkipped, r.pinched_by = -1;
+      reverted[static_cast<std::size_t>(r.index)] = 1;
+    }
+  if (std::find(reverted.begin(), reverted.end(), 1) == reverted.end()) return;
+  const auto pinches = holes_at_pinches(loops, detail::border_edge_counts(topo));
+  for (HoleReport& r : reports) {
+    if (r.status != HoleStatus::failed || r.around_a_face) continue;
+    for (int v : loops[static_cast<std::size_t>(r.index)]) {
+      const auto at = pinches.find(v);
+      if (at == pinches.end()) continue;
+      const auto lone = std::find_if(at->second.begin(), at->second.end(), [&](int h) { return reverted[h]; });
+      if (lone == at->second.end()) continue;
+      r.reason = "non-manifold border: vertex " + std::to_string(v) + " is also on hole " + std::to_string(*lone) +
+                 ", which is not filled (" + std::string(kLoneTriangleSkipped) + "; the fill that took it in failed (" +
+                 r.reason + "))" + std::string(kLoneTriangleRepairHint);
+      r.pinched_by = *lone;
+      break;
+    }
+  }
 }
 
 }  // namespace fairsurf::fill_detail

@@ -345,17 +345,20 @@ TEST(FillLoneTriangle, AHoleWhoseLoopAlsoRunsRoundALoneTriangleIsFilledRoundIt) 
 }
 
 // The same square with two of its faces left, each hanging at a corner on the square's border: one
-// traced into the hole's loop, the other a loop of its own that pinches the border and is never
-// filled. The hole fails at that pinch, and its reason names both triangles with one repair hint.
+// traced into the hole's loop, the other a loop of its own that pinches the border and, not
+// selected, is not taken into the hole's patch. The hole fails at that pinch, and its reason names
+// both triangles with one repair hint.
 TEST(FillLoneTriangle, AHoleFailingAtOneLoneTriangleAndRunningRoundAnotherGetsOneRepairHint) {
   const GridWithSquareHole square;
   const std::vector<int> hanging = square.hanging_at_one_corner();
   for (std::size_t i = 0; i < hanging.size(); ++i)
     for (std::size_t j = i + 1; j < hanging.size(); ++j) {
       const Mesh holed = square.holed({hanging[i], hanging[j]});
-      if (loop_count(holed) != 3) continue;
+      const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+      const auto traced = std::find_if(loops.begin(), loops.end(), [](const auto& l) { return l.size() == 19; });
+      if (loops.size() != 3 || traced == loops.end()) continue;
       FillOptions o = options_for(Continuity::G2, FairMethod::harmonic);
-      o.skip_largest = true;
+      o.holes = {static_cast<int>(traced - loops.begin())};  // the other triangle's loop is not taken in
       Mesh filled = holed;
       const FillReport r = fill_holes(filled, o);
       const auto hole = std::find_if(r.holes.begin(), r.holes.end(), [](const HoleReport& h) { return h.border_edges == 19; });
@@ -774,9 +777,9 @@ int hole_through(const std::vector<std::vector<int>>& loops, int x, int y) {
   return -1;
 }
 
-// A chain of pinches: B cannot be filled (the lone triangle's loop never is, and B's patch would
-// close the fan beside it into a cone). A's patch alone joins the fans of its corner, so A is
-// filled though B stays open.
+// A chain of pinches: B cannot be filled where the lone triangle's loop is not (here it is not
+// selected, so no patch takes the triangle in, and B's patch would close the fan beside it into a
+// cone). A's patch alone joins the fans of its corner, so A is filled though B stays open.
 TEST(FillPinches, AHoleTouchingAHoleThatALoneTriangleKeepsOpenIsFilledAlone) {
   const Mesh holed = test::grid_with_chained_pinches();
   const auto loops = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
@@ -785,7 +788,7 @@ TEST(FillPinches, AHoleTouchingAHoleThatALoneTriangleKeepsOpenIsFilledAlone) {
   ASSERT_GE(b, 0);
   ASSERT_NE(a, b);
   FillOptions o = options_for(Continuity::G2, FairMethod::harmonic);
-  o.skip_largest = true;
+  o.holes = {a, b};
   Mesh filled = holed;
   const FillReport r = fill_holes(filled, o);
   const HoleReport& hole_b = r.holes[b];
@@ -833,31 +836,45 @@ TEST(FillPinches, RepairKeepingTheBorderPinchesLetsTheChainBeFilled) {
 }
 
 // A lone triangle hanging at a vertex of a hole's border (debris a scan or a cut leaves) pinches the
-// border there, and its loop is never filled (its fill could only be the face again). The hole
-// fails, and says which loop pinches it, why that one is not filled and what removes it; after
-// repair (the vertex split, the lone triangle removed as a small component) it is filled.
-TEST(FillPinches, AHoleWithALoneTriangleHangingAtItsBorderSaysRepairRemovesIt) {
+// border there. Filled alone its loop could only be the face again; filled with the hole, in one
+// patch relinked at the vertex, the triangle is taken in: both loops filled, the vertex manifold,
+// the triangle kept. Where the triangle's loop is not selected, the hole fails at that pinch and
+// says which loop pinches it, why that one is not filled and what removes it; after repair (the
+// vertex split, the lone triangle removed as a small component) it is filled.
+TEST(FillPinches, AHoleWithALoneTriangleHangingAtItsBorderTakesItIn) {
   int pinch = -1;
   Mesh holed = test::sphere_hole_with_lone_triangle(&pinch);
+  const auto lone_of = [](const FillReport& r) {
+    return std::find_if(r.holes.begin(), r.holes.end(), [](const HoleReport& h) { return h.border_edges == 3; });
+  };
   Mesh filled = holed;
   const FillReport r = fill_holes(filled, options_for(Continuity::G2, FairMethod::harmonic));
   ASSERT_EQ(r.holes.size(), 2u);
-  EXPECT_EQ(r.filled, 0);
-  EXPECT_EQ(r.failed, 1);
-  EXPECT_EQ(r.skipped, 1);
-  const auto lone = std::find_if(r.holes.begin(), r.holes.end(), [](const HoleReport& h) { return h.border_edges == 3; });
+  const auto lone = lone_of(r);
   ASSERT_NE(lone, r.holes.end());
   const HoleReport& hole = r.holes[lone == r.holes.begin() ? 1 : 0];
-  EXPECT_EQ(hole.status, HoleStatus::failed);
-  EXPECT_EQ(hole.reason, "non-manifold border: vertex " + std::to_string(pinch) + " is also on hole " +
-                             std::to_string(lone->index) + ", which is not filled (" + lone->reason +
-                             "); repair splits the vertex and removes the lone triangle")
-      << hole.reason;
-  EXPECT_EQ(hole.pinched_by, lone->index);
   EXPECT_TRUE(lone->around_a_face);
   EXPECT_FALSE(hole.around_a_face);
-  EXPECT_TRUE(open_at_lone_triangle(r, hole));
-  EXPECT_EQ(filled.F, holed.F);
+  EXPECT_EQ(r.filled, 2) << hole.reason << lone->reason;
+  EXPECT_TRUE(lone->patch_shared_with == hole.index || hole.patch_shared_with == lone->index);
+  EXPECT_TRUE(validate(filled).manifold());
+  EXPECT_EQ(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).size(), 0u);
+  EXPECT_EQ(filled.F.topRows(holed.num_faces()), holed.F);  // the triangle kept, with every input face
+
+  FillOptions only_the_hole = options_for(Continuity::G2, FairMethod::harmonic);
+  only_the_hole.holes = {hole.index};
+  Mesh kept = holed;
+  const FillReport alone = fill_holes(kept, only_the_hole);
+  const auto not_selected = lone_of(alone);
+  const HoleReport& failed = alone.holes[static_cast<std::size_t>(hole.index)];
+  EXPECT_EQ(failed.status, HoleStatus::failed);
+  EXPECT_EQ(failed.reason, "non-manifold border: vertex " + std::to_string(pinch) + " is also on hole " +
+                               std::to_string(not_selected->index) + ", which is not filled (" +
+                               not_selected->reason + "); repair splits the vertex and removes the lone triangle")
+      << failed.reason;
+  EXPECT_EQ(failed.pinched_by, not_selected->index);
+  EXPECT_TRUE(open_at_lone_triangle(alone, failed));
+  EXPECT_EQ(kept.F, holed.F);
 
   const RepairReport repaired = repair(holed);
   EXPECT_EQ(repaired.small_components_removed, 1);

@@ -1009,11 +1009,12 @@ TEST(RealHoleParts, ACrossingWithAnotherPartPointsToBlend) {
 // A cut of spot (`bench_stress --section fill --cut irregular --seed 101`, trial 125: a blob of 354
 // faces) leaves a 79-edge hole, a lone triangle hanging at one vertex of its border, and a 4-edge
 // hole touching it at another vertex, where the 4-edge loop runs along both border edges of a
-// single face: its patch alone would close that face's fan into a cone beside the blob's fan. The
-// blob cannot be filled (the lone triangle's loop never is), so neither can the 4-edge hole, and it
-// says so, naming the blob and why the blob is open, and the CLI's hint to repair follows the
-// chain. It was filled alone before and failed at the vertex ("the patch makes vertex 1539
-// non-manifold"), without either. After repair every hole is filled.
+// single face: its patch alone would close that face's fan into a cone beside the blob's fan. By
+// default the blob's patch takes the lone triangle in, and all three are filled. With the
+// triangle's loop left out, the blob cannot be filled, so neither can the 4-edge hole, and it says
+// so, naming the blob and why the blob is open, and the CLI's hint to repair follows the chain. It
+// was filled alone before and failed at the vertex ("the patch makes vertex 1539 non-manifold"),
+// without either. After repair every hole is filled.
 constexpr int kSpotPinchChainFaces[] = {
     772, 773, 775, 776, 777, 778, 779, 780, 781, 782, 783, 784, 785, 787, 940, 941, 942, 943, 946, 956, 957, 964,
     965, 966, 967, 968, 969, 970, 971, 972, 973, 974, 975, 976, 977, 978, 979, 980, 982, 983, 992, 993, 996, 997,
@@ -1041,9 +1042,17 @@ TEST(RealHolePinchChain, AHoleWhosePatchAloneWouldMakeAConeAtItsPinchSaysWhichHo
   Mesh cut = test::cut_faces(truth, kSpotPinchChainFaces);
   FillOptions options;
   options.method = FairMethod::harmonic;
+  Mesh taken_in = cut;  // by default the blob's patch takes the lone triangle in, and all are filled
+  const FillReport all = fill_holes(taken_in, options);
+  EXPECT_EQ(all.filled, 3);
+  EXPECT_TRUE(validate(taken_in).manifold());
+
+  const auto loops = boundary_loops(cut.F, build_topology(cut.F, cut.num_vertices()));
+  ASSERT_EQ(loops.size(), 3u);
+  for (int h = 0; h < 3; ++h)  // the triangle's loop left out: no patch takes it in
+    if (loops[static_cast<std::size_t>(h)].size() > 3) options.holes.push_back(h);
   Mesh filled = cut;
   const FillReport report = fill_holes(filled, options);
-  ASSERT_EQ(report.holes.size(), 3u);
   const auto with_edges = [&](int edges) {
     return std::find_if(report.holes.begin(), report.holes.end(),
                         [&](const HoleReport& h) { return h.border_edges == edges; });
@@ -1066,6 +1075,7 @@ TEST(RealHolePinchChain, AHoleWhosePatchAloneWouldMakeAConeAtItsPinchSaysWhichHo
   EXPECT_EQ(filled.F, cut.F);
 
   repair(cut);
+  options.holes.clear();
   const FillReport after = fill_holes(cut, options);
   EXPECT_EQ(after.failed, 0);
   EXPECT_GE(after.filled, 2);
@@ -1137,4 +1147,145 @@ TEST(RealHoleLoneTriangle, AHoleWhoseLoopRunsRoundALoneTriangleAndFailsSaysRepai
   EXPECT_EQ(after.holes.front().status, HoleStatus::filled) << after.holes.front().reason;
   EXPECT_EQ(after.holes.front().lone_triangle, -1);
   EXPECT_TRUE(validate(repaired).manifold());
+}
+
+// bench_stress --section fill --cut irregular --seed 901, spot trial 909 (the cut's faces replayed): a
+// blob leaves one face of the cow hanging at a vertex of its 96-edge border. Fill takes it into the
+// hole's patch (the two loops relinked at the vertex): both filled, manifold, the face kept. Before,
+// the hole failed at the lone triangle and only repair, removing it, let it be filled.
+constexpr int kSpotLoneTriangleInBlobFaces[] = {
+    1464, 1465, 1466, 1467, 1468, 1469, 1470, 1471, 1472, 1473, 1474, 1475, 1476, 1477, 1478, 1479, 1480, 1481,
+    1482, 1483, 1484, 1485, 1486, 1487, 1488, 1489, 1490, 1491, 1492, 1493, 1494, 1495, 1544, 1545, 1548, 1549,
+    1550, 1551, 1554, 1555, 1560, 1561, 1562, 1563, 1564, 1565, 1566, 1567, 1568, 1569, 1570, 1571, 1572, 1573,
+    1574, 1575, 1590, 1644, 1656, 1657, 1658, 1659, 1662, 1663, 1664, 1665, 1668, 1669, 1670, 1671, 1882, 1883,
+    1888, 1889, 1890, 1891, 1892, 1893, 1894, 1895, 1944, 1950, 1951, 1976, 1977, 1978, 1979, 1982, 1983, 1984,
+    1985, 1987, 1988, 1989, 1990, 1991, 1993, 1999, 2008, 2009, 2010, 2011, 2012, 2013, 2014, 2015, 2016, 2017,
+    2018, 2019, 2020, 2021, 2022, 2023, 2024, 2025, 2026, 2027, 2028, 2029, 2030, 2031, 2032, 2033, 2034, 2035,
+    2036, 2037, 2039, 2156, 2157, 2160, 2161, 2162, 2163, 2166, 2167, 2684, 2685, 2686, 2687, 2688, 2689, 2690,
+    2691, 2692, 2693, 2694, 2695, 2696, 2697, 2698, 2699, 2703, 2706, 2716, 2717, 2718, 2719, 2720, 2721, 2723,
+    2724, 2725, 2726, 2727, 2728, 2729, 2730, 2731, 2732, 2733, 2734, 2735, 2736, 2737, 2738, 2739, 2740, 2741,
+    2742, 2743, 2744, 2745, 2746, 2747, 2758, 2768, 2769, 2770, 2772, 2773, 2774, 2776, 2778, 2779, 4392, 4393,
+    4394, 4395, 4396, 4397, 4398, 4399, 4400, 4401, 4402, 4403, 4404, 4405, 4406, 4407, 4408, 4409, 4410, 4411,
+    4412, 4413, 4414, 4415, 4416, 4417, 4418, 4419, 4420, 4421, 4422, 4423, 4475, 4476, 4477, 4478, 4479, 4481,
+    4482, 4488, 4489, 4490, 4491, 4493, 4494, 4495, 4496, 4497, 4498, 4499, 4500, 4501, 4502, 4503, 4512, 4584,
+    4585, 4586, 4587, 4589, 4590, 4591, 4593, 4594, 4595, 4596, 4597, 4598, 4599, 4816, 4817, 4820, 4821, 4823,
+    4872, 4876, 4904, 4905, 4906, 4907, 4910, 4912, 4914, 4915, 4916, 4917, 4918, 4919, 4936, 4937, 4938, 4939,
+    4940, 4941, 4942, 4943, 4944, 4945, 4946, 4947, 4948, 4949, 4950, 4951, 4953, 4954, 4955, 4956, 4957, 4958,
+    4959, 4960, 4961, 4962, 4963, 4964, 4966, 4967, 5084, 5086, 5087, 5088, 5089, 5090, 5091, 5092, 5093, 5094,
+    5095, 5612, 5613, 5614, 5615, 5616, 5617, 5618, 5619, 5620, 5621, 5622, 5623, 5624, 5625, 5626, 5627, 5628,
+    5629, 5630, 5631, 5632, 5646, 5647, 5648, 5650, 5651, 5652, 5653, 5654, 5655, 5656, 5657, 5658, 5659, 5660,
+    5661, 5662, 5663, 5664, 5665, 5666, 5667, 5668, 5669, 5670, 5671, 5672, 5673, 5674, 5675, 5680, 5684, 5685,
+    5696, 5697, 5700, 5701, 5702, 5703, 5705, 5706, 5707,
+};
+TEST(RealHoleLoneTriangle, ALoneTriangleLeftInABlobIsTakenIntoItsPatch) {
+  const Mesh truth = read_mesh(test::data_path("spot.obj"));
+  const Mesh cut = test::cut_faces(truth, kSpotLoneTriangleInBlobFaces);
+  Mesh filled = cut;
+  const FillReport report = fill_holes(filled, FillOptions{});
+  ASSERT_EQ(report.holes.size(), 2u);
+  const auto lone = std::find_if(report.holes.begin(), report.holes.end(), [](const HoleReport& h) { return h.around_a_face; });
+  ASSERT_NE(lone, report.holes.end());
+  EXPECT_EQ(report.filled, 2) << report.holes[0].reason << report.holes[1].reason;
+  EXPECT_TRUE(validate(filled).manifold());
+  EXPECT_EQ(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).size(), 0u);
+  EXPECT_EQ(filled.F.topRows(cut.num_faces()), cut.F);
+}
+
+// --seed 901, airplane trial 933: a lone triangle hangs at the border of a 47-edge blob, and every
+// patch that takes it in folds back against it (more than a right angle across the border, where the
+// uncut wing reads 18 degrees). Such a fill is not delivered: the triangle's loop is reported as not
+// taken in, and the hole fails at its pinch, saying why, with the repair hint.
+constexpr int kAirplaneFoldedLoneTriangleFaces[] = {
+    14701, 14790, 14791, 14792, 14879, 14880, 14965, 14966, 14967, 15050, 15051, 15052, 15053, 15055, 15134,
+    15135, 15136, 15137, 15138, 15139, 15140, 15147, 15148, 15152, 15153, 15218, 15219, 15220, 15221, 15222,
+    15223, 15224, 15227, 15231, 15232, 15236, 15301, 15302, 15303, 15304, 15305, 15306, 15307, 15312, 15313,
+    15314, 15319, 15320, 15384, 15385, 15386, 15387, 15388, 15389, 15390, 15393, 15394, 15396, 15397, 15402,
+    15466, 15467, 15468, 15469, 15470, 15471, 15474, 15475, 15476, 15477, 15483, 15484, 15547, 15548, 15549,
+    15550, 15551, 15552, 15553, 15556, 15557, 15558, 15564, 15627, 15628, 15629, 15630, 15631, 15632, 15633,
+    15636, 15637, 15643, 15644, 15706, 15707, 15708, 15709, 15710, 15711, 15715, 15721, 15784, 15785, 15786,
+    15787, 15788, 15793, 15862, 15863, 15864, 15866, 15940, 15941, 15956, 16018,
+};
+
+TEST(RealHoleLoneTriangle, APatchThatFoldsBackAgainstTheLoneTriangleItTakesInIsNotDelivered) {
+  const Mesh truth = read_mesh(test::data_path("airplane.obj"));
+  const Mesh cut = test::cut_faces(truth, kAirplaneFoldedLoneTriangleFaces);
+  Mesh filled = cut;
+  const FillReport report = fill_holes(filled, FillOptions{});
+  ASSERT_EQ(report.holes.size(), 2u);
+  const auto lone = std::find_if(report.holes.begin(), report.holes.end(), [](const HoleReport& h) { return h.around_a_face; });
+  ASSERT_NE(lone, report.holes.end());
+  const HoleReport& hole = report.holes[lone == report.holes.begin() ? 1 : 0];
+  EXPECT_EQ(lone->status, HoleStatus::skipped);
+  EXPECT_EQ(hole.status, HoleStatus::failed);
+  EXPECT_EQ(hole.pinched_by, lone->index);
+  EXPECT_NE(hole.reason.find("the patch that takes the lone triangle in folds back (it turns the normal across the "
+                             "border by "),
+            std::string::npos)
+      << hole.reason;
+  EXPECT_TRUE(open_at_lone_triangle(report, hole));
+  EXPECT_EQ(filled.F, cut.F);
+}
+
+// --seed 1, hammer trial 30: two lone triangles hang at the border of a 68-edge blob (a third runs
+// on its own loop), and no patch taking them in can be built. They are reported as not taken in
+// (skipped), and the hole fails at the first one's pinch, with the joint fill's failure and one
+// repair hint; after repair (fill's: the pinches kept, the lone triangles removed) it is filled.
+constexpr int kHammerTwoLoneTrianglesFaces[] = {
+    6154, 6171, 6173, 6185, 6186, 6187, 6193, 6211, 6213, 6214, 6217, 6218, 6220, 6224, 6233, 6235, 6236, 6238,
+    6245, 6246, 6247, 6253, 6260, 6261, 6262, 6267, 6272, 6273, 6274, 6275, 6282, 6284, 6295, 6297, 6303, 6304,
+    6305, 6306, 6307, 6311, 6312, 6314, 6317, 6318, 6319, 6320, 6324, 6325, 6326, 6329, 6331, 6334, 6337, 6338,
+    6339, 6342, 6344, 6345, 6346, 6348, 6349, 6350, 6352, 6353, 6355, 6357, 6358, 6359, 6360, 6361, 6362, 6363,
+    6364, 6365, 6366, 6368, 6371, 6372, 6373, 6378, 6380, 6381, 6382, 6383, 6385, 6386, 6387, 6388, 6389, 6390,
+    6391, 6394, 6395, 6396, 6397, 6399, 6400, 6401, 6402, 6403, 6406, 6407, 6408, 6409, 6411, 6412, 6414, 6415,
+    6416, 6417, 6418, 6419, 6420, 6423, 6424, 6425, 6431, 6432, 6433, 6434, 6435, 6437, 6438, 6439, 6441, 6443,
+    6444, 6445, 6446, 6449, 6450, 6451, 6452, 6453, 6458, 6459, 6461, 6462, 6463, 6464, 6465, 6468, 6470, 6472,
+    6474, 6475, 6476, 6477, 6480, 6481, 6482, 6487, 6488, 6489, 6490, 6493, 6494, 6495, 6496, 6497, 6498, 6500,
+    6501, 6502, 6503, 6505, 6507, 6508, 6510, 6511, 6513, 6514, 6515, 6516, 6517, 6519, 6520, 6521, 6522, 6523,
+    6524, 6525, 6526, 6527, 6528, 6530, 6531, 6532, 6533, 6534, 6535, 6540, 6541, 6545, 6546, 6548, 6549, 6550,
+    6551, 6552, 6553, 6556, 6557, 6558, 6559, 6560, 6561, 6562, 6563, 6567, 6568, 6569, 6570, 6571, 6575, 6577,
+    6578, 6579, 6580, 6581, 6582, 6583, 6584, 6585, 6586, 6587, 6588, 6589, 6590, 6591, 6592, 6594, 6595, 6597,
+    6598, 6600, 6601, 6602, 6603, 6604, 6610, 6611, 6612, 6613, 6614, 6615, 6616, 6617, 6618, 6621, 6622, 6623,
+    6624, 6626, 6632, 6633, 6634, 6636, 6637, 6639, 6640, 6641, 6644, 6647, 6648, 6650, 6652, 6653, 6654, 6655,
+    6656, 6657, 6658, 6659, 6661, 6662, 6663, 6665, 6666, 6667, 6668, 6669, 6670, 6671, 6672, 6673, 6677, 6678,
+    6683, 6684, 6685, 6686, 6690, 6696, 6697, 6698, 6699, 6704, 6705, 6707, 6714, 6716, 6717, 6719, 6721, 6722,
+    6725, 6726, 6727, 6728, 6729, 6754, 6759, 49823, 49826, 49835, 49860, 49865, 49867, 50133, 50134, 50135,
+    50139, 50140, 50141, 50146, 50147, 50148, 50149, 50151, 50154, 50155, 50160, 50161, 50162, 50165, 50168,
+    50171, 50172, 50174, 50175, 50200, 50203, 50208, 50209, 50210,
+};
+
+TEST(RealHoleLoneTriangle, LoneTrianglesNoPatchTakesInAreSkippedAndTheHoleSaysRepairRemovesThem) {
+  const Mesh truth = read_mesh(test::data_path("hammer_rawscan.obj"));
+  Mesh cut = test::cut_faces(truth, kHammerTwoLoneTrianglesFaces);
+  Mesh filled = cut;
+  const FillReport report = fill_holes(filled, FillOptions{});
+  ASSERT_EQ(report.holes.size(), 3u);
+  const auto hole = std::find_if(report.holes.begin(), report.holes.end(), [](const HoleReport& h) { return h.border_edges == 68; });
+  ASSERT_NE(hole, report.holes.end());
+  for (const HoleReport& h : report.holes) {
+    if (h.index == hole->index) continue;
+    EXPECT_TRUE(h.around_a_face);
+    EXPECT_EQ(h.status, HoleStatus::skipped);
+    EXPECT_EQ(h.reason, "the loop runs around a lone triangle: filling it would add that face again, reversed");
+  }
+  EXPECT_EQ(hole->status, HoleStatus::failed);
+  EXPECT_TRUE(hole->reason.starts_with("non-manifold border: vertex ")) << hole->reason;
+  EXPECT_NE(hole->reason.find("; the fill that took it in failed ("), std::string::npos) << hole->reason;
+  ASSERT_GE(hole->lone_triangle, 0);  // a third, on the hole's own loop: one repair hint for all
+  EXPECT_TRUE(hole->reason.ends_with("; the loop also runs round a lone triangle, face " +
+                                     std::to_string(hole->lone_triangle) +
+                                     ", hanging at a vertex it passes twice: repair splits those vertices and "
+                                     "removes the lone triangles"))
+      << hole->reason;
+  EXPECT_EQ(hole->reason.find("repair"), hole->reason.rfind("repair")) << hole->reason;
+  ASSERT_GE(hole->pinched_by, 0);
+  EXPECT_TRUE(report.holes[static_cast<std::size_t>(hole->pinched_by)].around_a_face);
+  EXPECT_TRUE(open_at_lone_triangle(report, *hole));
+  EXPECT_EQ(filled.F, cut.F);
+
+  RepairOptions for_fill;
+  for_fill.keep_border_pinches = true;
+  repair(cut, for_fill);
+  const FillReport after = fill_holes(cut, FillOptions{});
+  EXPECT_EQ(after.failed, 0);
+  EXPECT_TRUE(validate(cut).manifold());
 }

@@ -178,13 +178,23 @@ TEST_F(CliFill, SomeHolesFailingExitsFourAndKeepsTheFilledOnes) {
   EXPECT_EQ(loop_count(read_mesh(path("repaired.obj"))), 1);  // the grid's outer border
 }
 
-// A hole with a lone triangle hanging at its border (test::sphere_hole_with_lone_triangle) fails at
-// that pinch; the hint is --repair, not --skip-largest (the hole is far longer than the triangle's
-// loop, but it is no outer border), and with --repair the hole is filled.
+// A hole with a lone triangle hanging at its border (test::sphere_hole_with_lone_triangle): fill
+// takes the triangle into the hole's patch, exit 0, no loop left. Where the triangle's loop is not
+// selected, the hole fails at that pinch; the hint is --repair, not --skip-largest (the hole is far
+// longer than the triangle's loop, but it is no outer border), and with --repair the hole is filled.
 TEST_F(CliFill, AHoleFailingAtALoneTriangleHintsAtRepair) {
-  write_mesh(path("debris.obj"), test::sphere_hole_with_lone_triangle());
+  const Mesh debris = test::sphere_hole_with_lone_triangle();
+  write_mesh(path("debris.obj"), debris);
+  const auto taken_in = test::run_cli("fill " + quoted(path("debris.obj")) + " -o " + quoted(path("in.obj")) +
+                                      " --method harmonic");
+  EXPECT_EQ(taken_in.exit_code, 0) << taken_in.out;
+  EXPECT_EQ(loop_count(read_mesh(path("in.obj"))), 0);
+
+  const auto loops = boundary_loops(debris.F, build_topology(debris.F, debris.num_vertices()));
+  const auto hole = std::find_if(loops.begin(), loops.end(), [](const auto& l) { return l.size() > 3; });
+  ASSERT_NE(hole, loops.end());
   const auto run = test::run_cli("fill " + quoted(path("debris.obj")) + " -o " + quoted(path("out.obj")) +
-                                 " --method harmonic");
+                                 " --method harmonic --holes " + std::to_string(hole - loops.begin()));
   EXPECT_EQ(run.exit_code, 4) << run.out;
   EXPECT_NE(run.out.find("still holds the 0 holes that were filled; a lone triangle hangs at a pinch of a failed "
                          "hole's border: --repair splits the vertex and removes it"),

@@ -117,8 +117,8 @@ TEST_F(CliInfo, LoneTrianglesAreCounted) {
   fairsurf::write_mesh(debris, fairsurf::test::sphere_hole_with_lone_triangle());
   const CliRun text = run("info " + quoted(debris));
   ASSERT_EQ(text.status, 0) << text.err;
-  EXPECT_NE(text.out.find("\nlone triangles: 1 (every edge on the border: fill never fills one's own loop, and a "
-                          "hole at whose border one hangs may fail until repair welds or removes it)\n"),
+  EXPECT_NE(text.out.find("\nlone triangles: 1 (every edge on the border: fill takes one hanging at a hole's "
+                          "border into that hole's patch where it can, and never fills one's loop alone)\n"),
             std::string::npos)
       << text.out;
   const CliRun json = run("info --json " + quoted(debris));

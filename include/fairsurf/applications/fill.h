@@ -69,9 +69,11 @@ struct FillOptions : FairRegionOptions {
   PatchOptions patch;  ///< triangulation, refinement and membrane of the initial patch
 
   // Which boundary loops are filled. A loop left out is reported as skipped with the reason. A
-  // 3-edge loop around a face of the mesh (a lone triangle) is always skipped: its only fill is
-  // that face again, reversed. So is a loop that is the whole border of a flat piece with no
-  // vertex inside (a face of an unwelded triangle soup): its fill would be the piece reversed.
+  // 3-edge loop around a face of the mesh (a lone triangle) is skipped: its only fill on its own
+  // is that face again, reversed; where the triangle hangs at a vertex of a hole's border, the
+  // hole's patch takes it in instead (the two loops relinked at the vertex), or, where that fails,
+  // it is skipped after all. So is a loop that is the whole border of a flat piece with no vertex
+  // inside (a face of an unwelded triangle soup): its fill would be the piece reversed.
   std::vector<int> holes;   ///< loop indices (boundary_loops order); empty: every loop
   int max_hole_edges = 0;   ///< loops with more border edges are skipped; 0: no limit
   bool skip_largest = false;  ///< leave the longest loop (an open surface's outer border) open
@@ -131,8 +133,10 @@ struct HoleReport {
   /// skipped, or failed at a pinch of its own, a chain that open_at_lone_triangle follows); −1
   /// otherwise.
   int pinched_by = -1;
-  /// The loop runs around a face of the mesh, a lone triangle with every edge on the border: it is
-  /// skipped, since its fill could only be that face again (repair removes such debris).
+  /// The loop runs around a face of the mesh, a lone triangle with every edge on the border: filled
+  /// with the hole at whose border the triangle hangs, in one patch that takes the triangle in;
+  /// skipped elsewhere or where that fails, since its own fill could only be that face again
+  /// (repair removes such debris).
   bool around_a_face = false;
   /// The loop is the whole border of a piece of more than one face with no vertex inside, joined
   /// to the rest of the mesh at this vertex of the loop (a piece hanging inside a hole, as a cut
