@@ -16,6 +16,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <span>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -1177,18 +1178,35 @@ constexpr int kSpotLoneTriangleInBlobFaces[] = {
     5661, 5662, 5663, 5664, 5665, 5666, 5667, 5668, 5669, 5670, 5671, 5672, 5673, 5674, 5675, 5680, 5684, 5685,
     5696, 5697, 5700, 5701, 5702, 5703, 5705, 5706, 5707,
 };
+// `faces` cut out of the data file `name`, filled with the defaults; of its two loops, the one round
+// a lone triangle is `lone`, the other `hole`.
+struct LoneTriangleCut {
+  Mesh cut, filled;
+  FillReport report;
+  const HoleReport* lone = nullptr;
+  const HoleReport* hole = nullptr;
+};
+
+LoneTriangleCut fill_lone_triangle_cut(const std::string& name, std::span<const int> faces) {
+  LoneTriangleCut c;
+  c.cut = test::cut_faces(read_mesh(test::data_path(name)), faces);
+  c.filled = c.cut;
+  c.report = fill_holes(c.filled, FillOptions{});
+  if (c.report.holes.size() != 2) return c;
+  const bool first = c.report.holes[0].around_a_face;
+  c.lone = &c.report.holes[first ? 0 : 1];
+  c.hole = &c.report.holes[first ? 1 : 0];
+  return c;
+}
+
 TEST(RealHoleLoneTriangle, ALoneTriangleLeftInABlobIsTakenIntoItsPatch) {
-  const Mesh truth = read_mesh(test::data_path("spot.obj"));
-  const Mesh cut = test::cut_faces(truth, kSpotLoneTriangleInBlobFaces);
-  Mesh filled = cut;
-  const FillReport report = fill_holes(filled, FillOptions{});
-  ASSERT_EQ(report.holes.size(), 2u);
-  const auto lone = std::find_if(report.holes.begin(), report.holes.end(), [](const HoleReport& h) { return h.around_a_face; });
-  ASSERT_NE(lone, report.holes.end());
-  EXPECT_EQ(report.filled, 2) << report.holes[0].reason << report.holes[1].reason;
-  EXPECT_TRUE(validate(filled).manifold());
-  EXPECT_EQ(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).size(), 0u);
-  EXPECT_EQ(filled.F.topRows(cut.num_faces()), cut.F);
+  const LoneTriangleCut c = fill_lone_triangle_cut("spot.obj", kSpotLoneTriangleInBlobFaces);
+  ASSERT_NE(c.lone, nullptr);
+  EXPECT_TRUE(c.lone->around_a_face);
+  EXPECT_EQ(c.report.filled, 2) << c.hole->reason << c.lone->reason;
+  EXPECT_TRUE(validate(c.filled).manifold());
+  EXPECT_EQ(boundary_loops(c.filled.F, build_topology(c.filled.F, c.filled.num_vertices())).size(), 0u);
+  EXPECT_EQ(c.filled.F.topRows(c.cut.num_faces()), c.cut.F);
 }
 
 // --seed 901, airplane trial 933: a lone triangle hangs at the border of a 47-edge blob, and every
@@ -1207,14 +1225,12 @@ constexpr int kAirplaneFoldedLoneTriangleFaces[] = {
 };
 
 TEST(RealHoleLoneTriangle, APatchThatFoldsBackAgainstTheLoneTriangleItTakesInIsNotDelivered) {
-  const Mesh truth = read_mesh(test::data_path("airplane.obj"));
-  const Mesh cut = test::cut_faces(truth, kAirplaneFoldedLoneTriangleFaces);
-  Mesh filled = cut;
-  const FillReport report = fill_holes(filled, FillOptions{});
-  ASSERT_EQ(report.holes.size(), 2u);
-  const auto lone = std::find_if(report.holes.begin(), report.holes.end(), [](const HoleReport& h) { return h.around_a_face; });
-  ASSERT_NE(lone, report.holes.end());
-  const HoleReport& hole = report.holes[lone == report.holes.begin() ? 1 : 0];
+  const LoneTriangleCut c = fill_lone_triangle_cut("airplane.obj", kAirplaneFoldedLoneTriangleFaces);
+  ASSERT_NE(c.lone, nullptr);
+  EXPECT_TRUE(c.lone->around_a_face);
+  const HoleReport* lone = c.lone;
+  const HoleReport& hole = *c.hole;
+  const FillReport& report = c.report;
   EXPECT_EQ(lone->status, HoleStatus::skipped);
   EXPECT_EQ(hole.status, HoleStatus::failed);
   EXPECT_EQ(hole.pinched_by, lone->index);
@@ -1223,7 +1239,7 @@ TEST(RealHoleLoneTriangle, APatchThatFoldsBackAgainstTheLoneTriangleItTakesInIsN
             std::string::npos)
       << hole.reason;
   EXPECT_TRUE(open_at_lone_triangle(report, hole));
-  EXPECT_EQ(filled.F, cut.F);
+  EXPECT_EQ(c.filled.F, c.cut.F);
 }
 
 // --seed 1, hammer trial 30: two lone triangles hang at the border of a 68-edge blob (a third runs
