@@ -482,12 +482,9 @@ std::string hole_list(const std::vector<int>& holes) {
 // Whether loop `h` shares a vertex with a loop of `group` around a lone triangle.
 bool beside_a_lone_triangle(const std::vector<std::vector<int>>& loops, const std::vector<int>& group,
                             const std::vector<HoleReport>& reports, int h) {
-  for (int other : group) {
-    if (other == h || !reports[other].around_a_face) continue;
-    for (int v : loops[other])
-      if (std::find(loops[h].begin(), loops[h].end(), v) != loops[h].end()) return true;
-  }
-  return false;
+  std::vector<char> lone(loops.size(), 0);
+  for (int other : group) lone[static_cast<std::size_t>(other)] = reports[other].around_a_face;
+  return fill_detail::flagged_loop_at_a_pinch(loops, h, lone).first >= 0;
 }
 
 // A joint group that failed as a whole (fill_group_falling_back): each hole again alone, in order,
@@ -606,7 +603,7 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
       fill_failed_group_one_by_one(mesh, topo, loops, group, options, observer, report.holes, filled);
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
   }
-  fill_detail::report_lone_triangles_not_taken_in(loops, topo, report.holes);
+  fill_detail::report_lone_triangles_not_taken_in(loops, report.holes);
   for (auto& r : report.holes) {
     if (r.status != HoleStatus::failed) continue;
     if (r.lone_triangle >= 0) add_lone_triangle_reason(r);

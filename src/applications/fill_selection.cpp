@@ -277,8 +277,20 @@ std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topolog
   return fillable;
 }
 
-void report_lone_triangles_not_taken_in(const std::vector<std::vector<int>>& loops, const Topology& topo,
-                                        std::vector<HoleReport>& reports) {
+std::pair<int, int> flagged_loop_at_a_pinch(const std::vector<std::vector<int>>& loops, int h,
+                                            const std::vector<char>& candidates) {
+  std::vector<int> flagged;
+  for (int other = 0; other < static_cast<int>(loops.size()); ++other)
+    if (other != h && candidates[static_cast<std::size_t>(other)]) flagged.push_back(other);
+  for (int v : loops[static_cast<std::size_t>(h)])  // the first such vertex along loop h
+    for (int other : flagged) {
+      const std::vector<int>& loop = loops[static_cast<std::size_t>(other)];
+      if (std::find(loop.begin(), loop.end(), v) != loop.end()) return {other, v};
+    }
+  return {-1, -1};
+}
+
+void report_lone_triangles_not_taken_in(const std::vector<std::vector<int>>& loops, std::vector<HoleReport>& reports) {
   std::vector<char> reverted(loops.size(), 0);
   for (HoleReport& r : reports)
     if (r.around_a_face && r.status == HoleStatus::failed) {
@@ -286,20 +298,14 @@ void report_lone_triangles_not_taken_in(const std::vector<std::vector<int>>& loo
       reverted[static_cast<std::size_t>(r.index)] = 1;
     }
   if (std::find(reverted.begin(), reverted.end(), 1) == reverted.end()) return;
-  const auto pinches = holes_at_pinches(loops, detail::border_edge_counts(topo));
   for (HoleReport& r : reports) {
     if (r.status != HoleStatus::failed || r.around_a_face) continue;
-    for (int v : loops[static_cast<std::size_t>(r.index)]) {
-      const auto at = pinches.find(v);
-      if (at == pinches.end()) continue;
-      const auto lone = std::find_if(at->second.begin(), at->second.end(), [&](int h) { return reverted[h]; });
-      if (lone == at->second.end()) continue;
-      r.reason = "non-manifold border: vertex " + std::to_string(v) + " is also on hole " + std::to_string(*lone) +
-                 ", which is not filled (" + std::string(kLoneTriangleSkipped) + "; the fill that took it in failed (" +
-                 r.reason + "))" + std::string(kLoneTriangleRepairHint);
-      r.pinched_by = *lone;
-      break;
-    }
+    const auto [lone, v] = flagged_loop_at_a_pinch(loops, r.index, reverted);
+    if (lone < 0) continue;
+    r.reason = "non-manifold border: vertex " + std::to_string(v) + " is also on hole " + std::to_string(lone) +
+               ", which is not filled (" + std::string(kLoneTriangleSkipped) + "; the fill that took it in failed (" +
+               r.reason + "))" + std::string(kLoneTriangleRepairHint);
+    r.pinched_by = lone;
   }
 }
 

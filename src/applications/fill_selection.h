@@ -7,6 +7,7 @@
 #include <fairsurf/mesh/topology.h>
 
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace fairsurf::fill_detail {
@@ -35,10 +36,15 @@ std::vector<int> fillable_holes(const Vertices& V, const Faces& F, const Topolog
                                 const std::vector<std::vector<int>>& loops, const FillOptions& options,
                                 std::vector<HoleReport>& reports);
 
+/// A loop flagged in `candidates` (one flag per loop), other than `h`, that shares a vertex with
+/// loop `h` (two loops meet only at a pinch of the border), as {loop, vertex}: at the first such
+/// vertex along loop `h`, the loop of lowest index; {−1, −1} if none.
+std::pair<int, int> flagged_loop_at_a_pinch(const std::vector<std::vector<int>>& loops, int h,
+                                            const std::vector<char>& candidates);
+
 /// After the fill: a loop around a lone triangle whose joint fill with its hole failed is reported
 /// skipped, as one that is not taken in, and each hole that failed with it fails at that pinch, with
 /// the repair hint and the joint fill's failure in its reason (and `pinched_by`).
-void report_lone_triangles_not_taken_in(const std::vector<std::vector<int>>& loops, const Topology& topo,
-                                        std::vector<HoleReport>& reports);
+void report_lone_triangles_not_taken_in(const std::vector<std::vector<int>>& loops, std::vector<HoleReport>& reports);
 
 }  // namespace fairsurf::fill_detail

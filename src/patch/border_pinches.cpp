@@ -25,7 +25,6 @@ int find_root(std::vector<int>& parent, int i) {
   return i;
 }
 
-
 // Links, at the pinch p, each incoming half-edge to the outgoing one of the next wedge
 // counter-clockwise about p's normal (next[incoming] = outgoing).
 void link_pinch(const Vertices& V, const Faces& F, const Topology& topo, int p, const std::vector<HalfEdge>& half,
