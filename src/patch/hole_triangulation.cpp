@@ -148,6 +148,9 @@ class Triangulator {
     if (repeat.first < 0 && poly.size() <= options_.max_dynamic_programming_size) return solve(poly, out);
     divided_ = divided_ || repeat.first < 0;
     const auto [a, b] = repeat.first < 0 ? best_cut(poly) : bridge_cut(poly, repeat.first, repeat.second);
+    // The cut is a side of both pieces; a piece may pass one of its ends again (a loop through a
+    // vertex twice), so it is taken now, before either piece could choose it as a diagonal.
+    made_.insert(undirected_key(poly.vertices[a], poly.vertices[b]));
     Polygon first, second;
     for (int t = a; t <= b; ++t) first.vertices.push_back(poly.vertices[t]);
     first.side_normals.assign(poly.side_normals.begin() + a, poly.side_normals.begin() + b);
@@ -194,13 +197,23 @@ class Triangulator {
   // A loop through a vertex twice (a pinch of the border, both occurrences on this hole) is cut by
   // a diagonal from between the occurrences s < t to outside them, so that each piece passes
   // through the vertex once and the dynamic programme never sees it twice. The shortest such
-  // diagonal relative to the shorter arc it cuts off is taken, as in best_cut.
+  // diagonal relative to the shorter arc it cuts off is taken, as in best_cut, among those that
+  // leave each end the loop passes more than once into the hole at that pass (into_hole): a
+  // diagonal drawn to the wrong pass divides the loop across a face hanging there, and no
+  // triangulation of the pieces is then free of folds. Where none does (a vertex's passes too
+  // bent to tell), among all.
   std::pair<int, int> bridge_cut(const Polygon& poly, int s, int t) const {
     const int m = poly.size();
     std::vector<double> arc(m + 1, 0.0);
     for (int q = 0; q < m; ++q)
       arc[q + 1] = arc[q] + (point(V_, poly.vertices[(q + 1) % m]) - point(V_, poly.vertices[q])).norm();
+    std::unordered_map<int, int> passes;
+    for (int v : poly.vertices) ++passes[v];
+    const auto into_hole_at = [&](int from, int to) {
+      return passes[poly.vertices[from]] < 2 || into_hole(poly, from, point(V_, poly.vertices[to]));
+    };
     double best = kInfinity;
+    bool best_into_hole = false;
     std::pair<int, int> cut{-1, -1};
     for (int a = s + 1; a < t; ++a)
       for (int b = 0; b < m; ++b) {
@@ -209,12 +222,40 @@ class Triangulator {
         const int u = poly.vertices[lo], v = poly.vertices[hi];
         const double shorter_arc = std::min(arc[hi] - arc[lo], arc[m] - (arc[hi] - arc[lo]));
         const double ratio = (point(V_, u) - point(V_, v)).norm() / shorter_arc;
-        if (ratio < best && admissible_diagonal(u, v)) best = ratio, cut = {lo, hi};
+        if (!admissible_diagonal(u, v)) continue;
+        const bool fits = into_hole_at(lo, hi) && into_hole_at(hi, lo);
+        if (best_into_hole && !fits) continue;
+        if ((fits && !best_into_hole) || ratio < best) best = ratio, best_into_hole = fits, cut = {lo, hi};
       }
     if (cut.first < 0)
       throw InvalidMeshError("triangulate_hole: no admissible diagonal separates the two passes of the loop "
                              "through vertex " + std::to_string(poly.vertices[s]));
     return cut;
+  }
+
+  // Whether the direction from the loop's vertex at position t to point q lies within the angle the
+  // loop turns through there on the hole's side: counter-clockwise about the surface's normal from
+  // the side coming in to the side going out (the loop has the surface on its left). The normal is
+  // that of the faces outside the two sides (the sum of the polygon's side normals there), or, at a
+  // cut, the opposite of the loop's Newell normal.
+  bool into_hole(const Polygon& poly, int t, const Vec3& q) const {
+    const int m = poly.size();
+    const Vec3 p = point(V_, poly.vertices[t]);
+    Vec3 n = poly.side_normals[(t + m - 1) % m] + poly.side_normals[t];
+    if (n.squaredNorm() < 1e-24) {
+      n.setZero();
+      for (int k = 0; k < m; ++k) n += point(V_, poly.vertices[k]).cross(point(V_, poly.vertices[(k + 1) % m]));
+      n = -n;
+    }
+    const auto tangent = [&](const Vec3& d) { return Vec3(d - d.dot(n) / n.squaredNorm() * n); };
+    const Vec3 in = tangent(point(V_, poly.vertices[(t + m - 1) % m]) - p);
+    const Vec3 out = tangent(point(V_, poly.vertices[(t + 1) % m]) - p);
+    const Vec3 to = tangent(q - p);
+    const auto turn = [&](const Vec3& from, const Vec3& d) {  // counter-clockwise angle in [0, 2π)
+      const double angle = std::atan2(n.normalized().dot(from.cross(d)), from.dot(d));
+      return angle < 0 ? angle + 2 * std::numbers::pi : angle;
+    };
+    return turn(in, to) < turn(in, out);
   }
 
   // Positions (a, b), a < b, of the admissible diagonal with the smallest ratio of its length to

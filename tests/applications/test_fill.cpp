@@ -376,6 +376,49 @@ TEST(FillLoneTriangle, AHoleFailingAtOneLoneTriangleAndRunningRoundAnotherGetsOn
   FAIL() << "no two faces of the square leave a lone triangle on the hole's loop and one beside it";
 }
 
+// The square hole with two lone triangles of their own vertices, each hanging at a vertex of the
+// hole's border and pointing to the square's centre. The joint patch's loop passes both vertices
+// twice. Dividing it at one of them, the programme may cut to the other, and the piece holding
+// that vertex's second pass could take the cut again as a diagonal: an edge of four faces, which
+// refine_patch refused ("patch edge ... is used twice in the same direction"; bench_stress --cut
+// irregular --seed 1, hammer trial 30; here the two vertices (9, 6) and (10, 6)). For every pair
+// of border vertices the hole is now filled, manifold, with both triangles taken in.
+TEST(FillLoneTriangle, LoneTrianglesHangingAtTwoVerticesOfAHoleAreBothTakenIn) {
+  const GridWithSquareHole square;
+  const Mesh holed = square.holed({});
+  std::vector<int> border;
+  for (int v = 0; v < holed.num_vertices(); ++v) {
+    const Vec3 p = holed.V.row(v).transpose();
+    if (p.x() >= 6 && p.x() <= 10 && p.y() >= 6 && p.y() <= 10 && square.on_square_border(v)) border.push_back(v);
+  }
+  ASSERT_EQ(border.size(), 16u);
+  const Vec3 centre(8, 8, 0);
+  for (std::size_t i = 0; i < border.size(); ++i)
+    for (std::size_t j = i + 1; j < border.size(); ++j) {
+      Mesh lone = holed;
+      lone.V.conservativeResize(holed.num_vertices() + 4, 3);
+      lone.F.conservativeResize(holed.num_faces() + 2, 3);
+      int row = holed.num_vertices();
+      for (const int v : {border[i], border[j]}) {
+        const Vec3 p = holed.V.row(v).transpose();
+        const Vec3 d = (centre - p).normalized(), side(-d.y(), d.x(), 0);
+        lone.V.row(row) = (p + 0.8 * d - 0.3 * side).transpose();
+        lone.V.row(row + 1) = (p + 0.8 * d + 0.3 * side).transpose();
+        lone.F.row(holed.num_faces() + (row - holed.num_vertices()) / 2) << v, row, row + 1;  // +z, as the grid
+        row += 2;
+      }
+      FillOptions o = options_for(Continuity::G2, FairMethod::harmonic);
+      o.skip_largest = true;
+      Mesh filled = lone;
+      const FillReport r = fill_holes(filled, o);
+      for (const HoleReport& h : r.holes)
+        EXPECT_NE(h.status, HoleStatus::failed) << "vertices " << border[i] << ", " << border[j] << ": " << h.reason;
+      EXPECT_TRUE(validate(filled).manifold());
+      EXPECT_EQ(loop_count(filled), 1);  // the grid's outer border
+      EXPECT_EQ(filled.F.topRows(lone.num_faces()), lone.F);
+    }
+}
+
 // Two faces of a square hole's inside left hanging at one vertex of its border (a cut through a thin
 // part leaves such pieces): the piece's 4-edge loop is its whole border, with no vertex inside
 // (HoleReport::hanging_piece_at, this loop's own even where the report repeats the shared patch's),

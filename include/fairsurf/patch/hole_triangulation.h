@@ -44,7 +44,9 @@
 // A triangle is admissible only if its three vertices are distinct and none of its diagonals is
 // already an edge of the mesh (that would make the edge non-manifold). A loop that passes twice
 // through a vertex (a pinch of the border) is first cut by a diagonal from between the two passes
-// to outside them, so each piece passes once; a later piece may not repeat an earlier piece's
+// to outside them, so each piece passes once. Where an end of the cut is itself passed twice, the
+// cut leaves it into the hole at the pass it is drawn from (within the angle the loop turns through
+// there), not across a face hanging at the vertex. No piece may repeat a cut or an earlier piece's
 // diagonal (the two passes could otherwise both be joined to one vertex).
 #pragma once
 
