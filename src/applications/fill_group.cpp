@@ -265,7 +265,10 @@ std::string fill_group(const Mesh& mesh, const std::vector<std::vector<int>>& lo
     }
   }
 
-  const fill_detail::PatchOwnership own = fill_detail::patch_ownership(patch, mesh.num_vertices(), loops, group);
+  std::vector<char> taken_in;
+  for (int h : group) taken_in.push_back(reports[h].around_a_face || reports[h].hanging_piece_at >= 0);
+  const fill_detail::PatchOwnership own =
+      fill_detail::patch_ownership(patch, mesh.num_vertices(), loops, group, taken_in);
   const bool flowed = !fairing.linear && !patch.free_vertices.empty();
   std::vector<std::vector<int>> hole_free(group.size()), hole_faces(group.size());
   for (std::size_t k = 0; k < group.size(); ++k) {

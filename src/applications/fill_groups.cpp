@@ -37,7 +37,8 @@ std::vector<std::vector<int>> overlapping_groups(const Topology& topo, const std
 }
 
 PatchOwnership patch_ownership(const InitialPatch& patch, int input_vertices,
-                               const std::vector<std::vector<int>>& loops, std::span<const int> holes) {
+                               const std::vector<std::vector<int>>& loops, std::span<const int> holes,
+                               std::span<const char> taken_in) {
   const Faces& F = patch.mesh.F;
   const int first = patch.first_patch_face, count = static_cast<int>(F.rows()) - first;
   const auto key = [](int a, int b) {
@@ -53,11 +54,17 @@ PatchOwnership patch_ownership(const InitialPatch& patch, int input_vertices,
     if (twin != face_of.end()) parent[find_root(parent, f)] = find_root(parent, twin->second);
   }
   std::vector<int> hole_of_root(count, -1), loop_root;  // loop_root: per hole, its patch's piece
-  for (int h : holes) {
+  std::vector<char> owner_taken_in(count, 0);
+  for (std::size_t k = 0; k < holes.size(); ++k) {
+    const int h = holes[k];
     loop_root.push_back(-1);
     for (std::size_t t = 0; t < loops[h].size(); ++t) {
       const auto across = face_of.find(key(loops[h][(t + 1) % loops[h].size()], loops[h][t]));
-      if (across != face_of.end()) hole_of_root[loop_root.back() = find_root(parent, across->second)] = h;
+      if (across == face_of.end()) continue;
+      const int root = loop_root.back() = find_root(parent, across->second);
+      if (hole_of_root[root] >= 0 && taken_in[k] && !owner_taken_in[root]) continue;
+      hole_of_root[root] = h;
+      owner_taken_in[root] = taken_in[k];
     }
   }
   PatchOwnership own;

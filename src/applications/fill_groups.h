@@ -19,7 +19,9 @@ std::vector<std::vector<int>> overlapping_groups(const Topology& topo, const std
 /// edge (at a pinch they share the vertex only), so the new faces fall into one edge-connected piece
 /// per patch, found from the face across each loop edge. Where relinking at a pinch made one loop of
 /// two holes (two loops that meet at a vertex, as a figure eight), their one piece goes to the later
-/// hole, and `patch_hole` says so for the earlier.
+/// hole, and `patch_hole` says so for the earlier; but a loop that is only the border of a piece the
+/// patch takes in (`taken_in`, per hole of `holes`: a lone triangle, a piece hanging at a vertex)
+/// gets it only where no other loop shares it, so that the hole, not the debris, reports the patch.
 struct PatchOwnership {
   std::vector<int> vertex_hole;  ///< per new vertex (index − first new vertex)
   std::vector<int> face_hole;    ///< per new face
@@ -27,6 +29,7 @@ struct PatchOwnership {
 };
 
 PatchOwnership patch_ownership(const InitialPatch& patch, int input_vertices,
-                               const std::vector<std::vector<int>>& loops, std::span<const int> holes);
+                               const std::vector<std::vector<int>>& loops, std::span<const int> holes,
+                               std::span<const char> taken_in);
 
 }  // namespace fairsurf::fill_detail

@@ -899,7 +899,10 @@ TEST(FillPinches, AHoleWithALoneTriangleHangingAtItsBorderTakesItIn) {
   EXPECT_TRUE(lone->around_a_face);
   EXPECT_FALSE(hole.around_a_face);
   EXPECT_EQ(r.filled, 2) << hole.reason << lone->reason;
-  EXPECT_TRUE(lone->patch_shared_with == hole.index || hole.patch_shared_with == lone->index);
+  EXPECT_EQ(lone->patch_shared_with, hole.index);  // the hole, not the triangle, reports the patch
+  EXPECT_EQ(hole.patch_shared_with, -1);
+  EXPECT_EQ(hole.vertices_added, filled.num_vertices() - holed.num_vertices());
+  EXPECT_EQ(lone->vertices_added, 0);
   EXPECT_TRUE(validate(filled).manifold());
   EXPECT_EQ(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).size(), 0u);
   EXPECT_EQ(filled.F.topRows(holed.num_faces()), holed.F);  // the triangle kept, with every input face

@@ -1293,7 +1293,11 @@ TEST(RealHoleLoneTriangle, ThreeLoneTrianglesAtOneHoleAreTakenIntoOnePatch) {
   for (const HoleReport& h : report.holes) {
     EXPECT_EQ(h.status, HoleStatus::filled) << h.index << ": " << h.reason;
     EXPECT_EQ(h.around_a_face, h.index != hole->index);
+    // The hole reports the patch; the triangles' loops point to it.
+    EXPECT_EQ(h.patch_shared_with, h.index == hole->index ? -1 : hole->index);
   }
+  EXPECT_EQ(hole->vertices_added, filled.num_vertices() - cut.num_vertices());
+  EXPECT_EQ(hole->faces_added, filled.num_faces() - cut.num_faces());
   EXPECT_TRUE(validate(filled).manifold());
   EXPECT_EQ(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).size(), 0u);
   EXPECT_EQ(filled.F.topRows(cut.num_faces()), cut.F);

@@ -126,7 +126,8 @@ struct HoleReport {
   /// Where relinking at a pinch of the border made one loop of this hole and another (two loops
   /// that meet at a vertex, as a figure eight), the hole whose report counts their one patch: this
   /// report then has no vertex or face added and repeats that hole's labels, fairing figures and
-  /// border measure (which covers both loops). −1 otherwise.
+  /// border measure (which covers both loops). A loop around a piece the patch takes in (a lone
+  /// triangle, a piece hanging at a vertex) never counts a patch another loop shares. −1 otherwise.
   int patch_shared_with = -1;
   /// Where the hole failed at a pinch of its border (`reason` "non-manifold border: ..."), the loop
   /// it shares that vertex with, which is not filled (its own report says why: not selected,
