@@ -18,6 +18,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <unordered_set>
 
 namespace fairsurf {
 namespace {
@@ -303,7 +304,11 @@ bool same_triangulations(GroupPatches& a, GroupPatches& b) {
 // general; but a fill that folds back is no patch at all. The starts' largest angles may differ by a
 // few degrees where their shapes differ wholly (airplane 5947 4h: a loop round the edge of a thin
 // plate, bridged through the plate from the first start at 110°, laid along both its sides from the
-// lightest at 25°). And where the largest angle is an edge that every triangulation has, area alone
+// lightest at 25°). A loop through a pinch twice (a lone triangle taken in) is first cut between its
+// passes along the shortest cut, which decides the patch's shape there; it is next triangulated
+// along the lightest of kBridgeCutsWeighed cuts (airplane trial 933 of bench_stress --cut irregular
+// --seed 901: 106.6° from the shortest cut, 47.9° from the lightest), before the Delaunay faces,
+// which do not apply to it. And where the largest angle is an edge that every triangulation has, area alone
 // decides, and the least area may crease the patch across the hole, which the Delaunay faces leave
 // out (spot 1294 8h, a blob: 168° from every start, 36.5° within them). A new fill is delivered where
 // it turns the normal across the border by at most half as much (kRetriangulatedAngleRatio): a few
@@ -311,6 +316,7 @@ bool same_triangulations(GroupPatches& a, GroupPatches& b) {
 // surface as often as closer (docs/fill.md, "Triangulated again", "Triangulated within the Delaunay
 // faces").
 constexpr double kRetriangulatedAngleRatio = 0.5;
+constexpr int kBridgeCutsWeighed = 8;
 
 // A triangulation to fill a folded group from again (retriangulate_if_folded_back), and how the note
 // names it.
@@ -335,6 +341,14 @@ std::vector<Retriangulation> retriangulations(const FillOptions& options,
   if (triangulation.start_vertices > 1 && triangulation.start_margin > 0) {
     tries.push_back({options, "the lightest of " + std::to_string(triangulation.start_vertices) + " starts"});
     tries.back().options.patch.triangulation.start_margin = 0;
+  }
+  const bool through_a_pinch_twice = std::any_of(patch_loops.begin(), patch_loops.end(), [](const std::vector<int>& loop) {
+    return std::unordered_set<int>(loop.begin(), loop.end()).size() < loop.size();
+  });
+  if (through_a_pinch_twice && triangulation.bridge_cuts_weighed < kBridgeCutsWeighed) {
+    tries.push_back({options, "the lightest of " + std::to_string(kBridgeCutsWeighed) +
+                                  " cuts between the loop's passes through a pinch"});
+    tries.back().options.patch.triangulation.bridge_cuts_weighed = kBridgeCutsWeighed;
   }
   if (!triangulation.delaunay_restricted && delaunay_applies(patch_loops, triangulation)) {
     tries.push_back({options, "the faces of the loop's Delaunay tetrahedralization"});

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -146,8 +147,50 @@ class Triangulator {
   void triangulate(const Polygon& poly, std::vector<Eigen::Vector3i>& out) {
     const auto repeat = repeated_positions(poly);
     if (repeat.first < 0 && poly.size() <= options_.max_dynamic_programming_size) return solve(poly, out);
-    divided_ = divided_ || repeat.first < 0;
-    const auto [a, b] = repeat.first < 0 ? best_cut(poly) : bridge_cut(poly, repeat.first, repeat.second);
+    if (repeat.first < 0) {
+      divided_ = true;
+      return divide(poly, best_cut(poly), out);
+    }
+    const std::vector<std::pair<int, int>> cuts = bridge_cuts(poly, repeat.first, repeat.second);
+    ++bridged_;
+    if (bridged_ == 1 && options_.bridge_cuts_weighed > 1 && cuts.size() > 1)
+      divide_along_lightest(poly, cuts, out);
+    else
+      divide(poly, cuts.front(), out);
+  }
+
+  // Divides `poly` along each of the first bridge_cuts_weighed `cuts` in turn, and keeps the
+  // lightest triangulation (Liepa's weight against the faces outside the loop).
+  void divide_along_lightest(const Polygon& poly, const std::vector<std::pair<int, int>>& cuts,
+                             std::vector<Eigen::Vector3i>& out) {
+    std::optional<Triangulator> best;
+    std::vector<Eigen::Vector3i> best_faces;
+    Weight best_weight{kInfinity, kInfinity, 0};
+    const std::size_t tried = std::min(cuts.size(), static_cast<std::size_t>(options_.bridge_cuts_weighed));
+    for (std::size_t c = 0; c < tried; ++c) {
+      Triangulator trial = *this;
+      std::vector<Eigen::Vector3i> faces;
+      try {
+        trial.divide(poly, cuts[c], faces);
+      } catch (const InvalidMeshError&) {
+        continue;  // no admissible triangulation of a piece: the next cut
+      }
+      const TriangulationWeight w = piece_weight(poly, faces);
+      const Weight weight{w.max_dihedral_angle, w.area, 0};
+      if (best && !lighter(weight, best_weight)) continue;
+      best.emplace(std::move(trial));
+      best_faces = std::move(faces);
+      best_weight = weight;
+    }
+    if (!best) return divide(poly, cuts.front(), out);  // throws what the first cut throws
+    made_ = std::move(best->made_);
+    divided_ = best->divided_;
+    out.insert(out.end(), best_faces.begin(), best_faces.end());
+  }
+
+  // Divides `poly` along the cut between positions a < b and triangulates both pieces.
+  void divide(const Polygon& poly, std::pair<int, int> cut, std::vector<Eigen::Vector3i>& out) {
+    const auto [a, b] = cut;
     // The cut is a side of both pieces; a piece may pass one of its ends again (a loop through a
     // vertex twice), so it is taken now, before either piece could choose it as a diagonal.
     made_.insert(undirected_key(poly.vertices[a], poly.vertices[b]));
@@ -202,7 +245,7 @@ class Triangulator {
   // diagonal drawn to the wrong pass divides the loop across a face hanging there, and no
   // triangulation of the pieces is then free of folds. Where none does (a vertex's passes too
   // bent to tell), among all.
-  std::pair<int, int> bridge_cut(const Polygon& poly, int s, int t) const {
+  std::vector<std::pair<int, int>> bridge_cuts(const Polygon& poly, int s, int t) const {
     const int m = poly.size();
     std::vector<double> arc(m + 1, 0.0);
     for (int q = 0; q < m; ++q)
@@ -212,25 +255,27 @@ class Triangulator {
     const auto into_hole_at = [&](int from, int to) {
       return passes[poly.vertices[from]] < 2 || into_hole(poly, from, point(V_, poly.vertices[to]));
     };
-    double best = kInfinity;
-    bool best_into_hole = false;
-    std::pair<int, int> cut{-1, -1};
+    struct Candidate { bool fits; double ratio; std::pair<int, int> cut; };
+    std::vector<Candidate> candidates;
     for (int a = s + 1; a < t; ++a)
       for (int b = 0; b < m; ++b) {
         if (b >= s && b <= t) continue;
         const int lo = std::min(a, b), hi = std::max(a, b);
         const int u = poly.vertices[lo], v = poly.vertices[hi];
+        if (!admissible_diagonal(u, v)) continue;
         const double shorter_arc = std::min(arc[hi] - arc[lo], arc[m] - (arc[hi] - arc[lo]));
         const double ratio = (point(V_, u) - point(V_, v)).norm() / shorter_arc;
-        if (!admissible_diagonal(u, v)) continue;
-        const bool fits = into_hole_at(lo, hi) && into_hole_at(hi, lo);
-        if (best_into_hole && !fits) continue;
-        if ((fits && !best_into_hole) || ratio < best) best = ratio, best_into_hole = fits, cut = {lo, hi};
+        candidates.push_back({into_hole_at(lo, hi) && into_hole_at(hi, lo), ratio, {lo, hi}});
       }
-    if (cut.first < 0)
+    if (candidates.empty())
       throw InvalidMeshError("triangulate_hole: no admissible diagonal separates the two passes of the loop "
                              "through vertex " + std::to_string(poly.vertices[s]));
-    return cut;
+    std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+      return x.fits != y.fits ? x.fits : x.ratio < y.ratio;
+    });
+    std::vector<std::pair<int, int>> cuts;
+    for (const Candidate& c : candidates) cuts.push_back(c.cut);
+    return cuts;
   }
 
   // Whether the direction from the loop's vertex at position t to point q lies within the angle the
@@ -419,6 +464,7 @@ class Triangulator {
   const Forbidden& forbidden_;  // what crossed the mesh in an earlier round
   const std::set<TriangleKey>* allowed_;  // the Delaunay restriction's triangles, or null
   bool divided_ = false;
+  int bridged_ = 0;  // polygons divided between two passes through a vertex so far
   std::unordered_set<std::uint64_t> made_;  // diagonals of the pieces solved so far
 };
 
@@ -506,6 +552,9 @@ HoleTriangulation triangulate_hole(const Vertices& V, const Faces& F, const Topo
   if (options.start_vertices < 1)
     throw InvalidArgument("triangulate_hole: start_vertices must be at least 1, got " +
                           std::to_string(options.start_vertices));
+  if (options.bridge_cuts_weighed < 1)
+    throw InvalidArgument("triangulate_hole: bridge_cuts_weighed must be at least 1, got " +
+                          std::to_string(options.bridge_cuts_weighed));
   if (!(options.start_margin >= 0))
     throw InvalidArgument("triangulate_hole: start_margin must be at least 0, got " +
                           std::to_string(options.start_margin));

@@ -1209,12 +1209,30 @@ TEST(RealHoleLoneTriangle, ALoneTriangleLeftInABlobIsTakenIntoItsPatch) {
   EXPECT_EQ(c.filled.F.topRows(c.cut.num_faces()), c.cut.F);
 }
 
-// --seed 901, airplane trial 933: a lone triangle hangs at the border of a 47-edge blob, and every
-// patch that takes it in folds back against it (more than a right angle across the border, where the
-// uncut wing reads 18 degrees). Such a fill is not delivered: the triangle's loop is reported as not
-// taken in, and the hole fails at its pinch, saying why, with the repair hint; after that repair it
-// is filled.
+// --seed 1, airplane trial 10: a lone triangle hangs at the border of a 49-edge blob, and every
+// patch that takes it in folds back (more than a right angle across the border, 117 degrees). Such a
+// fill is not delivered: the triangle's loop is reported as not taken in, and the hole fails at its
+// pinch, saying why, with the repair hint; after that repair it is filled.
 constexpr int kAirplaneFoldedLoneTriangleFaces[] = {
+    15150, 15152, 15227, 15228, 15233, 15234, 15236, 15237, 15305, 15310, 15315, 15316, 15317, 15319, 15320,
+    15387, 15388, 15393, 15394, 15395, 15398, 15399, 15400, 15402, 15403, 15468, 15474, 15475, 15477, 15478,
+    15480, 15481, 15483, 15484, 15547, 15548, 15549, 15550, 15556, 15557, 15558, 15559, 15560, 15561, 15562,
+    15564, 15565, 15627, 15628, 15629, 15630, 15631, 15636, 15637, 15638, 15640, 15641, 15643, 15644, 15706,
+    15707, 15708, 15709, 15710, 15715, 15716, 15718, 15719, 15721, 15722, 15784, 15785, 15786, 15787, 15788,
+    15793, 15794, 15795, 15797, 15798, 15800, 15862, 15863, 15864, 15865, 15866, 15871, 15872, 15873, 15875,
+    15876, 15878, 15940, 15941, 15942, 15943, 15944, 15949, 15950, 15951, 15953, 15954, 15956, 16018, 16019,
+    16020, 16021, 16026, 16027, 16028, 16030, 16031, 16033, 16094, 16095, 16096, 16102, 16103, 16106, 16107,
+    16169, 16170, 16171, 16172, 16176, 16177, 16178, 16181, 16182, 16244, 16245, 16246, 16247, 16251, 16253,
+    16254, 16257, 16318, 16319, 16320, 16321, 16325, 16327, 16328, 16331, 16391, 16392, 16393, 16399, 16401,
+    16402, 16464, 16465, 16466, 16472, 16474, 16475, 16535, 16536, 16543, 16545, 16602, 16603, 16611, 16663,
+    16664, 16671, 16720, 16721, 16728, 16777, 16833,
+};
+
+// --seed 901, airplane trial 933: a lone triangle hangs at the border of a 47-edge blob. Cut between
+// the loop's two passes through the pinch along the shortest cut, the patch that takes it in folds
+// back (106.6 degrees across the border, where the uncut wing reads 18); triangulated again along
+// the lightest of 8 cuts, it turns the normal by 48 degrees, and is delivered.
+constexpr int kAirplaneLoneTriangleCutAgainFaces[] = {
     14701, 14790, 14791, 14792, 14879, 14880, 14965, 14966, 14967, 15050, 15051, 15052, 15053, 15055, 15134,
     15135, 15136, 15137, 15138, 15139, 15140, 15147, 15148, 15152, 15153, 15218, 15219, 15220, 15221, 15222,
     15223, 15224, 15227, 15231, 15232, 15236, 15301, 15302, 15303, 15304, 15305, 15306, 15307, 15312, 15313,
@@ -1224,6 +1242,23 @@ constexpr int kAirplaneFoldedLoneTriangleFaces[] = {
     15636, 15637, 15643, 15644, 15706, 15707, 15708, 15709, 15710, 15711, 15715, 15721, 15784, 15785, 15786,
     15787, 15788, 15793, 15862, 15863, 15864, 15866, 15940, 15941, 15956, 16018,
 };
+
+TEST(RealHoleLoneTriangle, APatchFoldedBackFromTheShortestCutThroughThePinchIsCutAgainAlongTheLightest) {
+  const LoneTriangleCut c = fill_lone_triangle_cut("airplane.obj", kAirplaneLoneTriangleCutAgainFaces);
+  ASSERT_NE(c.lone, nullptr);
+  EXPECT_TRUE(c.lone->around_a_face);
+  EXPECT_EQ(c.report.filled, 2) << c.hole->reason;
+  EXPECT_NE(c.hole->note.find("the fill folds back (it turns the normal across the border by "), std::string::npos)
+      << c.hole->note;
+  EXPECT_NE(c.hole->note.find("triangulated again from the lightest of 8 cuts between the loop's passes through a "
+                              "pinch, whose fill turns it by "),
+            std::string::npos)
+      << c.hole->note;
+  EXPECT_LT(c.hole->continuity.max_normal_angle, std::numbers::pi / 2);
+  EXPECT_FALSE(folds_back(*c.hole));
+  EXPECT_TRUE(validate(c.filled).manifold());
+  EXPECT_EQ(c.filled.F.topRows(c.cut.num_faces()), c.cut.F);
+}
 
 TEST(RealHoleLoneTriangle, APatchThatFoldsBackAgainstTheLoneTriangleItTakesInIsNotDelivered) {
   const LoneTriangleCut c = fill_lone_triangle_cut("airplane.obj", kAirplaneFoldedLoneTriangleFaces);

@@ -394,6 +394,64 @@ TEST(HoleTriangulation, RejectsBadLoopsWithPreciseMessages) {
             0u);
   EXPECT_EQ(message(loop, {.max_crossing_rounds = -1}),
             "triangulate_hole: max_crossing_rounds must be at least 0, got -1");
+  EXPECT_EQ(message(loop, {.bridge_cuts_weighed = 0}),
+            "triangulate_hole: bridge_cuts_weighed must be at least 1, got 0");
+}
+
+// A square hole (8 by 8 grid, the faces at its middle 3 by 3 vertices cut out, z = 0.1 x y for some
+// curvature: a 14-edge loop) with a lone
+// triangle of its own vertices hanging at each of two border vertices, pointing inwards, as a cut
+// through a thin part leaves them; the loop fill_holes patches them with runs through each of the
+// two vertices twice. Weighing several cuts between the first vertex's passes keeps the lightest,
+// never heavier than the first cut alone, and the patch stays manifold: every edge has one face on
+// each side, the loop's with the mesh.
+TEST(HoleTriangulation, WeighingCutsBetweenAPinchsPassesNeverGivesAHeavierPatch) {
+  Mesh grid = test::regular_grid(8, 8, 1.0);
+  for (int v = 0; v < grid.num_vertices(); ++v) grid.V(v, 2) = 0.1 * grid.V(v, 0) * grid.V(v, 1);
+  const Mesh holed = cut(grid, [](const Vec3& p) { return p.x() > 2.5 && p.x() < 5.5 && p.y() > 2.5 && p.y() < 5.5; });
+  const auto square = boundary_loops(holed.F, build_topology(holed.F, holed.num_vertices()));
+  ASSERT_EQ(square.size(), 2u);
+  const std::vector<int> hole = square[0].size() < square[1].size() ? square[0] : square[1];  // not the outer border
+  const Vec3 centre(4, 4, 1.6);
+  int lighter = 0;
+  for (std::size_t i = 0; i < hole.size(); ++i)
+    for (std::size_t j = i + 1; j < hole.size(); ++j) {
+      Mesh m = holed;
+      m.V.conservativeResize(holed.num_vertices() + 4, 3);
+      m.F.conservativeResize(holed.num_faces() + 2, 3);
+      std::vector<int> loop;
+      for (std::size_t t = 0; t < hole.size(); ++t) {
+        loop.push_back(hole[t]);
+        if (t != i && t != j) continue;
+        const int v = hole[t], x = static_cast<int>(m.V.rows()) - (t == i ? 4 : 2);
+        const Vec3 p = holed.V.row(v).transpose(), d = (centre - p).normalized(), side = d.cross(Vec3::UnitZ());
+        m.V.row(x) = (p + 0.8 * d + 0.3 * side).transpose();
+        m.V.row(x + 1) = (p + 0.8 * d - 0.3 * side).transpose();
+        m.F.row(holed.num_faces() + (t == i ? 0 : 1)) << v, x, x + 1;
+        loop.insert(loop.end(), {x, x + 1, v});  // the triangle's border, surface on its left
+      }
+      const Topology topo = build_topology(m.F, m.num_vertices());
+      HoleTriangulation first, weighed;
+      try {
+        first = triangulate_hole(m.V, m.F, topo, loop);
+      } catch (const InvalidMeshError& e) {
+        ADD_FAILURE() << "vertices " << hole[i] << ", " << hole[j] << ": " << e.what();
+        continue;
+      }
+      weighed = triangulate_hole(m.V, m.F, topo, loop, {.bridge_cuts_weighed = 8});
+      EXPECT_LE(weighed.max_dihedral_angle, first.max_dihedral_angle + kAngleTie)
+          << "vertices " << hole[i] << ", " << hole[j];
+      lighter += weighed.max_dihedral_angle < first.max_dihedral_angle - kAngleTie;
+      std::map<std::pair<int, int>, int> directed;
+      for (int f = 0; f < weighed.faces.rows(); ++f)
+        for (int k = 0; k < 3; ++k) ++directed[{weighed.faces(f, k), weighed.faces(f, (k + 1) % 3)}];
+      for (std::size_t t = 0; t < loop.size(); ++t) ++directed[{loop[t], loop[(t + 1) % loop.size()]}];
+      for (const auto& [edge, count] : directed) {
+        EXPECT_EQ(count, 1) << "edge " << edge.first << "-" << edge.second;
+        EXPECT_EQ(directed.count({edge.second, edge.first}), 1u) << "edge " << edge.first << "-" << edge.second;
+      }
+    }
+  EXPECT_GT(lighter, 0);
 }
 
 // cgal_mech_holes_shark's hole 3 (80 edges) runs round a corner of the part whose fan of needle

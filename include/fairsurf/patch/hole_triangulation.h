@@ -84,6 +84,12 @@ struct HoleTriangulationOptions {
   /// The full search runs instead where the loop passes a vertex twice or exceeds
   /// `max_dynamic_programming_size`, or its vertices span no volume (HoleTriangulation::delaunay).
   bool delaunay_restricted = false;
+  /// Where the loop passes a vertex twice, the number of admissible cuts between the passes (the
+  /// shortest relative to the loop arc they cut off first, those that leave each twice-passed end
+  /// into the hole ahead of the others) whose triangulations are weighed: the lightest is kept. 1:
+  /// the first cut, unweighed. Weighed only at the loop's first such vertex; the pieces take their
+  /// first cut. fill_holes weighs 8 where a patch through a pinch folds back (docs/fill.md).
+  int bridge_cuts_weighed = 1;
 };
 
 /// The new faces of one hole and the weight they reach.
