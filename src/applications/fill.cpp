@@ -308,8 +308,8 @@ bool same_triangulations(GroupPatches& a, GroupPatches& b) {
 // passes along the shortest cut, which decides the patch's shape there; it is next triangulated
 // along the lightest of kBridgeCutsWeighed cuts (airplane trial 933 of bench_stress --cut irregular
 // --seed 901: 106.6° from the shortest cut, 47.9° from the lightest), before the Delaunay faces,
-// which do not apply to it. And where the largest angle is an edge that every triangulation has, area alone
-// decides, and the least area may crease the patch across the hole, which the Delaunay faces leave
+// which do not apply to it. And where the largest angle is an edge that every triangulation has,
+// area alone decides, and the least area may crease the patch across the hole, which the Delaunay faces leave
 // out (spot 1294 8h, a blob: 168° from every start, 36.5° within them). A new fill is delivered where
 // it turns the normal across the border by at most half as much (kRetriangulatedAngleRatio): a few
 // degrees less on a folded patch, mostly noise in the border's fits, gave fills farther from the
@@ -342,9 +342,10 @@ std::vector<Retriangulation> retriangulations(const FillOptions& options,
     tries.push_back({options, "the lightest of " + std::to_string(triangulation.start_vertices) + " starts"});
     tries.back().options.patch.triangulation.start_margin = 0;
   }
-  const bool through_a_pinch_twice = std::any_of(patch_loops.begin(), patch_loops.end(), [](const std::vector<int>& loop) {
-    return std::unordered_set<int>(loop.begin(), loop.end()).size() < loop.size();
-  });
+  const bool through_a_pinch_twice =
+      std::any_of(patch_loops.begin(), patch_loops.end(), [](const std::vector<int>& loop) {
+        return std::unordered_set<int>(loop.begin(), loop.end()).size() < loop.size();
+      });
   if (through_a_pinch_twice && triangulation.bridge_cuts_weighed < kBridgeCutsWeighed) {
     tries.push_back({options, "the lightest of " + std::to_string(kBridgeCutsWeighed) +
                                   " cuts between the loop's passes through a pinch"});

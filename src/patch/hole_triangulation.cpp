@@ -239,12 +239,12 @@ class Triangulator {
 
   // A loop through a vertex twice (a pinch of the border, both occurrences on this hole) is cut by
   // a diagonal from between the occurrences s < t to outside them, so that each piece passes
-  // through the vertex once and the dynamic programme never sees it twice. The shortest such
-  // diagonal relative to the shorter arc it cuts off is taken, as in best_cut, among those that
-  // leave each end the loop passes more than once into the hole at that pass (into_hole): a
+  // through the vertex once and the dynamic programme never sees it twice. The admissible such
+  // diagonals (positions lo < hi), best first: those that leave each end the loop passes more than
+  // once into the hole at that pass (into_hole), then the others (a vertex's passes too bent to
+  // tell), each by the ratio of its length to the shorter arc it cuts off, as in best_cut. A
   // diagonal drawn to the wrong pass divides the loop across a face hanging there, and no
-  // triangulation of the pieces is then free of folds. Where none does (a vertex's passes too
-  // bent to tell), among all.
+  // triangulation of the pieces is then free of folds.
   std::vector<std::pair<int, int>> bridge_cuts(const Polygon& poly, int s, int t) const {
     const int m = poly.size();
     std::vector<double> arc(m + 1, 0.0);
