@@ -322,7 +322,8 @@ constexpr int kBridgeCutsWeighed = 8;
 // names it.
 struct Retriangulation {
   FillOptions options;
-  std::string name;
+  std::string name;       // "triangulated again from <name>"
+  std::string where = "from";  // "triangulated again <where> <name>, it failed too"
 };
 
 // Whether the Delaunay restriction applies to some loop of `patch_loops`
@@ -334,6 +335,30 @@ bool delaunay_applies(const std::vector<std::vector<int>>& patch_loops, const Ho
                      [&](const std::vector<int>& loop) { return delaunay_restriction_applies(loop, options); });
 }
 
+// Where a loop of `patch_loops` passes a pinch twice and the options weigh fewer cuts between its
+// passes: the lightest of kBridgeCutsWeighed cuts (HoleTriangulationOptions::bridge_cuts_weighed).
+void add_weighed_cuts(const FillOptions& options, const std::vector<std::vector<int>>& patch_loops,
+                      std::vector<Retriangulation>& tries) {
+  const bool through_a_pinch_twice =
+      std::any_of(patch_loops.begin(), patch_loops.end(), [](const std::vector<int>& loop) {
+        return std::unordered_set<int>(loop.begin(), loop.end()).size() < loop.size();
+      });
+  if (!through_a_pinch_twice || options.patch.triangulation.bridge_cuts_weighed >= kBridgeCutsWeighed) return;
+  tries.push_back({options, "the lightest of " + std::to_string(kBridgeCutsWeighed) +
+                                " cuts between the loop's passes through a pinch"});
+  tries.back().options.patch.triangulation.bridge_cuts_weighed = kBridgeCutsWeighed;
+}
+
+// Where the Delaunay restriction applies to a loop and is not on: the faces of the loops'
+// tetrahedralizations.
+void add_delaunay_faces(const FillOptions& options, const std::vector<std::vector<int>>& patch_loops,
+                        std::vector<Retriangulation>& tries) {
+  const HoleTriangulationOptions& triangulation = options.patch.triangulation;
+  if (triangulation.delaunay_restricted || !delaunay_applies(patch_loops, triangulation)) return;
+  tries.push_back({options, "the faces of the loop's Delaunay tetrahedralization", "within"});
+  tries.back().options.patch.triangulation.delaunay_restricted = true;
+}
+
 std::vector<Retriangulation> retriangulations(const FillOptions& options,
                                               const std::vector<std::vector<int>>& patch_loops) {
   const HoleTriangulationOptions& triangulation = options.patch.triangulation;
@@ -342,19 +367,20 @@ std::vector<Retriangulation> retriangulations(const FillOptions& options,
     tries.push_back({options, "the lightest of " + std::to_string(triangulation.start_vertices) + " starts"});
     tries.back().options.patch.triangulation.start_margin = 0;
   }
-  const bool through_a_pinch_twice =
-      std::any_of(patch_loops.begin(), patch_loops.end(), [](const std::vector<int>& loop) {
-        return std::unordered_set<int>(loop.begin(), loop.end()).size() < loop.size();
-      });
-  if (through_a_pinch_twice && triangulation.bridge_cuts_weighed < kBridgeCutsWeighed) {
-    tries.push_back({options, "the lightest of " + std::to_string(kBridgeCutsWeighed) +
-                                  " cuts between the loop's passes through a pinch"});
-    tries.back().options.patch.triangulation.bridge_cuts_weighed = kBridgeCutsWeighed;
-  }
-  if (!triangulation.delaunay_restricted && delaunay_applies(patch_loops, triangulation)) {
-    tries.push_back({options, "the faces of the loop's Delaunay tetrahedralization"});
-    tries.back().options.patch.triangulation.delaunay_restricted = true;
-  }
+  add_weighed_cuts(options, patch_loops, tries);
+  add_delaunay_faces(options, patch_loops, tries);
+  return tries;
+}
+
+// The triangulations a failed group is filled from again: within the faces of each loop's Delaunay
+// tetrahedralization, where that applies, then, where a loop passes a pinch twice, along the
+// lightest of the cuts between its passes (spot trial 1717 of bench_stress --cut irregular --seed
+// 1701: the patch from the shortest cut crossed the mesh, the lightest cut's does not).
+std::vector<Retriangulation> failure_retriangulations(const FillOptions& options,
+                                                      const std::vector<std::vector<int>>& patch_loops) {
+  std::vector<Retriangulation> tries;
+  add_delaunay_faces(options, patch_loops, tries);
+  add_weighed_cuts(options, patch_loops, tries);
   return tries;
 }
 
@@ -392,45 +418,46 @@ void retriangulate_if_folded_back(const Mesh& mesh, const Topology& topo, const 
 // delaunay_restricted, CGAL's search). Round a thin tongue of the mesh reaching into a hole, the
 // lightest triangulation from every start can cross the mesh where the Delaunay faces do not
 // (bench_real_holes --cut blob --random 10 --seed 2, spot 1828 8h with noise; docs/fill.md,
-// "Triangulated within the Delaunay faces"). A fill that folds back is not taken: from those faces a
-// horn tip cut off by a ball (a part of its own, whose opening blend joins to the head's) was capped
-// folded back at 172°, where the failure's reason says to blend.
+// "Triangulated within the Delaunay faces"). Where a loop passes a pinch twice, to which those faces
+// do not apply, it is made again along the lightest of the cuts between its passes
+// (failure_retriangulations). A fill that folds back is not taken: from those faces a horn tip cut
+// off by a ball (a part of its own, whose opening blend joins to the head's) was capped folded back
+// at 172°, where the failure's reason says to blend.
 void retriangulate_if_failed(const Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                              const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
                              GroupPatches& first_patches, const FillOptions& options, const FillObserver& observer,
                              const std::vector<HoleReport>& unfilled, std::vector<HoleReport>& reports,
                              ChainOutcome& outcome) {
-  if (!options.fallback_on_failure || options.patch.triangulation.delaunay_restricted ||
-      !delaunay_applies(patch_loops, options.patch.triangulation))
-    return;
-  FillOptions delaunay = options;
-  delaunay.patch.triangulation.delaunay_restricted = true;
-  GroupPatches patches(mesh, topo, patch_loops, delaunay.patch);
-  if (same_triangulations(first_patches, patches)) return;
+  if (!options.fallback_on_failure) return;
   const std::string failure = reports[group.front()].reason;
-  std::string failed_again;
-  const auto refill = [&] {
-    ChainOutcome retried = fill_from_membrane(mesh, loops, group, patches, delaunay, observer, unfilled, reports);
-    failed_again = reports[group.front()].reason;
-    return retried;
-  };
-  const auto gain = [&](const ChainOutcome&) -> std::string {
-    if (group_folds_back(reports, group)) {
-      char text[160];
-      std::snprintf(text, sizeof text, "its fill folds back: it turns the normal across the border by %.1f deg",
-                    largest_border_angle(reports, group) * kDegrees);
-      failed_again = text;
-      return "";
-    }
-    return "the fill failed (" + failure + "); triangulated again from the faces of the loop's Delaunay "
-           "tetrahedralization";
-  };
-  fill_again_where_better(group, unfilled, reports, outcome, refill, gain);
-  if (outcome.reason.empty()) return;
-  for (int h : group)
-    if (reports[h].status == HoleStatus::failed)
-      reports[h].reason += "; triangulated again within the faces of the loop's Delaunay tetrahedralization, it "
-                           "failed too (" + failed_again + ")";
+  for (const Retriangulation& again : failure_retriangulations(options, patch_loops)) {
+    if (outcome.reason.empty()) return;
+    GroupPatches patches(mesh, topo, patch_loops, again.options.patch);
+    if (same_triangulations(first_patches, patches)) continue;
+    std::string failed_again;
+    const auto refill = [&] {
+      ChainOutcome retried =
+          fill_from_membrane(mesh, loops, group, patches, again.options, observer, unfilled, reports);
+      failed_again = reports[group.front()].reason;
+      return retried;
+    };
+    const auto gain = [&](const ChainOutcome&) -> std::string {
+      if (group_folds_back(reports, group)) {
+        char text[160];
+        std::snprintf(text, sizeof text, "its fill folds back: it turns the normal across the border by %.1f deg",
+                      largest_border_angle(reports, group) * kDegrees);
+        failed_again = text;
+        return "";
+      }
+      return "the fill failed (" + failure + "); triangulated again from " + again.name;
+    };
+    fill_again_where_better(group, unfilled, reports, outcome, refill, gain);
+    if (outcome.reason.empty()) return;
+    for (int h : group)
+      if (reports[h].status == HoleStatus::failed)
+        reports[h].reason += "; triangulated again " + again.where + " " + again.name + ", it failed too (" +
+                             failed_again + ")";
+  }
 }
 
 // Whether a loop of `group` runs around a lone triangle, which the group's patch takes in.

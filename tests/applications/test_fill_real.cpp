@@ -1085,10 +1085,11 @@ TEST(RealHolePinchChain, AHoleWhosePatchAloneWouldMakeAConeAtItsPinchSaysWhichHo
 
 // A cut of airplane (`bench_stress --section fill --cut irregular --seed 101`, trial 128: a blob of
 // 381 faces) leaves one loop of 109 edges that also runs round a lone triangle: one face of the
-// blob's rim, hanging at a vertex the loop passes twice, its three edges on the loop. The patch
-// would have to wrap round it, and every patch of the fallback chain crosses the mesh. The hole
-// failed with that crossing as its only reason; it now also names the triangle and says that repair
-// removes it, and open_at_lone_triangle (the CLI's --repair hint) holds. After repair it is filled.
+// blob's rim, hanging at a vertex the loop passes twice, its three edges on the loop. Cut between the
+// two passes along the shortest cut, every patch of the fallback chain crosses the mesh; triangulated
+// again along the lightest of 8 cuts, the hole is filled. Without that last try (no fallback), the
+// hole fails, its reason names the triangle and says that repair removes it, and
+// open_at_lone_triangle (the CLI's --repair hint) holds. After repair it is filled.
 constexpr int kAirplaneLoneTriangleFaces[] = {
     8474, 8496, 8602, 8623, 8626, 8735, 8754, 8758, 8867, 8869, 8891, 8895, 9006, 9008, 9029, 9034, 9146, 9148,
     9150, 9170, 9171, 9172, 9177, 9186, 9187, 9189, 9292, 9294, 9296, 9308, 9317, 9318, 9324, 9333, 9334, 9335,
@@ -1115,11 +1116,29 @@ constexpr int kAirplaneLoneTriangleFaces[] = {
     12461, 12462, 12569, 12571, 12572, 12573, 12575, 12608, 12609, 12610, 12716, 12718, 12719, 12720, 12721, 12863,
     12864, 12865, 13010, 13011};
 
-TEST(RealHoleLoneTriangle, AHoleWhoseLoopRunsRoundALoneTriangleAndFailsSaysRepairRemovesIt) {
+TEST(RealHoleLoneTriangle, AHoleWhoseLoopRunsRoundALoneTriangleIsCutAgainOrFailsSayingRepairRemovesIt) {
   const Mesh truth = read_mesh(test::data_path("airplane.obj"));
   Mesh cut = test::cut_faces(truth, kAirplaneLoneTriangleFaces);
+  Mesh cut_again = cut;
+  const FillReport by_default = fill_holes(cut_again, FillOptions{});
+  ASSERT_EQ(by_default.holes.size(), 1u);
+  const HoleReport& filled_hole = by_default.holes.front();
+  EXPECT_EQ(filled_hole.status, HoleStatus::filled) << filled_hole.reason;
+  EXPECT_NE(filled_hole.note.find("the fill failed (the faired patch crosses the mesh"), std::string::npos)
+      << filled_hole.note;
+  EXPECT_NE(filled_hole.note.find("); triangulated again from the lightest of 8 cuts between the loop's passes "
+                                  "through a pinch"),
+            std::string::npos)
+      << filled_hole.note;
+  EXPECT_FALSE(folds_back(filled_hole));
+  std::vector<int> new_faces(cut_again.num_faces() - cut.num_faces());
+  std::iota(new_faces.begin(), new_faces.end(), cut.num_faces());
+  EXPECT_TRUE(find_face_intersections(cut_again.V, cut_again.F, new_faces).empty());
+
   Mesh filled = cut;
-  const FillReport report = fill_holes(filled, FillOptions{});
+  FillOptions no_fallback;
+  no_fallback.fallback_on_failure = false;
+  const FillReport report = fill_holes(filled, no_fallback);
   ASSERT_EQ(report.holes.size(), 1u);
   const HoleReport& hole = report.holes.front();
   ASSERT_EQ(hole.border_edges, 109);
