@@ -17,7 +17,6 @@
 #include <functional>
 #include <iostream>
 #include <numbers>
-#include <numeric>
 
 #include "analytic_meshes.h"
 #include "flow_meshes.h"
@@ -529,9 +528,7 @@ TEST(FillShark, TheHoleRoundACornerGetsTheRequestedContinuityWithoutCrossing) {
   const HoleReport& h = r.holes[3];
   ASSERT_EQ(h.status, HoleStatus::filled) << h.reason;
   EXPECT_EQ(h.supported, Continuity::G2) << delivered_label(h.supported, h.linear) << ": " << h.note;
-  std::vector<int> added(static_cast<std::size_t>(filled.num_faces() - input.num_faces()));
-  std::iota(added.begin(), added.end(), input.num_faces());
-  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, added, 1).empty());
+  EXPECT_FALSE(test::new_faces_cross(input, filled));
   EXPECT_LT(h.continuity.max_normal_angle, 45.0 * std::numbers::pi / 180);  // no fold (16° now)
 }
 
@@ -545,11 +542,6 @@ TEST(FillShark, AKeptFlowWhosePatchCrossesItselfIsFlowedAgainRejectingTheCrossin
   FillOptions o;
   o.holes = {3};
   keep_settled_flow(o);
-  const auto added_faces = [&](const Mesh& filled) {
-    std::vector<int> added(static_cast<std::size_t>(filled.num_faces() - input.num_faces()));
-    std::iota(added.begin(), added.end(), input.num_faces());
-    return added;
-  };
   Mesh filled = input;
   const HoleReport h = fill_holes(filled, o).holes[3];
   ASSERT_EQ(h.status, HoleStatus::filled) << h.reason;
@@ -559,14 +551,14 @@ TEST(FillShark, AKeptFlowWhosePatchCrossesItselfIsFlowedAgainRejectingTheCrossin
                         "rejected"),
             std::string::npos)
       << h.note;
-  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, added_faces(filled), 1).empty());
+  EXPECT_FALSE(test::new_faces_cross(input, filled));
 
   o.retry_rejecting_crossings = false;
   Mesh floor = input;
   const HoleReport linear = fill_holes(floor, o).holes[3];
   ASSERT_EQ(linear.status, HoleStatus::filled) << linear.reason;
   EXPECT_EQ(delivered_label(linear.supported, linear.linear), "C2 (linear)") << linear.note;
-  EXPECT_TRUE(find_face_intersections(floor.V, floor.F, added_faces(floor), 1).empty());
+  EXPECT_FALSE(test::new_faces_cross(input, floor));
   // The G2 fill does not fold against the floor it replaces.
   EXPECT_LT(h.continuity.max_normal_angle, 1.5 * linear.continuity.max_normal_angle);
 }
@@ -614,9 +606,7 @@ TEST(FillBlub, ABallHoleWhoseFairingRingsTouchThemselvesIsFilled) {
   ASSERT_EQ(r.filled, 1) << r.holes.front().reason;
   EXPECT_EQ(r.holes.front().supported, Continuity::G2);
   expect_watertight(holed, filled);
-  std::vector<int> new_faces(filled.num_faces() - holed.num_faces());
-  std::iota(new_faces.begin(), new_faces.end(), holed.num_faces());
-  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+  EXPECT_FALSE(test::new_faces_cross(holed, filled));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -968,9 +958,7 @@ TEST(FillPinches, AHoleRoundAnIslandJoinedAtOneVertexIsFilledManifold) {
   EXPECT_FALSE(boundary_vertex_flags(topo)[pinch]);
   EXPECT_EQ(connected_components(filled.F, topo).count, 1);
   EXPECT_LT(filled.V.bottomRows(filled.num_vertices() - holed.num_vertices()).col(2).cwiseAbs().maxCoeff(), 1e-9);
-  std::vector<int> new_faces(filled.num_faces() - holed.num_faces());
-  std::iota(new_faces.begin(), new_faces.end(), holed.num_faces());
-  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+  EXPECT_FALSE(test::new_faces_cross(holed, filled));
 }
 
 // The real-hole protocol's cut of blub at (-0.565203, -0.333718, 0.0970017), radius 8 h: two loops
@@ -997,9 +985,7 @@ TEST(FillPinches, BlubBallHoleThroughAPinchIsFilled) {
   }
   EXPECT_EQ(vertices, filled.num_vertices() - holed.num_vertices());
   expect_watertight(holed, filled);
-  std::vector<int> new_faces(filled.num_faces() - holed.num_faces());
-  std::iota(new_faces.begin(), new_faces.end(), holed.num_faces());
-  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+  EXPECT_FALSE(test::new_faces_cross(holed, filled));
 }
 
 // "filled with G2" means a settled G2 flow: one that stops at its step limit is not G2. With the
@@ -1058,9 +1044,7 @@ TEST(FillFailures, AHoleOfAJointGroupThatFailedIsFilledAlone) {
   const auto left = boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices()));
   ASSERT_EQ(left.size(), 1u);
   EXPECT_EQ(left[0].size(), loops[outer].size());
-  std::vector<int> new_faces(filled.num_faces() - holed.num_faces());
-  std::iota(new_faces.begin(), new_faces.end(), holed.num_faces());
-  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces).empty());
+  EXPECT_FALSE(test::new_faces_cross(holed, filled));
 }
 
 // Without the floor, a flow that stops at its step limit fails the hole and leaves the mesh as it was.

@@ -5,7 +5,6 @@
 #include <fairsurf/applications/repair.h>
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
-#include <fairsurf/mesh/face_intersection.h>
 #include <fairsurf/mesh/topology.h>
 #include <fairsurf/mesh/validate.h>
 #include <fairsurf/patch/hole_triangulation.h>
@@ -20,7 +19,6 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <numeric>
 #include <cstdio>
 #include <string>
 
@@ -221,9 +219,7 @@ TEST(RealHoleJointGroup, AHoleFairedAgainAloneIsNotRelaxedForTheGroupsCrossing) 
   EXPECT_EQ(other.continuity.max_normal_angle, hole.continuity.max_normal_angle);
   EXPECT_NE(other.note.find("filled in one patch with hole " + std::to_string(small)), std::string::npos)
       << other.note;
-  std::vector<int> new_faces(filled.num_faces() - cut.num_faces());
-  std::iota(new_faces.begin(), new_faces.end(), cut.num_faces());
-  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces).empty());
+  EXPECT_FALSE(test::new_faces_cross(cut, filled));
 }
 
 // blub's 90-edge hole across the edge of its tail fin (bench_real_holes' worst clean row, 6.7× CGAL's
@@ -466,9 +462,7 @@ TEST(RealHoleTongue, AFillThatFailsIsTriangulatedAgainWithinTheDelaunayFaces) {
   EXPECT_NE(hole.note.find("); triangulated again from the faces of the loop's Delaunay tetrahedralization"),
             std::string::npos)
       << hole.note;
-  std::vector<int> new_faces(filled.num_faces() - cut.num_faces());
-  std::iota(new_faces.begin(), new_faces.end(), cut.num_faces());
-  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+  EXPECT_FALSE(test::new_faces_cross(cut, filled));
   EXPECT_TRUE(validate(filled).manifold());
   EXPECT_TRUE(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).empty());
   const double distance = mean_new_vertex_distance(filled, cut.num_vertices(), truth) / h;
@@ -533,9 +527,7 @@ TEST(RealHoleCrossing, AFlowWhosePatchCrossesTheMeshIsRelaxedAndTriedAgain) {
   EXPECT_EQ(delivered_label(r.hole().supported, r.hole().linear), "G2") << r.hole().note;
   EXPECT_NE(r.hole().note.find("crosses"), std::string::npos) << r.hole().note;
   EXPECT_NE(r.hole().note.find("relaxed tangentially"), std::string::npos) << r.hole().note;
-  std::vector<int> new_faces;
-  for (int f = ball.cut.num_faces(); f < r.filled.num_faces(); ++f) new_faces.push_back(f);
-  EXPECT_TRUE(find_face_intersections(r.filled.V, r.filled.F, new_faces, 1).empty());
+  EXPECT_FALSE(test::new_faces_cross(ball.cut, r.filled));
 
   Mesh once = ball.cut;
   FillOptions no_retry;
@@ -753,9 +745,7 @@ TEST(RealHoleBite, WhereEveryFairingFromTheMembraneCrossesTheMeshTheRefinedTrian
   EXPECT_TRUE(folds_back(hole)) << hole.note;
   EXPECT_NE(hole.note.find("every fairing from the membrane failed"), std::string::npos) << hole.note;
   EXPECT_NE(hole.note.find("faired from the refined triangulation instead"), std::string::npos) << hole.note;
-  std::vector<int> new_faces(filled.num_faces() - cut.num_faces());
-  std::iota(new_faces.begin(), new_faces.end(), cut.num_faces());
-  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+  EXPECT_FALSE(test::new_faces_cross(cut, filled));
   const ValidationReport checked = validate(filled);
   EXPECT_TRUE(checked.manifold());
   EXPECT_EQ(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).size(), loops.size() - 1);
@@ -811,9 +801,7 @@ TEST(RealHoleBite, AFoldedBiteIsTriangulatedAgainWithinTheDelaunayFaces) {
       << hole.note;
   EXPECT_FALSE(folds_back(hole)) << hole.note;
   EXPECT_LT(hole.continuity.max_normal_angle, 75 * kDegree);
-  std::vector<int> new_faces(filled.num_faces() - cut.num_faces());
-  std::iota(new_faces.begin(), new_faces.end(), cut.num_faces());
-  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+  EXPECT_FALSE(test::new_faces_cross(cut, filled));
   EXPECT_TRUE(validate(filled).manifold());
   std::printf("[bite] within the Delaunay faces: %.1f°, %.3f h from the uncut scan\n",
               hole.continuity.max_normal_angle / kDegree,
@@ -839,9 +827,7 @@ TEST(RealHoleFoldBack, AFillFromTheMembraneThatFoldsBackIsReplacedByOneFromTheRe
   EXPECT_FALSE(folds_back(hole)) << hole.note;
   EXPECT_NE(hole.note.find("the fill from the membrane folds back"), std::string::npos) << hole.note;
   EXPECT_NE(hole.note.find("filled from the refined triangulation instead"), std::string::npos) << hole.note;
-  std::vector<int> new_faces(filled.num_faces() - cut.num_faces());
-  std::iota(new_faces.begin(), new_faces.end(), cut.num_faces());
-  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces, 1).empty());
+  EXPECT_FALSE(test::new_faces_cross(cut, filled));
   EXPECT_TRUE(validate(filled).manifold());
   EXPECT_TRUE(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).empty());
 
@@ -1131,9 +1117,7 @@ TEST(RealHoleLoneTriangle, AHoleWhoseLoopRunsRoundALoneTriangleIsCutAgainOrFails
             std::string::npos)
       << filled_hole.note;
   EXPECT_FALSE(folds_back(filled_hole));
-  std::vector<int> new_faces(cut_again.num_faces() - cut.num_faces());
-  std::iota(new_faces.begin(), new_faces.end(), cut.num_faces());
-  EXPECT_TRUE(find_face_intersections(cut_again.V, cut_again.F, new_faces).empty());
+  EXPECT_FALSE(test::new_faces_cross(cut, cut_again));
 
   Mesh filled = cut;
   FillOptions no_fallback;
@@ -1355,7 +1339,5 @@ TEST(RealHoleLoneTriangle, ThreeLoneTrianglesAtOneHoleAreTakenIntoOnePatch) {
   EXPECT_TRUE(validate(filled).manifold());
   EXPECT_EQ(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).size(), 0u);
   EXPECT_EQ(filled.F.topRows(cut.num_faces()), cut.F);
-  std::vector<int> new_faces(filled.num_faces() - cut.num_faces());
-  std::iota(new_faces.begin(), new_faces.end(), cut.num_faces());
-  EXPECT_TRUE(find_face_intersections(filled.V, filled.F, new_faces).empty());
+  EXPECT_FALSE(test::new_faces_cross(cut, filled));
 }

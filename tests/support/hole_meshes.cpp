@@ -3,6 +3,7 @@
 #include "analytic_meshes.h"
 #include "test_support.h"
 
+#include <fairsurf/mesh/face_intersection.h>
 #include <fairsurf/mesh/topology.h>
 
 #include <Eigen/Geometry>
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -65,6 +67,12 @@ Mesh cut_faces(const Mesh& mesh, std::span<const int> faces) {
   std::vector<char> removed(static_cast<std::size_t>(mesh.num_faces()), 0);
   for (int f : faces) removed.at(static_cast<std::size_t>(f)) = 1;
   return keep_faces(mesh, [&](int f) { return !removed[static_cast<std::size_t>(f)]; });
+}
+
+bool new_faces_cross(const Mesh& holed, const Mesh& filled) {
+  std::vector<int> new_faces(filled.num_faces() - holed.num_faces());
+  std::iota(new_faces.begin(), new_faces.end(), holed.num_faces());
+  return !find_face_intersections(filled.V, filled.F, new_faces, 1).empty();
 }
 
 Mesh grid_with_chained_pinches() {

@@ -27,6 +27,10 @@ Mesh cut_slab(const Mesh& mesh, const Eigen::Vector3d& point, const Eigen::Vecto
 /// keep their order): an irregular cut that a benchmark drew, replayed.
 Mesh cut_faces(const Mesh& mesh, std::span<const int> faces);
 
+/// Whether a face that `filled` appends to the faces of `holed` (the mesh before the fill, whose
+/// faces `filled` keeps first) crosses a face of `filled` (face_intersection.h).
+bool new_faces_cross(const Mesh& holed, const Mesh& filled);
+
 /// A sheet bent into an S, z = 0.5 sin(πx) over [-1, 1]² (12 × 12 squares), with a small hole near
 /// its edge: the rings of the hole and of the sheet's outer border overlap, so fill takes them as
 /// one group, and every patch of the outer border crosses the sheet where it passes through the
