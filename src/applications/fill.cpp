@@ -18,7 +18,6 @@
 #include <limits>
 #include <numbers>
 #include <optional>
-#include <unordered_set>
 
 namespace fairsurf {
 namespace {
@@ -339,10 +338,8 @@ bool delaunay_applies(const std::vector<std::vector<int>>& patch_loops, const Ho
 // passes: the lightest of kBridgeCutsWeighed cuts (HoleTriangulationOptions::bridge_cuts_weighed).
 void add_weighed_cuts(const FillOptions& options, const std::vector<std::vector<int>>& patch_loops,
                       std::vector<Retriangulation>& tries) {
-  const bool through_a_pinch_twice =
-      std::any_of(patch_loops.begin(), patch_loops.end(), [](const std::vector<int>& loop) {
-        return std::unordered_set<int>(loop.begin(), loop.end()).size() < loop.size();
-      });
+  const bool through_a_pinch_twice = std::any_of(
+      patch_loops.begin(), patch_loops.end(), [](const std::vector<int>& loop) { return passes_a_vertex_twice(loop); });
   if (!through_a_pinch_twice || options.patch.triangulation.bridge_cuts_weighed >= kBridgeCutsWeighed) return;
   tries.push_back({options, "the lightest of " + std::to_string(kBridgeCutsWeighed) +
                                 " cuts between the loop's passes through a pinch"});

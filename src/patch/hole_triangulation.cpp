@@ -583,9 +583,12 @@ HoleTriangulation triangulate_hole(const Vertices& V, const Faces& F, const Topo
   return result;
 }
 
+bool passes_a_vertex_twice(std::span<const int> loop) {
+  return std::set<int>(loop.begin(), loop.end()).size() < loop.size();
+}
+
 bool delaunay_restriction_applies(std::span<const int> loop, const HoleTriangulationOptions& options) {
-  const std::set<int> distinct(loop.begin(), loop.end());
-  return distinct.size() == loop.size() && static_cast<int>(loop.size()) <= options.max_dynamic_programming_size;
+  return !passes_a_vertex_twice(loop) && static_cast<int>(loop.size()) <= options.max_dynamic_programming_size;
 }
 
 TriangulationWeight triangulation_weight(const Vertices& V, const Faces& F, const Faces& faces) {

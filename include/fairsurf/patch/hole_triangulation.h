@@ -112,6 +112,11 @@ HoleTriangulation triangulate_hole(const Vertices& V, const Faces& F, const Topo
                                    std::span<const int> loop,
                                    const HoleTriangulationOptions& options = {});
 
+/// Whether `loop` passes a vertex more than once (a pinch of the border): the loops that are cut
+/// between their passes (HoleTriangulationOptions::bridge_cuts_weighed) and that the Delaunay
+/// restriction leaves to the full search.
+bool passes_a_vertex_twice(std::span<const int> loop);
+
 /// Whether HoleTriangulationOptions::delaunay_restricted can restrict the search for `loop`: not
 /// where the loop passes a vertex twice or has more than `max_dynamic_programming_size` edges (the
 /// full search runs then, as it does where the loop's vertices span no volume, which only the
