@@ -594,6 +594,8 @@ TEST(HoleTriangulation, TheDelaunayRestrictionTakesAsFewOtherTrianglesAsItMust) 
 // twice, nor one longer than the programme solves whole.
 TEST(HoleTriangulation, TheDelaunayRestrictionAppliesToSimpleLoopsTheProgrammeSolvesWhole) {
   const std::vector<int> simple{0, 1, 2, 3, 4}, pinched{0, 1, 2, 0, 3, 4};
+  EXPECT_FALSE(passes_a_vertex_twice(simple));
+  EXPECT_TRUE(passes_a_vertex_twice(pinched));
   EXPECT_TRUE(delaunay_restriction_applies(simple, {}));
   EXPECT_FALSE(delaunay_restriction_applies(pinched, {}));
   EXPECT_TRUE(delaunay_restriction_applies(simple, {.max_dynamic_programming_size = 5}));
