@@ -13,9 +13,11 @@
 
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <random>
 
 #include "analytic_meshes.h"
+#include "hole_meshes.h"
 #include "test_support.h"
 
 using namespace fairsurf;
@@ -156,6 +158,44 @@ TEST(MeshQuality, InvertedFacesAndNoiseIndex) {
   EXPECT_GT(index, 0.2);
   std::vector<char> none(sphere.num_vertices(), 0);
   EXPECT_EQ(noise_index(noisy, sphere.F, topo, none), 0.0);
+}
+
+// roughness: how far a vertex lies from the quadratic its 2-ring predicts, in edges. Curvature
+// alone reads close to 0, normal noise of σ edges about 0.8 σ, and a vertex on a knife edge, whose
+// 2-ring is no height function over its tangent plane, is left out rather than read as rough.
+TEST(MeshQuality, RoughnessReadsNoiseAtTheScaleOfAnEdgeNotCurvature) {
+  const test::ParametricMesh torus = test::torus_grid(60, 30, 1.0, 0.4);
+  const Topology topo = build_topology(torus.mesh.F, torus.mesh.num_vertices());
+  std::vector<int> every(torus.mesh.num_vertices());
+  std::iota(every.begin(), every.end(), 0);
+  const double h = test::mean_edge_length(torus.mesh);
+  const double smooth = roughness(torus.mesh.V, torus.mesh.F, topo, every);
+  double noisy[2];
+  for (int k = 0; k < 2; ++k) {
+    Mesh copy = torus.mesh;
+    test::add_normal_noise(copy, (k == 0 ? 0.03 : 0.1) * h, 11);
+    noisy[k] = roughness(copy.V, copy.F, topo, every);
+  }
+  std::printf("[quality] torus 60 x 30: roughness %.4f; with 0.03 and 0.1 edges of normal noise %.4f, %.4f\n", smooth,
+              noisy[0], noisy[1]);
+  EXPECT_LT(smooth, 0.01);
+  EXPECT_GT(noisy[0], 2 * smooth);
+  EXPECT_GT(noisy[1], 2 * noisy[0]);
+  EXPECT_GT(noisy[1], 0.06);
+  EXPECT_LT(noisy[1], 0.11);
+  EXPECT_EQ(roughness(torus.mesh.V, torus.mesh.F, topo, {}), 0.0);
+  const int outside[] = {torus.mesh.num_vertices()};
+  EXPECT_THROW(roughness(torus.mesh.V, torus.mesh.F, topo, outside), InvalidArgument);
+
+  // A sphere pressed into a disk 0.04 thick: at its rim the 2-ring wraps round a knife edge.
+  Mesh disk = test::icosphere(3);
+  disk.V.col(2) *= 0.02;
+  const Topology disk_topo = build_topology(disk.F, disk.num_vertices());
+  std::vector<int> rim;
+  for (int v = 0; v < disk.num_vertices(); ++v)
+    if (std::abs(disk.V(v, 2)) < 1e-12) rim.push_back(v);
+  ASSERT_FALSE(rim.empty());
+  EXPECT_EQ(roughness(disk.V, disk.F, disk_topo, rim), 0.0) << "a rim vertex was read";
 }
 
 TEST(TangentialRelaxation, RunFlowRejectsAWeightOutsideTheUnitInterval) {
