@@ -116,6 +116,7 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"held_out_linear_error", r.held_out_linear_error},
                    {"held_out_two_ring_flow_error", r.held_out_two_ring_flow_error},
                    {"held_out_refined_linear_error", r.held_out_refined_linear_error},
+                   {"held_out_roughness", r.held_out_roughness},
                    {"refined_start", r.refined_start},
                    {"checks_chose_linear", r.checks_chose_linear},
                    {"flow_folded_back", r.flow_folded_back},

@@ -103,6 +103,7 @@ py::dict hole_dict(const HoleReport& r) {
                   "held_out_linear_error"_a = r.held_out_linear_error,
                   "held_out_two_ring_flow_error"_a = r.held_out_two_ring_flow_error,
                   "held_out_refined_linear_error"_a = r.held_out_refined_linear_error,
+                  "held_out_roughness"_a = r.held_out_roughness,
                   "refined_start"_a = r.refined_start, "checks_chose_linear"_a = r.checks_chose_linear,
                   "flow_folded_back"_a = r.flow_folded_back,
                   "two_ring_boundary_fits"_a = r.two_ring_boundary_fits, "note"_a = r.note, "steps"_a = r.steps,

@@ -10,6 +10,7 @@
 #include <fairsurf/geometry/continuity_measure.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/face_intersection.h>
+#include <fairsurf/mesh/mesh_quality.h>
 #include <fairsurf/mesh/submesh.h>
 #include <fairsurf/mesh/topology.h>
 #include <fairsurf/mesh/validate.h>
@@ -139,13 +140,25 @@ void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& regi
                 " solution it started from";
 }
 
+// roughness() of the surface around the region: over the vertices 3 and 4 rings out, whose 2-rings
+// hold no free vertex (the submesh keeps FairRegionOptions::submesh_rings = 6 rings).
+double surroundings_roughness(const Submesh& sub, const Topology& local) {
+  constexpr int kFirstRing = 3, kLastRing = 4;
+  const std::vector<int> distance = ring_distances(local, sub.free_local, kLastRing);
+  std::vector<int> surroundings;
+  for (int v = 0; v < static_cast<int>(distance.size()); ++v)
+    if (distance[v] >= kFirstRing) surroundings.push_back(v);
+  return roughness(sub.mesh.V, sub.mesh.F, local, surroundings);
+}
+
 // The fairing the held-out rings choose (FairRegionOptions::held_out_rings).
 enum class HeldOutChoice { flow, two_ring_flow, linear, refined_linear };
 
 // FairRegionOptions::held_out_rings: whichever of the flow as given, the flow with its boundary data
 // fitted over 2-rings (held_out_two_ring_fits) and the linear ∆^k solution re-predicts the held-out
 // rings best, with the reason in report.note where it is not the flow as given. The linear solution
-// must win by FairRegionOptions::held_out_margin; ties keep the flow.
+// must win by FairRegionOptions::held_out_margin; ties keep the flow. Around a region rougher than
+// FairRegionOptions::held_out_max_roughness it does not win at all.
 // `refined` (fill): one ∆^k solve from these positions of the free vertices is weighed first, and
 // taken where it beats the re-evaluated solution by kRefinedStartMargin (the flows are then not tried).
 // The linear method (method = harmonic) weighs only these two: with `refined` and held-out rings it
@@ -159,6 +172,24 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
   if (!linear_method && (!options.linear_floor || options.harmonic_start_iterations <= 0)) return HeldOutChoice::flow;
   const bool may_choose_linear = linear_method || options.held_out_may_choose_linear;
   if (!may_choose_linear && !fair_detail::weighs_two_ring_fits(options)) return HeldOutChoice::flow;
+  // The re-evaluated solution may win by held_out_margin, unless the surroundings are rough; fill's
+  // solve from before its membrane still may, by kRefinedStartMargin: noise does not win by half.
+  bool floor_may_win = may_choose_linear;
+  std::string rough;  // why it may not, if it otherwise could
+  const int order = static_cast<int>(report.supported) + 1;
+  if (!linear_method && may_choose_linear && std::isfinite(options.held_out_max_roughness)) {
+    report.held_out_roughness = surroundings_roughness(sub, local);
+    if (report.held_out_roughness > options.held_out_max_roughness) {
+      floor_may_win = false;
+      char text[240];
+      std::snprintf(text, sizeof text,
+                    "the surface around the region is rough (%.3g edges, above %.3g): the held-out rings, which "
+                    "reward a linear solution held by noisy rings for following the noise, did not weigh the "
+                    "linear ∆%d solution against the flow",
+                    report.held_out_roughness, options.held_out_max_roughness, order);
+      rough = text;
+    }
+  }
   const fair_detail::HeldOutErrors errors = fair_detail::held_out_errors(
       sub, local, options.held_out_rings, options, may_choose_linear ? refined : nullptr, !linear_method);
   report.held_out_flow_error = errors.flow;
@@ -166,7 +197,6 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
   report.held_out_linear_error = errors.linear;
   report.held_out_refined_linear_error = errors.refined_linear;
   const char* flow_name = to_string(flow_for(report.supported));
-  const int order = static_cast<int>(report.supported) + 1;
   char text[320];
   if (errors.refined_start_wins()) {
     const std::string flow_start = linear_method ? "" : std::string(" the ") + flow_name + " flow starts from";
@@ -182,7 +212,7 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
   if (linear_method) return HeldOutChoice::linear;
   const bool two_ring = errors.two_ring_flow < errors.flow;  // false for NaN (not weighed)
   const double best_flow = two_ring ? errors.two_ring_flow : errors.flow;
-  if (may_choose_linear && errors.linear * options.held_out_margin < best_flow) {
+  if (floor_may_win && errors.linear * options.held_out_margin < best_flow) {
     report.flow.well_posedness = errors.flow_well_posedness;  // the flow that was weighed, not run here
     std::snprintf(text, sizeof text,
                   "the linear ∆%d solution re-predicts the %d rings around the region better than the %s "
@@ -191,13 +221,16 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
     report.note = text;
     return HeldOutChoice::linear;
   }
-  if (!two_ring) return HeldOutChoice::flow;
+  if (!two_ring) {
+    report.note = rough;
+    return HeldOutChoice::flow;
+  }
   std::snprintf(text, sizeof text,
                 "boundary data fitted over 2-rings: with them the %s flow re-predicts the %d rings around the "
                 "region better (%.3g against %.3g mean edges off the input with 1-ring fits, %.3g for the "
                 "linear ∆%d solution)",
                 flow_name, options.held_out_rings, errors.two_ring_flow, errors.flow, errors.linear, order);
-  report.note = text;
+  report.note = rough.empty() ? std::string(text) : rough + "; " + text;
   return HeldOutChoice::two_ring_flow;
 }
 
@@ -295,9 +328,7 @@ FairRegionReport fair_valid(Mesh& mesh, const Topology& topo, std::span<const in
                             bool* whole, const HarmonicReport* solved_start, const Vertices* refined) {
   const auto start = detail::Clock::now();
   if (free_vertices.empty()) throw InvalidArgument("fair_region: the free region is empty");
-  if (!(options.held_out_margin >= 1))
-    throw InvalidArgument("fair_region: held_out_margin must be at least 1, not " +
-                          std::to_string(options.held_out_margin));
+  fair_detail::require_valid_held_out_options(options, "fair_region");
   const FlowKind wanted = flow_for(options.continuity);
   if (options.flow.kind && *options.flow.kind != wanted)
     throw InvalidArgument(std::string("fair_region: flow.kind ") + to_string(*options.flow.kind) + " cannot reach " +

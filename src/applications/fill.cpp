@@ -10,6 +10,7 @@
 #include "fill_group.h"
 #include "fill_groups.h"
 #include "fill_selection.h"
+#include "held_out.h"
 #include "patch/border_pinches.h"
 #include "stopwatch.h"
 
@@ -588,6 +589,9 @@ FillOptions::FillOptions() : FairRegionOptions(harmonic_started()) {
   // Within 5% the held-out rings cannot tell a hole's flow and linear fill apart (docs/fill.md,
   // "Ties go to the flow"): such a tie goes to the G2 that was asked for.
   held_out_margin = 1.05;
+  // On noisy surroundings the held-out rings reward the linear fill for following the noise
+  // (docs/fill.md, "Rough surroundings"): there the re-evaluated ∆³ solution does not win by them.
+  held_out_max_roughness = 0.05;
 }
 
 bool folds_back(const HoleReport& hole) {
@@ -614,6 +618,7 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
   if (!(options.crossing_retry_relaxation >= 0 && options.crossing_retry_relaxation <= 1))
     throw InvalidArgument("fill_holes: crossing_retry_relaxation must lie in [0, 1], got " +
                           std::to_string(options.crossing_retry_relaxation));
+  fair_detail::require_valid_held_out_options(options, "fill_holes");
   const Topology topo = fill_detail::require_fillable(mesh);
   FillReport report;
   report.input_vertices = mesh.num_vertices();

@@ -117,6 +117,7 @@ void report_fairing(const FairRegionReport& fairing, bool flowed, HoleReport& r)
   r.held_out_linear_error = fairing.held_out_linear_error;
   r.held_out_two_ring_flow_error = fairing.held_out_two_ring_flow_error;
   r.held_out_refined_linear_error = fairing.held_out_refined_linear_error;
+  r.held_out_roughness = fairing.held_out_roughness;
   r.refined_start = fairing.refined_start;
   r.checks_chose_linear = fairing.checks_chose_linear;
   r.flow_folded_back = fairing.flow_folded_back;

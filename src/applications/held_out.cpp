@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace fairsurf::fair_detail {
@@ -95,6 +96,15 @@ double flow_held_out_error(const Mesh& mesh, const Topology& topo, const std::ve
 }
 
 }  // namespace
+
+void require_valid_held_out_options(const FairRegionOptions& options, const char* caller) {
+  if (!(options.held_out_margin >= 1))
+    throw InvalidArgument(std::string(caller) + ": held_out_margin must be at least 1, not " +
+                          std::to_string(options.held_out_margin));
+  if (!(options.held_out_max_roughness >= 0))
+    throw InvalidArgument(std::string(caller) + ": held_out_max_roughness must be at least 0, not " +
+                          std::to_string(options.held_out_max_roughness));
+}
 
 HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int rings, const FairRegionOptions& fairing,
                               const Vertices* refined, bool weigh_flows) {

@@ -51,6 +51,10 @@ struct HeldOutErrors {
   bool refined_start_wins() const { return kRefinedStartMargin * refined_linear < linear; }
 };
 
+/// Throws InvalidArgument, naming `caller`, where held_out_margin is below 1 or
+/// held_out_max_roughness below 0 (either NaN).
+void require_valid_held_out_options(const FairRegionOptions& options, const char* caller);
+
 /// Frees the `rings` rings of fixed vertices around the free vertices in a copy of `sub`, fairs that
 /// larger region with `fairing` (the flow with its linear floor; held_out_rings ignored), with the
 /// same flow on 2-ring boundary fits where fairing.held_out_two_ring_fits asks, and with its

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -219,6 +221,14 @@ TEST(FairRegion, RejectsBadInput) {
     FAIL() << "no exception";
   } catch (const InvalidArgument& e) {
     EXPECT_STREQ(e.what(), "fair_region: held_out_margin must be at least 1, not 0.900000");
+  }
+  eager.held_out_margin = 1;
+  eager.held_out_max_roughness = std::numeric_limits<double>::quiet_NaN();
+  try {
+    fair_region(m, std::vector<int>{1}, eager);
+    FAIL() << "no exception";
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "fair_region: held_out_max_roughness must be at least 0, not nan");
   }
   FairRegionOptions agreeing;
   agreeing.continuity = Continuity::G0;

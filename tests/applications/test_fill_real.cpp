@@ -120,6 +120,8 @@ TEST_P(RealHoles, FilledWatertightAndNeverAFlowThatPredictsWorseThanTheLinearFlo
   // over (the flows, which start from that solution, are then not tried), else the best of the rest.
   ASSERT_TRUE(std::isfinite(hole.held_out_linear_error));
   ASSERT_FALSE(std::isnan(hole.held_out_refined_linear_error));
+  // A clean mesh reads smooth around the hole, so the floor may win (FillOptions::held_out_max_roughness).
+  EXPECT_LT(hole.held_out_roughness, FillOptions{}.held_out_max_roughness);
   const bool refined = 2 * hole.held_out_refined_linear_error < hole.held_out_linear_error;
   EXPECT_EQ(hole.refined_start, refined) << hole.note;
   if (refined) {
@@ -898,6 +900,49 @@ TEST(RealNoisyHole, KeepingTheFlowStillTakesTheTwoRingBoundaryDataTheHeldOutRing
   std::printf("[noisy hole, keep flow] blub 4h, 0.1h noise: 2-ring fits %.3f h, 1-ring fits %.3f h\n", two_ring,
               one_ring_distance);
   EXPECT_LT(two_ring, 0.8 * one_ring_distance);  // 0.060 h against 0.088 h
+}
+
+// spot 4h with 0.1 h of normal noise (seed 6): the ∆³ floor, held by the noisy rings, re-predicts
+// the noisy held-out rings better than the flow by 14% (0.193 against 0.225 mean edges) and was
+// delivered, 0.447 h from the clean cow. The surroundings read rough (0.066 edges; the clean cow
+// 0.02 at most around the holes of bench_real_holes), so the floor no longer wins by the held-out
+// rings there: the G2 flow is delivered, and it lies closer to the clean surface (0.361 h).
+TEST(RealNoisyHole, OnRoughSurroundingsTheHeldOutRingsDoNotChooseTheFloorAndTheG2FillLiesCloser) {
+  const Mesh truth = read_mesh(test::data_path("spot.obj"));
+  const double h = test::mean_edge_length(truth);
+  Mesh cut = test::cut_ball(truth, {0.312594, 0.674309, -0.341185}, 4 * h);
+  test::add_normal_noise(cut, 0.1 * h, 6);
+  const FilledTwice r = fill_twice(cut, truth);
+  ASSERT_EQ(r.report.holes.size(), 1u);
+  const HoleReport& hole = r.hole();
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_GT(hole.held_out_roughness, FillOptions{}.held_out_max_roughness);
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
+  EXPECT_NE(hole.note.find("the surface around the region is rough"), std::string::npos) << hole.note;
+
+  // With the limit off, the held-out rings choose the floor, as they did before it.
+  Mesh off_filled = cut;
+  FillOptions off;
+  off.held_out_max_roughness = std::numeric_limits<double>::infinity();
+  const FillReport off_report = fill_holes(off_filled, off);
+  const HoleReport& off_hole = off_report.holes.front();
+  EXPECT_TRUE(off_hole.linear && off_hole.checks_chose_linear) << off_hole.note;
+  EXPECT_TRUE(std::isnan(off_hole.held_out_roughness));
+  EXPECT_LT(off_hole.held_out_linear_error * off.held_out_margin,
+            std::min(off_hole.held_out_flow_error, off_hole.held_out_two_ring_flow_error));
+  const double off_distance = mean_new_vertex_distance(off_filled, cut.num_vertices(), truth) / h;
+  std::printf("[noisy hole] spot 4h, 0.1h noise, seed 6: roughness %.4f; G2 %.3f h, the floor the held-out rings "
+              "chose without the limit %.3f h\n",
+              hole.held_out_roughness, r.distance, off_distance);
+  EXPECT_LT(r.distance, 0.9 * off_distance);
+  EXPECT_THROW(
+      {
+        FillOptions negative;
+        negative.held_out_max_roughness = -1;
+        Mesh copy = cut;
+        fill_holes(copy, negative);
+      },
+      InvalidArgument);
 }
 
 // data/hemisphere.off (pmp-library) is the unit sphere above z ≈ 0.1, open along a 120-edge circle

@@ -84,6 +84,10 @@ def test_keep_flow_delivers_g2_where_the_held_out_rings_chose_the_floor(data_dir
     assert [h["delivered"] for h in kept["holes"]] == ["G2"] * 5
     # The held-out rings only chose between the flow's 1-ring and 2-ring boundary fits.
     assert not any(h["checks_chose_linear"] for h in kept["holes"])
+    # The scan reads smooth at the scale of its edges (held_out_max_roughness 0.05): so the held-out
+    # rings could weigh the floor by default; with keep_flow they do not, and the roughness is not read.
+    assert all(0 < h["held_out_roughness"] < 0.05 for h in default["holes"])
+    assert all(np.isnan(h["held_out_roughness"]) for h in kept["holes"])
     assert not any(h["flow_folded_back"] for h in kept["holes"])
     assert all(np.isfinite(h["held_out_two_ring_flow_error"]) for h in kept["holes"])
     assert fairsurf.info(V2, F2)["boundary_loops"] == []

@@ -79,6 +79,15 @@ struct FairRegionOptions {
   /// from the patch before its membrane). false (keep_settled_flow): they only choose the flow's
   /// boundary fits, 1-ring or 2-ring (held_out_two_ring_fits), and are not run without the choice.
   bool held_out_may_choose_linear = true;
+  /// With held_out_rings and held_out_may_choose_linear: where the surface around the region is
+  /// rougher than this (roughness(), mesh_quality.h, over the vertices 3 and 4 rings out of the
+  /// region, in edges), the re-evaluated ∆^k solution does not win by them (fill's solve from before
+  /// the membrane still may, by its factor of 2). A linear solution held by the input's noisy rings
+  /// follows their noise into the held-out rings and wins there by following it, not by lying
+  /// closer to the surface. ∞ (here, and for `fairsurf fair`): off;
+  /// FillOptions uses 0.05, above the 0.000–0.021 of the clean meshes and scans of data/ and below
+  /// the 0.075–0.10 that 0.1 edges of noise reads on them (docs/fill.md, "Rough surroundings").
+  double held_out_max_roughness = std::numeric_limits<double>::infinity();
   /// With the linear floor: a flow whose steady state turns the normal across the region's border
   /// (ContinuityMeasure::max_normal_angle) by more than this many times the ∆^k solution it started
   /// from does, and by more than 5 degrees, folds against it: the linear solution is kept, reported
@@ -155,6 +164,10 @@ struct FairRegionReport {
   /// Fill only: the same for one ∆^k solve from the patch as refinement left it, before the
   /// membrane (InitialPatch::refined_free); NaN when not weighed. It is weighed before the flows.
   double held_out_refined_linear_error = std::numeric_limits<double>::quiet_NaN();
+  /// FairRegionOptions::held_out_max_roughness: the roughness of the surface around the region it
+  /// was weighed against; NaN when not measured (the limit is off, or the rings could not choose a
+  /// linear solution anyway).
+  double held_out_roughness = std::numeric_limits<double>::quiet_NaN();
   /// Fill only: the delivered linear solution is that one (report.linear is then true too), taken
   /// where its held-out error is under half the re-evaluated linear solution's, from which the
   /// flows start; they are then not tried (their errors NaN). The linear method (method = harmonic,

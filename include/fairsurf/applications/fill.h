@@ -63,7 +63,9 @@ struct FillOptions : FairRegionOptions {
   /// rejection), and both linear solvers use the minimum-degree ordering (LinearSolverOptions::
   /// ordering), whose analysis is far cheaper than nested dissection's on patch-sized systems.
   /// The linear solution is delivered only where the held-out rings prefer it by more than 5%
-  /// (held_out_margin = 1.05; docs/fill.md, "Ties go to the flow").
+  /// (held_out_margin = 1.05; docs/fill.md, "Ties go to the flow"); the re-evaluated ∆³ solution
+  /// not at all where the surface around the hole is rough (held_out_max_roughness = 0.05;
+  /// docs/fill.md, "Rough surroundings").
   FillOptions();
 
   PatchOptions patch;  ///< triangulation, refinement and membrane of the initial patch
@@ -170,6 +172,9 @@ struct HoleReport {
   double held_out_two_ring_flow_error = std::numeric_limits<double>::quiet_NaN();
   /// Of one ∆^k solve from the patch before its membrane (FairRegionReport's).
   double held_out_refined_linear_error = std::numeric_limits<double>::quiet_NaN();
+  /// FairRegionOptions::held_out_max_roughness: the roughness around the hole it was weighed against
+  /// (FairRegionReport's); NaN when not measured.
+  double held_out_roughness = std::numeric_limits<double>::quiet_NaN();
   /// The delivered linear solution is that one (FairRegionReport::refined_start).
   bool refined_start = false;
   /// The delivered flow read its boundary data from 2-ring fits (FlowOptions::two_ring_boundary_fits).
