@@ -190,7 +190,7 @@ void fill_ours(const Mesh& cut, const FillOptions& options, const Truth& truth, 
     for (const HoleReport& r : report.holes) {
       if (r.patch_shared_with < 0) row.steps += r.steps;  // a patch two loops share counts once
       if (r.status == HoleStatus::filled)
-        add_choice(row, r);
+        add_choice(row, r), add_note(row, r.note);
       if (r.status == HoleStatus::failed) add_note(row, r.reason);
     }
   } catch (const std::exception& e) {

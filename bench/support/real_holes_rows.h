@@ -97,8 +97,9 @@ void flag_fold(Row& row);
 /// fairsurf's mean distance over CGAL's, by both measures.
 void set_ratios(Row& row);
 void add_note(Row& row, const std::string& note);
-/// Appends one hole's (or region's) held-out decision to row.choice and row.held_out: `report` is a
-/// HoleReport or a FairRegionReport, which name these fields alike.
+/// Appends one hole's (or region's) held-out decision to row.choice and row.held_out (its four
+/// held-out errors and the roughness around it): `report` is a HoleReport or a FairRegionReport,
+/// which name these fields alike.
 template <class Report>
 void add_choice(Row& row, const Report& report) {
   const char* choice = report.refined_start ? "refined"
@@ -113,7 +114,8 @@ void add_choice(Row& row, const Report& report) {
   for (const double error : {report.held_out_flow_error, report.held_out_two_ring_flow_error,
                              report.held_out_linear_error})
     row.held_out.append(number(error)).push_back('/');
-  row.held_out.append(number(report.held_out_refined_linear_error));
+  row.held_out.append(number(report.held_out_refined_linear_error)).push_back('/');
+  row.held_out.append(number(report.held_out_roughness));
 }
 
 /// CGAL's border angle in degrees, starred when it folds by the same rule.
