@@ -81,18 +81,21 @@ HoleReport fill_from_membrane_only(const Mesh& cut, Mesh& filled) {
   return report.holes.front();
 }
 
-// data/`mesh` cut by a ball of `radius` mean edge lengths around `centre`, filled twice (fill_twice).
+// data/`mesh` cut by a ball of `radius` mean edge lengths around `centre`, with normal noise of
+// `noise` mean edge lengths drawn from `seed` where `noise` > 0, filled twice (fill_twice).
 struct BallHole {
   Mesh truth, cut;
   double h = 0;
   FilledTwice r;
 };
 
-BallHole fill_ball_hole(const std::string& mesh, const Eigen::Vector3d& centre, double radius) {
+BallHole fill_ball_hole(const std::string& mesh, const Eigen::Vector3d& centre, double radius, double noise = 0,
+                        unsigned seed = 0) {
   BallHole b;
   b.truth = read_mesh(test::data_path(mesh));
   b.h = test::mean_edge_length(b.truth);
   b.cut = test::cut_ball(b.truth, centre, radius * b.h);
+  if (noise > 0) test::add_normal_noise(b.cut, noise * b.h, seed);
   b.r = fill_twice(b.cut, b.truth);
   return b;
 }
@@ -853,11 +856,7 @@ TEST(RealHoleFoldBack, AFillFromTheMembraneThatFoldsBackIsReplacedByOneFromTheRe
 // noise; read from 2-ring fits (FlowOptions::two_ring_boundary_fits), which the held-out rings choose
 // here, the G2 fill comes far closer to the clean surface than the linear floor does.
 TEST(RealNoisyHole, TheHeldOutRingsChooseTwoRingBoundaryDataAndTheG2FillBeatsTheFloor) {
-  const Mesh truth = read_mesh(test::data_path("blub.obj"));
-  const double h = test::mean_edge_length(truth);
-  Mesh cut = test::cut_ball(truth, {0.176282, 0.148983, -0.699856}, 4 * h);
-  test::add_normal_noise(cut, 0.1 * h, 2439);
-  const FilledTwice r = fill_twice(cut, truth);
+  const FilledTwice r = fill_ball_hole("blub.obj", {0.176282, 0.148983, -0.699856}, 4, 0.1, 2439).r;
 
   ASSERT_EQ(r.report.holes.size(), 1u);
   const HoleReport& hole = r.hole();
@@ -908,11 +907,9 @@ TEST(RealNoisyHole, KeepingTheFlowStillTakesTheTwoRingBoundaryDataTheHeldOutRing
 // 0.02 at most around the holes of bench_real_holes), so the floor no longer wins by the held-out
 // rings there: the G2 flow is delivered, and it lies closer to the clean surface (0.361 h).
 TEST(RealNoisyHole, OnRoughSurroundingsTheHeldOutRingsDoNotChooseTheFloorAndTheG2FillLiesCloser) {
-  const Mesh truth = read_mesh(test::data_path("spot.obj"));
-  const double h = test::mean_edge_length(truth);
-  Mesh cut = test::cut_ball(truth, {0.312594, 0.674309, -0.341185}, 4 * h);
-  test::add_normal_noise(cut, 0.1 * h, 6);
-  const FilledTwice r = fill_twice(cut, truth);
+  const BallHole ball = fill_ball_hole("spot.obj", {0.312594, 0.674309, -0.341185}, 4, 0.1, 6);
+  const Mesh& cut = ball.cut;
+  const FilledTwice& r = ball.r;
   ASSERT_EQ(r.report.holes.size(), 1u);
   const HoleReport& hole = r.hole();
   ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
@@ -930,7 +927,7 @@ TEST(RealNoisyHole, OnRoughSurroundingsTheHeldOutRingsDoNotChooseTheFloorAndTheG
   EXPECT_TRUE(std::isnan(off_hole.held_out_roughness));
   EXPECT_LT(off_hole.held_out_linear_error * off.held_out_margin,
             std::min(off_hole.held_out_flow_error, off_hole.held_out_two_ring_flow_error));
-  const double off_distance = mean_new_vertex_distance(off_filled, cut.num_vertices(), truth) / h;
+  const double off_distance = mean_new_vertex_distance(off_filled, cut.num_vertices(), ball.truth) / ball.h;
   std::printf("[noisy hole] spot 4h, 0.1h noise, seed 6: roughness %.4f; G2 %.3f h, the floor the held-out rings "
               "chose without the limit %.3f h\n",
               hole.held_out_roughness, r.distance, off_distance);
