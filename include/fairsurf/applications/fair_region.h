@@ -86,7 +86,7 @@ struct FairRegionOptions {
   /// follows their noise into the held-out rings and wins there by following it, not by lying
   /// closer to the surface. ∞ (here, and for `fairsurf fair`): off;
   /// FillOptions uses 0.05, above the 0.000–0.021 of the clean meshes and scans of data/ and below
-  /// the 0.075–0.10 that 0.1 edges of noise reads on them (docs/fill.md, "Rough surroundings").
+  /// the 0.073–0.084 that 0.1 edges of noise reads on them (docs/fill.md, "Rough surroundings").
   double held_out_max_roughness = std::numeric_limits<double>::infinity();
   /// With the linear floor: a flow whose steady state turns the normal across the region's border
   /// (ContinuityMeasure::max_normal_angle) by more than this many times the ∆^k solution it started

@@ -26,11 +26,13 @@ double noise_index(const Vertices& V, const Faces& F, const Topology& topo,
 /// How far each vertex lies from where its 2-ring neighbours put it: the offset along its
 /// area-weighted normal from the quadratic height function fitted to them by least squares (the
 /// vertex itself left out), in units of the mean length of the edges at it. The median over
-/// `vertices`; vertices with fewer than 8 such neighbours or no normal are left out, 0 where none
-/// is left. A quadratic over the 2-ring predicts a smooth, finely sampled surface to a small
-/// fraction of an edge (the closed meshes and scans of data/: 0.000–0.021), and normal noise of
-/// σ edges at about 0.8 σ (0.1 edges of noise: 0.075–0.10 on the same meshes). Curvature that the
-/// 2-ring under-resolves reads as roughness too (data/hand_lowres.obj: 0.046).
+/// `vertices`; vertices with fewer than 8 such neighbours or no normal are left out, and so are
+/// those whose 2-ring holds a face steeper than 60° to their normal (a crease, the edge of a thin
+/// part: no height function); 0 where none is left. A quadratic over the 2-ring predicts a smooth,
+/// finely sampled surface to a small fraction of an edge (the closed meshes and scans of data/:
+/// 0.000–0.021), and normal noise of σ edges at about 0.8 σ (0.1 edges of noise: 0.073–0.084 on
+/// the same meshes). Curvature that the 2-ring under-resolves reads as roughness too
+/// (data/hand_lowres.obj: 0.037).
 double roughness(const Vertices& V, const Faces& F, const Topology& topo, std::span<const int> vertices);
 
 }  // namespace fairsurf
