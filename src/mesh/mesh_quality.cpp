@@ -59,8 +59,8 @@ constexpr int kFewestRoughnessNeighbours = 8;
 constexpr double kSteepestRoughnessFace = 0.5;
 
 // roughness at one vertex; NaN where it is left out.
-double vertex_roughness(const Vertices& V, const Faces& F, const Topology& topo, const Eigen::RowVector3d& normal, int v,
-                        std::vector<int>& neighbours) {
+double vertex_roughness(const Vertices& V, const Faces& F, const Topology& topo, const Eigen::RowVector3d& normal,
+                        int v, std::vector<int>& neighbours) {
   neighbours.clear();
   for (int u : topo.vertex_vertices.row(v))
     for (int w : topo.vertex_vertices.row(u))
@@ -75,7 +75,8 @@ double vertex_roughness(const Vertices& V, const Faces& F, const Topology& topo,
       const Eigen::RowVector3d face_normal = (b - a).cross(c - a);
       if (!(face_normal.dot(normal) > kSteepestRoughnessFace * face_normal.norm())) return NAN;
     }
-  const Eigen::RowVector3d axis = std::abs(normal.x()) < 0.9 ? Eigen::RowVector3d::UnitX() : Eigen::RowVector3d::UnitY();
+  const Eigen::RowVector3d axis =
+      std::abs(normal.x()) < 0.9 ? Eigen::RowVector3d::UnitX() : Eigen::RowVector3d::UnitY();
   const Eigen::RowVector3d e1 = normal.cross(axis).normalized(), e2 = normal.cross(e1);
   double edge = 0;
   for (int u : topo.vertex_vertices.row(v)) edge += (V.row(u) - V.row(v)).norm();

@@ -162,7 +162,7 @@ TEST(MeshQuality, InvertedFacesAndNoiseIndex) {
 
 // roughness: how far a vertex lies from the quadratic its 2-ring predicts, in edges. Curvature
 // alone reads close to 0, normal noise of σ edges about 0.8 σ, and a vertex on a knife edge, whose
-// 2-ring is no height function over its tangent plane, is left out rather than read as rough.
+// 2-ring is no height function over its tangent plane, is left out: no quadratic is fitted across it.
 TEST(MeshQuality, RoughnessReadsNoiseAtTheScaleOfAnEdgeNotCurvature) {
   const test::ParametricMesh torus = test::torus_grid(60, 30, 1.0, 0.4);
   const Topology topo = build_topology(torus.mesh.F, torus.mesh.num_vertices());
