@@ -58,6 +58,12 @@ constexpr int kFewestRoughnessNeighbours = 8;
 // tangent plane (a crease, the edge of a thin part): no quadratic predicts it, smooth or not.
 constexpr double kSteepestRoughnessFace = 0.5;
 
+// Face f's normal times twice its area.
+Eigen::RowVector3d area_normal(const Vertices& V, const Faces& F, int f) {
+  const Eigen::RowVector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+  return (b - a).cross(c - a);
+}
+
 // roughness at one vertex; NaN where it is left out.
 double vertex_roughness(const Vertices& V, const Faces& F, const Topology& topo, const Eigen::RowVector3d& normal,
                         int v, std::vector<int>& neighbours) {
@@ -71,8 +77,7 @@ double vertex_roughness(const Vertices& V, const Faces& F, const Topology& topo,
   if (n < kFewestRoughnessNeighbours || !(normal.norm() > 0)) return NAN;
   for (int u : topo.vertex_vertices.row(v))
     for (int f : topo.vertex_faces.row(u)) {
-      const Eigen::RowVector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
-      const Eigen::RowVector3d face_normal = (b - a).cross(c - a);
+      const Eigen::RowVector3d face_normal = area_normal(V, F, f);
       if (!(face_normal.dot(normal) > kSteepestRoughnessFace * face_normal.norm())) return NAN;
     }
   const Eigen::RowVector3d axis =
@@ -101,11 +106,8 @@ double roughness(const Vertices& V, const Faces& F, const Topology& topo, std::s
     if (v < 0 || v >= topo.num_vertices)
       throw InvalidArgument("roughness: vertex " + std::to_string(v) + " is not one of the " +
                             std::to_string(topo.num_vertices));
-    Eigen::RowVector3d normal = Eigen::RowVector3d::Zero();  // area-weighted: the faces' cross products
-    for (int f : topo.vertex_faces.row(v)) {
-      const Eigen::RowVector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
-      normal += (b - a).cross(c - a);
-    }
+    Eigen::RowVector3d normal = Eigen::RowVector3d::Zero();  // area-weighted
+    for (int f : topo.vertex_faces.row(v)) normal += area_normal(V, F, f);
     if (normal.norm() > 0) normal.normalize();
     if (const double offset = vertex_roughness(V, F, topo, normal, v, neighbours); !std::isnan(offset))
       offsets.push_back(offset);
