@@ -49,6 +49,7 @@ void store(const Work& work, bool remove_unreferenced, Mesh& mesh, RepairReport&
   }
   carry_face_attributes(mesh, source, out);
   mesh = std::move(out);
+  report.vertex_origin = std::move(source);
 }
 
 int change_count(const RepairReport& r) {
@@ -94,6 +95,31 @@ void repair_round(Work& work, const RepairOptions& options, RepairReport& report
 
 bool RepairReport::changed() const {
   return change_count(*this) > 0;
+}
+
+std::vector<NamedCount> named_counts(const RepairReport& r) {
+  return {{"input_vertices", r.input_vertices},
+          {"input_faces", r.input_faces},
+          {"output_vertices", r.output_vertices},
+          {"output_faces", r.output_faces},
+          {"invalid_faces_removed", r.invalid_faces_removed},
+          {"vertices_merged", r.vertices_merged},
+          {"merges_refused", r.merges_refused},
+          {"border_vertices_stitched", r.border_vertices_stitched},
+          {"faces_collapsed", r.faces_collapsed},
+          {"duplicate_faces_removed", r.duplicate_faces_removed},
+          {"needles_collapsed", r.needles_collapsed},
+          {"caps_flipped", r.caps_flipped},
+          {"caps_removed", r.caps_removed},
+          {"degenerate_faces_left", r.degenerate_faces_left},
+          {"non_manifold_edges", r.non_manifold_edges},
+          {"vertices_split", r.vertices_split},
+          {"vertices_added", r.vertices_added},
+          {"faces_flipped", r.faces_flipped},
+          {"non_orientable_components", r.non_orientable_components},
+          {"small_components_removed", r.small_components_removed},
+          {"small_component_faces_removed", r.small_component_faces_removed},
+          {"unreferenced_vertices_removed", r.unreferenced_vertices_removed}};
 }
 
 RepairReport repair(Mesh& mesh, const RepairOptions& options) {

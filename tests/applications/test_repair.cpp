@@ -13,6 +13,8 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <numeric>
+#include <vector>
 
 #include "test_support.h"
 
@@ -43,6 +45,18 @@ void expect_no_vertex_moved(const Mesh& in, const Mesh& out) {
   }
 }
 
+// RepairReport::vertex_origin names, for every vertex of `out`, an input vertex at exactly its
+// position.
+void expect_origins(const Mesh& in, const Mesh& out, const RepairReport& report) {
+  ASSERT_EQ(report.vertex_origin.size(), static_cast<std::size_t>(out.num_vertices()));
+  for (int v = 0; v < out.num_vertices(); ++v) {
+    const int origin = report.vertex_origin[static_cast<std::size_t>(v)];
+    ASSERT_GE(origin, 0);
+    ASSERT_LT(origin, in.num_vertices());
+    EXPECT_TRUE((in.V.row(origin).array() == out.V.row(v).array()).all()) << "vertex " << v << ", origin " << origin;
+  }
+}
+
 // The findings repair must leave at zero (duplicate positions are the copies a split makes on
 // purpose; non-orientable components are reported, not fixed).
 void expect_clean(const ValidationReport& r, const std::string& what) {
@@ -67,6 +81,9 @@ TEST(Repair, CleanMeshesAreLeftExactlyAsTheyWere) {
     const RepairReport report = repair(out);
     EXPECT_FALSE(report.changed()) << name;
     EXPECT_TRUE(same(out, in)) << name;
+    std::vector<int> identity(static_cast<std::size_t>(in.num_vertices()));
+    std::iota(identity.begin(), identity.end(), 0);
+    EXPECT_EQ(report.vertex_origin, identity) << name;
   }
 }
 
@@ -80,12 +97,17 @@ TEST(Repair, MergesAnUnweldedSoupIntoAClosedTetrahedron) {
     faces.push_back({base, base + 1, base + 2});
   }
   Mesh soup = make_mesh(points, faces);
+  const Mesh in = soup;
   const RepairReport report = repair(soup);
   EXPECT_EQ(report.vertices_merged, 8);
   EXPECT_EQ(report.unreferenced_vertices_removed, 8);
   EXPECT_EQ(soup.num_vertices(), 4);
   EXPECT_EQ(soup.num_faces(), 4);
   EXPECT_TRUE(validate(soup).is_valid());
+  // Each corner of the tetrahedron comes from the first of its three copies in the soup.
+  expect_origins(in, soup, report);
+  for (int origin : report.vertex_origin)
+    for (int w = 0; w < origin; ++w) EXPECT_FALSE((in.V.row(w).array() == in.V.row(origin).array()).all()) << w;
 }
 
 TEST(Repair, SplitsTwoTetrahedraSharingAVertex) {
@@ -111,6 +133,7 @@ TEST(Repair, SplitsTwoTetrahedraSharingAVertex) {
   EXPECT_TRUE(r.manifold());
   EXPECT_EQ(r.duplicate_vertex_positions.count, 1);  // the copy, on purpose
   expect_no_vertex_moved(in, m);
+  EXPECT_EQ(report.vertex_origin, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 0}));  // the copy of vertex 0 last
   Mesh again = m;
   EXPECT_FALSE(repair(again).changed());
   EXPECT_TRUE(same(again, m));
@@ -213,8 +236,9 @@ TEST(Repair, VertexAttributesFollowTheirVertices) {
   m.vertex_scalars["id"] = Eigen::VectorXd::LinSpaced(5, 0, 4);
   m.vertex_colors = Colors::Zero(5, 3);
   m.vertex_colors(3, 0) = 200;
-  repair(m);
+  const RepairReport report = repair(m);
   ASSERT_EQ(m.num_vertices(), 4);
+  EXPECT_EQ(report.vertex_origin, (std::vector<int>{0, 1, 2, 3}));
   EXPECT_EQ(m.vertex_scalars["id"], Eigen::VectorXd::LinSpaced(4, 0, 3));
   EXPECT_EQ(m.vertex_colors(3, 0), 200);
 }
@@ -259,6 +283,7 @@ TEST(Repair, EveryDefectiveMeshComesOutCleanAndASecondRunChangesNothing) {
     EXPECT_TRUE(report.changed());
     expect_clean(validate(m), name);
     expect_no_vertex_moved(in, m);
+    expect_origins(in, m, report);
     Mesh again = m;
     const RepairReport second = repair(again);
     EXPECT_FALSE(second.changed());

@@ -11,6 +11,8 @@
 
 #include <fairsurf/mesh/mesh.h>
 
+#include <vector>
+
 namespace fairsurf {
 
 struct RepairOptions {
@@ -86,9 +88,24 @@ struct RepairReport {
   int small_component_faces_removed = 0;
   int unreferenced_vertices_removed = 0;  ///< including the vertices merged away
 
+  /// #V out: for each output vertex, the input vertex whose position and attributes it carries (the
+  /// lowest-indexed vertex of a merged group, the original of a split copy). Lets a caller carry
+  /// its own per-vertex data across the repair; the identity where no vertex was merged, split or
+  /// removed.
+  std::vector<int> vertex_origin;
+
   /// Whether any operation changed the mesh (non_orientable_components is a finding, not a change).
   bool changed() const;
 };
+
+/// One count of a RepairReport under its field's name.
+struct NamedCount {
+  const char* key;  ///< "vertices_merged", ...
+  int value;
+};
+/// Every count of `report` (not vertex_origin), in declaration order: the keys of `fairsurf repair
+/// --json` and of the Python report.
+std::vector<NamedCount> named_counts(const RepairReport& report);
 
 /// Repairs `mesh` in place; vertex_scalars and vertex_colors follow their vertices (copies get
 /// their original's values). Never throws on bad content: a mesh with no valid face comes out empty.
