@@ -19,6 +19,7 @@ from ._fairsurf import (  # noqa: F401  (the public API)
     info,
     read_mesh,
     render,
+    repair,
     scene,
     smooth,
     write_mesh,
@@ -27,5 +28,5 @@ from ._fairsurf import (  # noqa: F401  (the public API)
 __all__ = [
     "Error", "InvalidArgument", "InvalidMeshError", "IoError", "NumericalError", "ParseError",
     "RepairableMeshError", "blend", "curvature", "fair", "fill_holes", "info", "read_mesh", "render",
-    "scene", "smooth", "write_mesh",
+    "repair", "scene", "smooth", "write_mesh",
 ]

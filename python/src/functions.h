@@ -5,7 +5,7 @@
 
 namespace fairsurf::python {
 
-void register_mesh_functions(pybind11::module_& m);    // read_mesh, write_mesh, info, curvature, scene
+void register_mesh_functions(pybind11::module_& m);    // read_mesh, write_mesh, info, curvature, repair, scene
 void register_flow_functions(pybind11::module_& m);    // smooth, fill_holes, fair, blend
 void register_render_functions(pybind11::module_& m);  // render
 

@@ -2,15 +2,20 @@
 #include "functions.h"
 #include "reports.h"
 
+#include <fairsurf/applications/repair.h>
 #include <fairsurf/applications/scenes.h>
 #include <fairsurf/geometry/curvatures.h>
 #include <fairsurf/io/io.h>
+#include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/mesh_summary.h>
 #include <fairsurf/mesh/validate.h>
 
 #include <pybind11/stl/filesystem.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <utility>
+#include <string>
 
 namespace fairsurf::python {
 namespace {
@@ -61,6 +66,34 @@ py::dict curvature(const py::handle& V, const py::handle& F) {
                   "well_posed"_a = well_posed);
 }
 
+// Refuses the negative values `fairsurf repair`'s flags refuse.
+void require_repair_values(const RepairOptions& o) {
+  const std::pair<const char*, double> values[] = {{"merge_tolerance", o.merge_tolerance},
+                                                   {"stitch_tolerance", o.stitch_tolerance},
+                                                   {"needle_tolerance", o.needle_tolerance},
+                                                   {"min_component_faces", o.min_component_faces}};
+  for (const auto& [name, value] : values) {
+    if (value >= 0) continue;
+    char text[120];
+    std::snprintf(text, sizeof text, "repair: %s must be at least 0, not %g", name, value);
+    throw InvalidArgument(text);
+  }
+}
+
+py::tuple repair_binding(const py::handle& V, const py::handle& F, const RepairOptions& options) {
+  Mesh mesh = to_mesh(V, F);
+  RepairReport report;
+  ValidationReport remaining;
+  {
+    py::gil_scoped_release release;
+    report = repair(mesh, options);
+    remaining = validate(mesh);
+  }
+  py::dict d = to_dict(report, remaining);
+  py::tuple VF = to_tuple(std::move(mesh));
+  return py::make_tuple(VF[0], VF[1], d);
+}
+
 py::tuple scene(const std::string& name, double edge_length) {
   Scene s;
   {
@@ -82,6 +115,39 @@ void register_mesh_functions(py::module_& m) {
   m.def("curvature", &curvature, "V"_a, "F"_a,
         "Per-vertex H (= -1/R on a sphere with outward normals), K, k1 >= k2, unit normal, area and "
         "well_posed (the fit's status) from the local quadratic fits.");
+  m.def(
+      "repair",
+      [](const py::handle& V, const py::handle& F, bool merge_duplicate_vertices, double merge_tolerance,
+         bool stitch_borders, double stitch_tolerance, bool remove_duplicate_faces, bool fix_degenerate_faces,
+         double needle_tolerance, bool split_non_manifold_vertices, bool keep_border_pinches,
+         bool resolve_non_manifold_edges, bool orient, int min_component_faces, bool remove_unreferenced_vertices) {
+        RepairOptions o;
+        o.merge_duplicate_vertices = merge_duplicate_vertices;
+        o.merge_tolerance = merge_tolerance;
+        o.stitch_borders = stitch_borders;
+        o.stitch_tolerance = stitch_tolerance;
+        o.remove_duplicate_faces = remove_duplicate_faces;
+        o.fix_degenerate_faces = fix_degenerate_faces;
+        o.needle_tolerance = needle_tolerance;
+        o.split_non_manifold_vertices = split_non_manifold_vertices;
+        o.keep_border_pinches = keep_border_pinches;
+        o.resolve_non_manifold_edges = resolve_non_manifold_edges;
+        o.orient = orient;
+        o.remove_small_components = min_component_faces > 0;  // as --min-component-faces 0
+        o.min_component_faces = min_component_faces;
+        o.remove_unreferenced_vertices = remove_unreferenced_vertices;
+        require_repair_values(o);
+        return repair_binding(V, F, o);
+      },
+      "V"_a, "F"_a, py::kw_only(), "merge_duplicate_vertices"_a = true, "merge_tolerance"_a = 0.0,
+      "stitch_borders"_a = true, "stitch_tolerance"_a = 0.0, "remove_duplicate_faces"_a = true,
+      "fix_degenerate_faces"_a = true, "needle_tolerance"_a = RepairOptions{}.needle_tolerance,
+      "split_non_manifold_vertices"_a = true, "keep_border_pinches"_a = false, "resolve_non_manifold_edges"_a = true,
+      "orient"_a = true, "min_component_faces"_a = RepairOptions{}.min_component_faces,
+      "remove_unreferenced_vertices"_a = true,
+      "Repairs the mesh as `fairsurf repair` (keep_border_pinches=True: as `fairsurf fill --repair`); "
+      "returns (V, F, report): the fields of `repair --json`, and vertex_origin, each output vertex's "
+      "input row.");
   m.def("scene", &scene, "name"_a, py::kw_only(), "edge_length"_a = SceneOptions{}.edge_length,
         "The paper's test scenes (fig3, fig4, fig7, fig8, sphere-cap) as (V, F).");
 }

@@ -1,5 +1,6 @@
 #include "reports.h"
 
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
@@ -173,6 +174,20 @@ py::dict to_dict(const MeshSummary& s, const ValidationReport& report) {
     if (named.finding->count > 0) example_dict[py::str(named.key)] = examples(*named.finding);
   }
   d["examples"] = example_dict;
+  return d;
+}
+
+py::dict to_dict(const RepairReport& report, const ValidationReport& remaining) {
+  py::dict d;
+  for (const NamedCount& count : named_counts(report)) d[py::str(count.key)] = count.value;
+  d["changed"] = report.changed();
+  py::dict findings;  // as the CLI: only those left
+  for (const auto& named : named_findings(remaining))
+    if (named.finding->count > 0) findings[py::str(named.key)] = named.finding->count;
+  d["remaining_findings"] = findings;
+  py::array_t<int> origin(static_cast<py::ssize_t>(report.vertex_origin.size()));
+  std::copy(report.vertex_origin.begin(), report.vertex_origin.end(), origin.mutable_data());
+  d["vertex_origin"] = origin;
   return d;
 }
 

@@ -1,5 +1,6 @@
 // The library's reports as dicts with the fields, names and nesting of the CLI's JSON logs
-// (apps/fairsurf: flow_log.cpp, cmd_fill.cpp, region_fairing_args.cpp, cmd_blend.cpp, cmd_info.cpp),
+// (apps/fairsurf: flow_log.cpp, cmd_fill.cpp, region_fairing_args.cpp, cmd_blend.cpp, cmd_info.cpp,
+// cmd_repair.cpp),
 // without the fields that name files or the command (input, output, command, repair).
 // tests/python/test_reports.py compares the keys with the CLI's logs.
 #pragma once
@@ -7,6 +8,7 @@
 #include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/applications/fill.h>
+#include <fairsurf/applications/repair.h>
 #include <fairsurf/flow/flow.h>
 #include <fairsurf/mesh/mesh_summary.h>
 #include <fairsurf/mesh/validate.h>
@@ -28,5 +30,8 @@ py::dict to_dict(const BlendReport& report);
 /// `steps` holds each jointly faired group's step dicts, by the group's first hole.
 py::dict to_dict(const FillReport& report, const std::map<int, py::list>& steps);
 py::dict to_dict(const MeshSummary& summary, const ValidationReport& validation);
+/// The fields of `fairsurf repair --json` (`remaining`: the repaired mesh's findings), and
+/// "vertex_origin" (RepairReport::vertex_origin as an int32 array).
+py::dict to_dict(const RepairReport& report, const ValidationReport& remaining);
 
 }  // namespace fairsurf::python
