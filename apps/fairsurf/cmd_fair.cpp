@@ -24,10 +24,10 @@ struct FairArgs {
   RegionFairingArgs fairing;
 };
 
-std::vector<int> selected_region(const FairArgs& args, const Mesh& mesh) {
+std::vector<int> selected_region(const FairArgs& args, const Mesh& mesh, const std::optional<RepairReport>& repaired) {
   std::vector<int> region;
   if (!args.region_file.empty()) {
-    region = read_vertex_indices(args.region_file, mesh.num_vertices());
+    region = input_vertex_indices(args.region_file, mesh, repaired);
   } else if (!args.region_sphere.empty()) {
     const auto& s = args.region_sphere;
     region = vertices_in_ball(mesh.V, Eigen::Vector3d(s[0], s[1], s[2]), s[3]);
@@ -58,7 +58,7 @@ void run_fair(const FairArgs& args) {
   Mesh mesh = read_input(args.input);
   drop_shape_properties(mesh, args.input);
   const auto repaired = repair_input(mesh, f.repair, args.input);
-  const std::vector<int> region = selected_region(args, mesh);
+  const std::vector<int> region = selected_region(args, mesh, repaired);
 
   FlowCommandRun run("fair", f.log, f.quiet,
                      {{"command", "fair"},

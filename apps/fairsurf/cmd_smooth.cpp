@@ -1,7 +1,6 @@
 // fairsurf smooth: denoise or fair a whole mesh with a geometric flow (smooth.h).
 #include <fairsurf/applications/smooth.h>
 #include <fairsurf/io/io.h>
-#include <fairsurf/mesh/region_selection.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -34,14 +33,14 @@ FlowKind flow_kind(const std::string& name) {
   return found != short_names.end() ? found->second : parse_flow_kind(name);
 }
 
-SmoothOptions smooth_options(const SmoothArgs& args, const Mesh& mesh) {
+SmoothOptions smooth_options(const SmoothArgs& args, const Mesh& mesh, const std::optional<RepairReport>& repaired) {
   SmoothOptions o = scan_smoothing_options(mesh, flow_kind(args.flow));
   o.flow.functions = args.functions;
   apply_solver_args(args.solver, o.flow.solver);
   o.flow.max_steps = args.max_steps;
   o.fixed_rings = args.fixed_rings;
   if (!args.fixed_vertices_file.empty())
-    o.fixed_vertices = read_vertex_indices(args.fixed_vertices_file, mesh.num_vertices());
+    o.fixed_vertices = input_vertex_indices(args.fixed_vertices_file, mesh, repaired);
   set_smoothing_end(o, {args.steps, args.steady, args.steady_tolerance, args.time, args.tau});
   return o;
 }
@@ -70,7 +69,7 @@ void run_smooth(const SmoothArgs& args) {
   Mesh mesh = read_input(args.input);
   drop_shape_properties(mesh, args.input);
   const auto repaired = repair_input(mesh, args.repair, args.input);
-  const SmoothOptions options = smooth_options(args, mesh);
+  const SmoothOptions options = smooth_options(args, mesh, repaired);
   FlowCommandRun run("smooth", args.log, args.quiet,
                      {{"command", "smooth"},
                       {"input", args.input},

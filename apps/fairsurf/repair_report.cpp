@@ -1,5 +1,8 @@
 #include "repair_report.h"
 
+#include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/region_selection.h>
+
 #include <cstdio>
 #include <vector>
 
@@ -60,6 +63,17 @@ std::optional<RepairReport> repair_input(Mesh& mesh, bool enabled, const std::st
   const RepairReport report = repair(mesh, options);
   if (!quiet) std::printf("repaired %s: %s\n", path.c_str(), describe(report).c_str());
   return report;
+}
+
+std::vector<int> input_vertex_indices(const std::string& path, const Mesh& mesh,
+                                      const std::optional<RepairReport>& repaired) {
+  if (!repaired) return read_vertex_indices(path, mesh.num_vertices());
+  const std::vector<int> listed = read_vertex_indices(path, repaired->input_vertices);
+  for (int v : listed)
+    if (repaired->vertex_destination[static_cast<std::size_t>(v)] < 0)
+      throw ParseError("read_vertex_indices: " + path + ": vertex " + std::to_string(v) +
+                       " was removed by --repair (no face it kept uses it)");
+  return repaired_vertices(*repaired, listed);
 }
 
 nlohmann::json repair_json(const std::optional<RepairReport>& report) {

@@ -10,6 +10,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace fairsurf::cli {
 
@@ -26,6 +27,13 @@ void add_repair_flag(CLI::App* command, bool& repair_flag, const std::string& ho
 /// report (nothing when not enabled).
 std::optional<RepairReport> repair_input(Mesh& mesh, bool enabled, const std::string& path,
                                          bool quiet = false, const RepairOptions& options = {});
+
+/// The vertex indices of the file `path` (--region, --fixed-vertices), which name vertices of the
+/// input as read, as vertices of `mesh`: after a --repair (`repaired`), each index's vertex and the
+/// copies a split made of it (repaired_vertices), so that a file written for the input means the
+/// same vertices. Throws ParseError for an index outside the input or a vertex the repair removed.
+std::vector<int> input_vertex_indices(const std::string& path, const Mesh& mesh,
+                                      const std::optional<RepairReport>& repaired);
 
 /// The report as JSON for a --log, null when no repair ran.
 nlohmann::json repair_json(const std::optional<RepairReport>& report);

@@ -185,9 +185,13 @@ py::dict to_dict(const RepairReport& report, const ValidationReport& remaining) 
   for (const auto& named : named_findings(remaining))
     if (named.finding->count > 0) findings[py::str(named.key)] = named.finding->count;
   d["remaining_findings"] = findings;
-  py::array_t<int> origin(static_cast<py::ssize_t>(report.vertex_origin.size()));
-  std::copy(report.vertex_origin.begin(), report.vertex_origin.end(), origin.mutable_data());
-  d["vertex_origin"] = origin;
+  const auto int_array = [](const std::vector<int>& values) {
+    py::array_t<int> array(static_cast<py::ssize_t>(values.size()));
+    std::copy(values.begin(), values.end(), array.mutable_data());
+    return array;
+  };
+  d["vertex_origin"] = int_array(report.vertex_origin);
+  d["vertex_destination"] = int_array(report.vertex_destination);
   return d;
 }
 

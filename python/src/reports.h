@@ -31,7 +31,7 @@ py::dict to_dict(const BlendReport& report);
 py::dict to_dict(const FillReport& report, const std::map<int, py::list>& steps);
 py::dict to_dict(const MeshSummary& summary, const ValidationReport& validation);
 /// The fields of `fairsurf repair --json` (`remaining`: the repaired mesh's findings), and
-/// "vertex_origin" (RepairReport::vertex_origin as an int32 array).
+/// "vertex_origin" and "vertex_destination" (RepairReport's, as int32 arrays).
 py::dict to_dict(const RepairReport& report, const ValidationReport& remaining);
 
 }  // namespace fairsurf::python

@@ -3,6 +3,10 @@
 
 #include "repair_internal.h"
 
+#include <fairsurf/mesh/errors.h>
+
+#include <string>
+
 namespace fairsurf {
 namespace {
 
@@ -10,7 +14,8 @@ using repair_detail::Tri;
 using repair_detail::Work;
 
 Work load(const Mesh& mesh) {
-  Work work{mesh.V, std::vector<int>(mesh.num_vertices()), std::vector<Tri>(mesh.num_faces())};
+  Work work{mesh.V, std::vector<int>(mesh.num_vertices()), std::vector<Tri>(mesh.num_faces()),
+            std::vector<int>(mesh.num_vertices(), -1)};
   for (int v = 0; v < mesh.num_vertices(); ++v) work.origin[v] = v;
   for (int f = 0; f < mesh.num_faces(); ++f) work.faces[f] = {mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)};
   return work;
@@ -48,6 +53,12 @@ void store(const Work& work, bool remove_unreferenced, Mesh& mesh, RepairReport&
     for (int i = 0; i < kept; ++i) out.vertex_colors.row(i) = mesh.vertex_colors.row(source[i]);
   }
   carry_face_attributes(mesh, source, out);
+  report.vertex_destination.assign(static_cast<std::size_t>(mesh.num_vertices()), -1);
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    int w = v;
+    while (work.merged_into[w] >= 0) w = work.merged_into[w];  // each merge goes to a surviving vertex
+    report.vertex_destination[v] = index[w];
+  }
   mesh = std::move(out);
   report.vertex_origin = std::move(source);
 }
@@ -95,6 +106,25 @@ void repair_round(Work& work, const RepairOptions& options, RepairReport& report
 
 bool RepairReport::changed() const {
   return change_count(*this) > 0;
+}
+
+std::vector<int> repaired_vertices(const RepairReport& report, std::span<const int> input_vertices) {
+  const int n = static_cast<int>(report.vertex_destination.size());
+  std::vector<char> listed(static_cast<std::size_t>(n), 0);  // by input vertex, after merges
+  for (int v : input_vertices) {
+    if (v < 0 || v >= n)
+      throw InvalidArgument("repaired_vertices: vertex " + std::to_string(v) + " is outside the " +
+                            std::to_string(n) + " vertices repair was given");
+    const int destination = report.vertex_destination[v];
+    if (destination < 0)
+      throw InvalidArgument("repaired_vertices: vertex " + std::to_string(v) +
+                            " was removed by repair (no face it kept uses it)");
+    listed[report.vertex_origin[destination]] = 1;
+  }
+  std::vector<int> out;
+  for (int o = 0; o < static_cast<int>(report.vertex_origin.size()); ++o)
+    if (listed[report.vertex_origin[o]]) out.push_back(o);
+  return out;
 }
 
 std::vector<NamedCount> named_counts(const RepairReport& r) {

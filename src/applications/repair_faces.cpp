@@ -92,6 +92,7 @@ class DegeneratePass {
       touched_[g] = 1;
     }
     for (int g : vertex_faces_[keep]) touched_[g] = 1;
+    work_.merged_into[gone] = keep;
     ++report_.needles_collapsed;
     return true;
   }

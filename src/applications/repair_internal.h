@@ -21,11 +21,13 @@ struct Work {
   const Vertices& V;
   std::vector<int> origin;  ///< working vertex -> original vertex
   std::vector<Tri> faces;
+  std::vector<int> merged_into;  ///< working vertex -> the working vertex it was merged into, or -1
 
   int num_vertices() const { return static_cast<int>(origin.size()); }
   Eigen::Vector3d position(int v) const { return V.row(origin[v]).transpose(); }
   int add_copy(int v) {
     origin.push_back(origin[v]);
+    merged_into.push_back(-1);
     return num_vertices() - 1;
   }
 };

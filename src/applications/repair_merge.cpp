@@ -118,7 +118,8 @@ int apply_groups(Work& work, Groups& groups, RepairReport& report) {
     }
   }
   int merged = 0;
-  for (int v = 0; v < work.num_vertices(); ++v) merged += groups.rep[v] != v;
+  for (int v = 0; v < work.num_vertices(); ++v)
+    if (groups.rep[v] != v) work.merged_into[v] = groups.rep[v], ++merged;
   for (Tri& f : work.faces)
     for (int& v : f) v = groups.rep[v];
   return merged;

@@ -84,6 +84,7 @@ TEST(Repair, CleanMeshesAreLeftExactlyAsTheyWere) {
     std::vector<int> identity(static_cast<std::size_t>(in.num_vertices()));
     std::iota(identity.begin(), identity.end(), 0);
     EXPECT_EQ(report.vertex_origin, identity) << name;
+    EXPECT_EQ(report.vertex_destination, identity) << name;
   }
 }
 
@@ -108,6 +109,17 @@ TEST(Repair, MergesAnUnweldedSoupIntoAClosedTetrahedron) {
   expect_origins(in, soup, report);
   for (int origin : report.vertex_origin)
     for (int w = 0; w < origin; ++w) EXPECT_FALSE((in.V.row(w).array() == in.V.row(origin).array()).all()) << w;
+  // Every copy in the soup went to the corner at its position; its three copies name that corner.
+  ASSERT_EQ(report.vertex_destination.size(), 12u);
+  for (int v = 0; v < 12; ++v) {
+    const int corner = report.vertex_destination[static_cast<std::size_t>(v)];
+    ASSERT_GE(corner, 0);
+    EXPECT_TRUE((soup.V.row(corner).array() == in.V.row(v).array()).all()) << v;
+    EXPECT_EQ(repaired_vertices(report, std::vector<int>{v}), std::vector<int>{corner});
+  }
+  std::vector<int> all(12);
+  std::iota(all.begin(), all.end(), 0);
+  EXPECT_EQ(repaired_vertices(report, all), (std::vector<int>{0, 1, 2, 3}));
 }
 
 TEST(Repair, SplitsTwoTetrahedraSharingAVertex) {
@@ -134,6 +146,8 @@ TEST(Repair, SplitsTwoTetrahedraSharingAVertex) {
   EXPECT_EQ(r.duplicate_vertex_positions.count, 1);  // the copy, on purpose
   expect_no_vertex_moved(in, m);
   EXPECT_EQ(report.vertex_origin, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 0}));  // the copy of vertex 0 last
+  // The split vertex stands for both its fans: a region that lists it frees both.
+  EXPECT_EQ(repaired_vertices(report, std::vector<int>{0, 5}), (std::vector<int>{0, 5, 7}));
   Mesh again = m;
   EXPECT_FALSE(repair(again).changed());
   EXPECT_TRUE(same(again, m));
@@ -202,6 +216,9 @@ TEST(Repair, FlipsACapAndCollapsesANeedleWithoutMovingVertices) {
   EXPECT_EQ(report.needles_collapsed, 1);
   EXPECT_EQ(needle.num_faces(), 2);
   expect_clean(validate(needle), "needle");
+  // The needle's far end went into vertex 1: a region that lists it now lists vertex 1.
+  EXPECT_EQ(report.vertex_destination, (std::vector<int>{0, 1, 2, 3, 1}));
+  EXPECT_EQ(repaired_vertices(report, std::vector<int>{4}), std::vector<int>{1});
 }
 
 TEST(Repair, StitchesCoincidentBordersAndDropsLoneTriangles) {
@@ -239,6 +256,14 @@ TEST(Repair, VertexAttributesFollowTheirVertices) {
   const RepairReport report = repair(m);
   ASSERT_EQ(m.num_vertices(), 4);
   EXPECT_EQ(report.vertex_origin, (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(report.vertex_destination, (std::vector<int>{0, 1, 2, 3, -1}));
+  try {
+    repaired_vertices(report, std::vector<int>{2, 4});
+    ADD_FAILURE() << "a removed vertex was mapped";
+  } catch (const InvalidArgument& e) {
+    EXPECT_STREQ(e.what(), "repaired_vertices: vertex 4 was removed by repair (no face it kept uses it)");
+  }
+  EXPECT_THROW(repaired_vertices(report, std::vector<int>{5}), InvalidArgument);
   EXPECT_EQ(m.vertex_scalars["id"], Eigen::VectorXd::LinSpaced(4, 0, 3));
   EXPECT_EQ(m.vertex_colors(3, 0), 200);
 }

@@ -2,6 +2,7 @@
 // refusals of repairable meshes end with, and of the inputs that once crashed the CLI
 // (tests/regressions/: every command must exit with a documented code on each).
 #include <fairsurf/io/io.h>
+#include <fairsurf/mesh/region_selection.h>
 #include <fairsurf/mesh/validate.h>
 
 #include <gtest/gtest.h>
@@ -85,6 +86,54 @@ TEST_F(CliRepair, RefusalsOfRepairableMeshesEndWithTheHintAndRepairMakesThemPass
   r = test::run_cli("curvature --repair --json " + data("cube_soup.obj") + " -o " + quoted(path("c.ply")));
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(nlohmann::json::parse(r.out)["repair"]["vertices_merged"], 16);
+}
+
+// A vertex index file names the vertices of the input as the user has it, also under --repair:
+// the repair's removals do not shift it, and a split vertex's copies go with it.
+TEST_F(CliRepair, IndexFilesNameTheInputsVerticesAcrossTheRepair) {
+  // hand_lowres with an unreferenced vertex in front: --repair removes it, renumbering the rest.
+  const Mesh hand = read_mesh(test::data_path("hand_lowres.obj"));
+  const int n = hand.num_vertices();
+  Mesh shifted;
+  shifted.V.resize(n + 1, 3);
+  shifted.V.row(0) << 9, 9, 9;
+  shifted.V.bottomRows(n) = hand.V;
+  shifted.F = hand.F.array() + 1;
+  write_mesh(path("shifted.ply"), shifted);
+  const double radius = 3.6 * (hand.V.row(401) - hand.V.row(400)).norm();  // about 300 vertices
+  std::ofstream region(path("region.txt"));
+  for (int v : vertices_in_ball(shifted.V, shifted.V.row(401).transpose(), radius)) region << v << " ";
+  region.close();
+  auto r = test::run_cli("fair " + quoted(path("shifted.ply")) + " --region " + quoted(path("region.txt")) + " -o " +
+                         quoted(path("plain.ply")));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  r = test::run_cli("fair --repair " + quoted(path("shifted.ply")) + " --region " + quoted(path("region.txt")) +
+                    " -o " + quoted(path("repaired.ply")));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("1 unreferenced vertex removed"), std::string::npos) << r.out;
+  const Mesh plain = read_mesh(path("plain.ply")), repaired = read_mesh(path("repaired.ply"));
+  ASSERT_EQ(repaired.num_vertices(), n);
+  EXPECT_EQ(repaired.V, plain.V.bottomRows(n));  // the same region faired, one row up
+  EXPECT_NE(repaired.V, hand.V);
+
+  std::ofstream(path("removed.txt")) << "0 401\n";
+  r = test::run_cli("fair --repair " + quoted(path("shifted.ply")) + " --region " + quoted(path("removed.txt")) +
+                    " -o " + quoted(path("none.ply")));
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("removed.txt: vertex 0 was removed by --repair (no face it kept uses it)"), std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(path("none.ply")));
+
+  // hourglass_ico's pinch, vertex 22, is split: held fixed, both its copies stay where they were.
+  std::ofstream(path("fixed.txt")) << "22\n";
+  r = test::run_cli("smooth --repair " + data("hourglass_ico.obj") + " --fixed-vertices " + quoted(path("fixed.txt")) +
+                    " --fixed-rings 0 --steps 2 -o " + quoted(path("s.ply")));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const Mesh hourglass = read_mesh(test::data_path("hourglass_ico.obj")), smoothed = read_mesh(path("s.ply"));
+  ASSERT_EQ(smoothed.num_vertices(), 24);  // the copy last
+  EXPECT_EQ(smoothed.V.row(22), hourglass.V.row(22));
+  EXPECT_EQ(smoothed.V.row(23), hourglass.V.row(22));
+  EXPECT_NE(smoothed.V.row(21), hourglass.V.row(21));
 }
 
 TEST_F(CliRepair, EveryCommandExitsWithACodeOnEveryRegressionInput) {

@@ -25,6 +25,7 @@ def test_a_pinched_vertex_is_split_and_each_vertex_names_its_origin(data_dir):
     assert not again["changed"]
     assert np.array_equal(V3, V2) and np.array_equal(F3, F2)
     assert np.array_equal(again["vertex_origin"], np.arange(len(V2)))
+    assert np.array_equal(report["vertex_destination"], np.arange(len(V)))  # the copy is extra
 
 
 def test_the_report_and_the_result_are_the_commands(cli, tmp_path, data_dir):
@@ -36,6 +37,8 @@ def test_the_report_and_the_result_are_the_commands(cli, tmp_path, data_dir):
     V, F = fairsurf.read_mesh(mesh)
     V2, F2, report = fairsurf.repair(V, F)
     assert report.pop("vertex_origin").shape == (8,)
+    destination = report.pop("vertex_destination")
+    assert destination.shape == (24,) and np.array_equal(V2[destination], V)  # each copy to its corner
     assert report == log
     assert report["vertices_merged"] == 16 and report["remaining_findings"] == {}
     V_cli, F_cli = fairsurf.read_mesh(out)

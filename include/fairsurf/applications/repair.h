@@ -11,6 +11,7 @@
 
 #include <fairsurf/mesh/mesh.h>
 
+#include <span>
 #include <vector>
 
 namespace fairsurf {
@@ -93,6 +94,10 @@ struct RepairReport {
   /// its own per-vertex data across the repair; the identity where no vertex was merged, split or
   /// removed.
   std::vector<int> vertex_origin;
+  /// #V in: for each input vertex, the output vertex it became (a merged vertex: its group's), or −1
+  /// where repair removed it. A split vertex became several: this one and the output vertices whose
+  /// vertex_origin is the same (repaired_vertices gathers them).
+  std::vector<int> vertex_destination;
 
   /// Whether any operation changed the mesh (non_orientable_components is a finding, not a change).
   bool changed() const;
@@ -103,9 +108,15 @@ struct NamedCount {
   const char* key;  ///< "vertices_merged", ...
   int value;
 };
-/// Every count of `report` (not vertex_origin), in declaration order: the keys of `fairsurf repair
+/// Every count of `report` (not the vertex maps), in declaration order: the keys of `fairsurf repair
 /// --json` and of the Python report.
 std::vector<NamedCount> named_counts(const RepairReport& report);
+
+/// The vertices of the repaired mesh that stand for `input_vertices` (indices into the mesh repair
+/// was given, as a user's file of region or fixed vertices holds them): each one's output vertex
+/// and every copy a split made of it, ascending. Throws InvalidArgument for an index outside the
+/// input, or a vertex repair removed (naming it).
+std::vector<int> repaired_vertices(const RepairReport& report, std::span<const int> input_vertices);
 
 /// Repairs `mesh` in place; vertex_scalars and vertex_colors follow their vertices (copies get
 /// their original's values). Never throws on bad content: a mesh with no valid face comes out empty.
