@@ -14,8 +14,8 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <utility>
 #include <string>
+#include <utility>
 
 namespace fairsurf::python {
 namespace {
