@@ -1,4 +1,4 @@
-"""Fill the hole of a mesh, print the report, render before and after.
+"""Fill the holes of a mesh, repairing it first if fill refuses it; print the report, render before and after.
 
     PYTHONPATH=build/python /usr/bin/python3 examples/fill_holes.py data/hand_lowres.obj out/
 """
@@ -11,7 +11,15 @@ import fairsurf
 source, out = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
 out.mkdir(parents=True, exist_ok=True)
 V, F = fairsurf.read_mesh(source)
-V2, F2, report = fairsurf.fill_holes(V, F, continuity="G2")
+try:
+    V2, F2, report = fairsurf.fill_holes(V, F, continuity="G2")
+except fairsurf.RepairableMeshError as refusal:
+    print(f"refused: {refusal}")
+    # As `fairsurf fill --repair`: the pinches of the border stay joined for the fill to close.
+    V, F, repaired = fairsurf.repair(V, F, keep_border_pinches=True)
+    print("repaired: " + ", ".join(f"{key} {value}" for key, value in repaired.items()
+                                    if key.endswith(("removed", "merged", "split", "flipped")) and value))
+    V2, F2, report = fairsurf.fill_holes(V, F, continuity="G2")
 for hole in report["holes"]:
     print(f"hole {hole['index']}: {hole['status']}, {hole['delivered']}, +{hole['vertices_added']} vertices")
 fairsurf.write_mesh(out / "filled.ply", V2, F2)

@@ -28,6 +28,18 @@ def test_fill_holes_example(tmp_path, data_dir):
     assert png.startswith(b"\x89PNG\r\n\x1a\n")
 
 
+def test_fill_holes_example_repairs_a_mesh_fill_refuses(tmp_path, hand):
+    # The hand with its first face twice: fill refuses the duplicate, the example repairs and fills.
+    V, F = hand
+    fairsurf.write_mesh(tmp_path / "doubled.ply", V, np.vstack([F, F[:1]]))
+    out = run("fill_holes.py", tmp_path / "doubled.ply", tmp_path)
+    assert "refused: fill_holes: mesh has 3 non-manifold edges (first: 12-13), 1 duplicate face (first: 1602)" in out
+    assert "repaired: duplicate_faces_removed 1\n" in out
+    assert "hole 0: filled, G2" in out
+    V2, F2 = fairsurf.read_mesh(tmp_path / "filled.ply")
+    assert fairsurf.info(V2, F2)["boundary_loops"] == [] and len(F2) > len(F)
+
+
 def test_smooth_with_progress_example(data_dir):
     out = run("smooth_with_progress.py", data_dir / "hand_lowres.obj")
     assert out.count("\nstep ") + out.startswith("step ") == 5
