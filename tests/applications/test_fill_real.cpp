@@ -942,6 +942,44 @@ TEST(RealNoisyHole, OnRoughSurroundingsTheHeldOutRingsDoNotChooseTheFloorAndTheG
       InvalidArgument);
 }
 
+// A 4h hole in spot's cheek with 0.1 h of noise (seed 5): the held-out rings choose the flow on
+// 1-ring fits, whose steady state turns the normal across the border by 34° where the ∆³ solution it
+// started from turns it by 21° (more than 1.5 times: the fold check). Before the floor is kept, the flow on
+// 2-ring fits, which the held-out rings also preferred to the floor, runs from the same start; it
+// does not fold, and it is delivered, closer to the uncut cow than the floor
+// (FairRegionOptions::retry_other_boundary_fits).
+TEST(RealNoisyHole, AFlowThatFoldsIsTriedOnItsOtherBoundaryFitsBeforeTheFloorIsKept) {
+  const BallHole ball = fill_ball_hole("spot.obj", {-0.178799, 0.187723, 0.48375}, 4, 0.1, 5);
+  const FilledTwice& r = ball.r;
+  ASSERT_EQ(r.report.holes.size(), 1u);
+  const HoleReport& hole = r.hole();
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
+  EXPECT_TRUE(hole.two_ring_boundary_fits);
+  EXPECT_FALSE(hole.checks_chose_linear);
+  EXPECT_LT(hole.held_out_two_ring_flow_error, hole.held_out_linear_error);
+  EXPECT_NE(hole.note.find("the sixth-order flow with its boundary data fitted over 1-rings settled, but turns the "
+                           "normal across the border by"),
+            std::string::npos)
+      << hole.note;
+  EXPECT_NE(hole.note.find("; fitted over 2-rings instead it settles without folding"), std::string::npos) << hole.note;
+
+  Mesh floor_filled = ball.cut;
+  FillOptions off;
+  off.retry_other_boundary_fits = false;
+  const HoleReport off_hole = fill_holes(floor_filled, off).holes.front();
+  EXPECT_TRUE(off_hole.linear && off_hole.checks_chose_linear) << off_hole.note;
+  EXPECT_NE(off_hole.note.find("kept the linear ∆3 solution it started from"), std::string::npos) << off_hole.note;
+  // Delivered from the floor's own start, it turns the normal by at most 1.5 times as much.
+  EXPECT_LE(hole.continuity.max_normal_angle, 1.5 * off_hole.continuity.max_normal_angle);
+  const double floor_distance = mean_new_vertex_distance(floor_filled, ball.cut.num_vertices(), ball.truth) / ball.h;
+  std::printf("[other fits] spot 4h, 0.1h noise, seed 5: G2 on 2-ring fits %.4f h, the floor %.4f h; border %.1f "
+              "against %.1f deg\n",
+              r.distance, floor_distance, hole.continuity.max_normal_angle / kDegree,
+              off_hole.continuity.max_normal_angle / kDegree);
+  EXPECT_LT(r.distance, 0.8 * floor_distance);
+}
+
 // data/hemisphere.off (pmp-library) is the unit sphere above z ≈ 0.1, open along a 120-edge circle
 // that meets any flat lid at about a right angle. Its triangulation keeps that angle low with
 // slivers (177°) along the border; the refinement must flip them away (patch_refinement.h), or the

@@ -101,6 +101,13 @@ struct FairRegionOptions {
   /// linear solution is kept, with both angles in the note, and FairRegionReport::flow_folded_back
   /// set (fill then tries the refined triangulation: docs/fill.md, "A fill that folds back").
   bool refuse_folding_back = true;
+  /// With the linear floor and held_out_two_ring_fits: where the flow the held-out rings chose folds
+  /// against its ∆^k start (max_border_angle_ratio, refuse_folding_back) and the floor is kept, the
+  /// flow with the other boundary fits (2-ring for 1-ring, 1-ring for 2-ring) runs from the same
+  /// start, if its held-out error was below the linear solution's, and is delivered where it
+  /// settles without folding. The fold is often the noise of the border read by one of the two fits
+  /// (docs/fill.md, "The other boundary fits after a fold"). false: the floor stays.
+  bool retry_other_boundary_fits = false;
   /// With the linear floor: where the flow's result crosses the mesh where the given region did
   /// not, the flow runs once more from the same start, each trial that crosses the mesh rejected
   /// (FlowOptions::reject_crossings), so that it stops short of the contact instead of passing
@@ -122,7 +129,8 @@ struct FairRegionOptions {
   /// by less than 1e-5 of itself, 30 rejections in a row allowed), keeps the ∆³ solution as its
   /// floor (linear_floor) and delivers it where it re-predicts 2 held-out rings better
   /// (held_out_rings), the flow weighed also on 2-ring boundary fits (held_out_two_ring_fits), or
-  /// where the flow folds against it (max_border_angle_ratio 1.5);
+  /// where the flow folds against it (max_border_angle_ratio 1.5) and the flow with the other
+  /// boundary fits does too or re-predicts them worse (retry_other_boundary_fits);
   /// and both linear solvers use the minimum-degree ordering, whose analysis is far cheaper on
   /// patch-sized systems. From a flattened cap the plain defaults do not settle
   /// beyond about a thousand free vertices (docs/blend.md). Used by fill_holes and `fairsurf fair`; not
