@@ -136,9 +136,11 @@ void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& regi
   report.linear = true;
   report.checks_chose_linear = folded;
   report.flow_folded_back = folded_back;
-  report.note = std::string("the ") + to_string(report.flow_kind) + " flow " + failure +
-                "; kept the linear ∆" + std::to_string(static_cast<int>(region.supported) + 1) +
-                " solution it started from";
+  // What the held-out rings said (rough surroundings, 2-ring fits) stays in front of why the floor
+  // was kept.
+  const std::string chosen = report.note.empty() ? "" : report.note + "; ";
+  report.note = chosen + "the " + to_string(report.flow_kind) + " flow " + failure + "; kept the linear ∆" +
+                std::to_string(static_cast<int>(region.supported) + 1) + " solution it started from";
 }
 
 // roughness() of the surface around the region: over the vertices 3 and 4 rings out, whose 2-rings

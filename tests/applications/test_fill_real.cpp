@@ -970,6 +970,9 @@ TEST(RealNoisyHole, AFlowThatFoldsIsTriedOnItsOtherBoundaryFitsBeforeTheFloorIsK
   const HoleReport off_hole = fill_holes(floor_filled, off).holes.front();
   EXPECT_TRUE(off_hole.linear && off_hole.checks_chose_linear) << off_hole.note;
   EXPECT_NE(off_hole.note.find("kept the linear ∆3 solution it started from"), std::string::npos) << off_hole.note;
+  // Both notes keep what the held-out rings said first: the surroundings are rough.
+  EXPECT_EQ(hole.note.rfind("the surface around the region is rough (", 0), 0u) << hole.note;
+  EXPECT_EQ(off_hole.note.rfind("the surface around the region is rough (", 0), 0u) << off_hole.note;
   // Delivered from the floor's own start, it turns the normal by at most 1.5 times as much.
   EXPECT_LE(hole.continuity.max_normal_angle, 1.5 * off_hole.continuity.max_normal_angle);
   const double floor_distance = mean_new_vertex_distance(floor_filled, ball.cut.num_vertices(), ball.truth) / ball.h;
