@@ -146,8 +146,8 @@ void register_mesh_functions(py::module_& m) {
       "orient"_a = true, "min_component_faces"_a = RepairOptions{}.min_component_faces,
       "remove_unreferenced_vertices"_a = true,
       "Repairs the mesh as `fairsurf repair` (keep_border_pinches=True: as `fairsurf fill --repair`); "
-      "returns (V, F, report): the fields of `repair --json`, and vertex_origin, each output vertex's "
-      "input row.");
+      "returns (V, F, report): the fields of `repair --json`, vertex_origin (each output vertex's input "
+      "row) and vertex_destination (each input vertex's output row, -1 where removed).");
   m.def("scene", &scene, "name"_a, py::kw_only(), "edge_length"_a = SceneOptions{}.edge_length,
         "The paper's test scenes (fig3, fig4, fig7, fig8, sphere-cap) as (V, F).");
 }

@@ -270,7 +270,8 @@ Submesh whole_submesh(const Mesh& mesh, std::span<const int> free_vertices) {
 // FairRegionOptions::retry_other_boundary_fits: after the flow chosen by the held-out rings (run
 // with `ran`) folded against its start and the floor was kept (`report`), the flow with the other
 // boundary fits runs from that start, where its held-out error was below the linear solution's.
-// Delivered where it settles without folding; otherwise the floor stays, its report as it was.
+// Delivered where it settles without folding; otherwise run_flow_with_floor has put the floor back,
+// and its report is restored as it was.
 void retry_other_boundary_fits(Submesh& sub, const Topology& local, const Region& region, const FairRegionOptions& ran,
                                const FlowObserver& observer, FairRegionReport& report, Vertices& caller) {
   if (!ran.retry_other_boundary_fits || !ran.held_out_two_ring_fits || !report.linear || report.held_out_linear ||
@@ -280,14 +281,12 @@ void retry_other_boundary_fits(Submesh& sub, const Topology& local, const Region
   const double error = two_ring ? report.held_out_two_ring_flow_error : report.held_out_flow_error;
   if (!(error < report.held_out_linear_error)) return;  // not weighed (NaN), or no better than the floor
   const FairRegionReport folded = report;
-  const Vertices floor = sub.mesh.V;
   FairRegionOptions other = ran;
   other.flow.two_ring_boundary_fits = report.two_ring_boundary_fits = two_ring;
   report.linear = report.checks_chose_linear = report.flow_folded_back = false;
   run_flow_with_floor(sub, local, region, other, observer, report, caller);
   if (report.linear) {
     report = folded;
-    sub.mesh.V = floor;
     return;
   }
   // "the sixth-order flow settled, but turns ...; kept the linear ∆3 solution ...": which fits
