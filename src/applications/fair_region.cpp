@@ -131,7 +131,13 @@ void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& regi
     }
     failure = std::string("failed (") + e.what() + ")";
   }
-  if (!floor || failure.empty()) return;
+  if (!floor) return;
+  if (failure.empty()) {
+    report.floor_positions.resize(static_cast<Eigen::Index>(sub.free_local.size()), 3);
+    for (std::size_t k = 0; k < sub.free_local.size(); ++k)
+      report.floor_positions.row(static_cast<Eigen::Index>(k)) = start.row(sub.free_local[k]);
+    return;
+  }
   sub.mesh.V = start;
   report.linear = true;
   report.checks_chose_linear = folded;

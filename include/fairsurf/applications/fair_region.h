@@ -200,6 +200,11 @@ struct FairRegionReport {
   bool crossing_fallback = false;
   /// The flow ran with FlowOptions::two_ring_boundary_fits (given, or chosen by the held-out rings).
   bool two_ring_boundary_fits = false;
+  /// Where a flow was delivered over the linear floor (linear_floor on, `linear` false), the floor:
+  /// the positions of the free vertices at the linear ∆^k solution the flow started from, #free by
+  /// 3, one row per free vertex in ascending vertex order. Empty otherwise, and for a region in
+  /// parts. (fill gives a patch its floor where the flow's patch takes the room of a later hole.)
+  Vertices floor_positions;
   ContinuityMeasure continuity;                ///< measured after fairing
   double seconds = 0;                          ///< wall time of the whole call
   /// A region in parts whose fixed rings do not meet (region_parts) is faired part by part, each
