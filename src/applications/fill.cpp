@@ -3,6 +3,7 @@
 #include <fairsurf/applications/fill.h>
 #include <fairsurf/geometry/continuity_measure.h>
 #include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/face_intersection.h>
 #include <fairsurf/mesh/mesh_attributes.h>
 #include <fairsurf/mesh/topology.h>
 
@@ -14,10 +15,13 @@
 #include "patch/border_pinches.h"
 #include "stopwatch.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <optional>
 
 namespace fairsurf {
@@ -28,6 +32,7 @@ using detail::seconds_since;
 
 using fill_detail::FilledMesh;
 using fill_detail::GroupPatches;
+using fill_detail::HoleFloor;
 using fill_detail::PatchCrossing;
 using fill_detail::PatchStart;
 
@@ -458,6 +463,131 @@ void retriangulate_if_failed(const Mesh& mesh, const Topology& topo, const std::
   }
 }
 
+// "holes 3, 5 and 7"
+std::string hole_list(const std::vector<int>& holes) {
+  std::string text = holes.size() == 1 ? "hole " : "holes ";
+  for (std::size_t i = 0; i < holes.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == holes.size() ? " and " : ", ") + std::to_string(holes[i]);
+  return text;
+}
+
+// A committed group's flows over their linear floors (FilledMesh::floors) and the group's patch
+// faces, rows of the filled mesh: what a later group may give back its floor
+// (fill_again_with_earlier_floors).
+struct CommittedFlows {
+  std::vector<HoleFloor> floors;
+  std::vector<int> faces;
+};
+
+// The room a patch of `patch_loops` may take: their bounding box, grown on every side by its
+// diagonal (a dome over a loop rises about as far as the loop is wide).
+Eigen::AlignedBox3d patch_room(const Vertices& V, const std::vector<std::vector<int>>& patch_loops) {
+  Eigen::AlignedBox3d box;
+  for (const std::vector<int>& loop : patch_loops)
+    for (int v : loop) box.extend(V.row(v).transpose());
+  const double grow = box.diagonal().norm();
+  box.min().array() -= grow;
+  box.max().array() += grow;
+  return box;
+}
+
+bool reaches_into(const Eigen::AlignedBox3d& room, const Vertices& V, const CommittedFlows& flows) {
+  for (const HoleFloor& floor : flows.floors)
+    for (int v : floor.vertices)
+      if (room.contains(V.row(v).transpose())) return true;
+  return false;
+}
+
+void place(const std::vector<HoleFloor>& floors, Vertices& V) {
+  for (const HoleFloor& floor : floors)
+    for (std::size_t i = 0; i < floor.vertices.size(); ++i)
+      V.row(floor.vertices[i]) = floor.positions.row(static_cast<Eigen::Index>(i));
+}
+
+// The holes of `floors`, in order.
+std::vector<int> floor_holes(const std::vector<CommittedFlows>& flows, const std::vector<std::size_t>& which) {
+  std::vector<int> holes;
+  for (std::size_t i : which)
+    for (const HoleFloor& floor : flows[i].floors) holes.push_back(floor.hole);
+  std::sort(holes.begin(), holes.end());
+  return holes;
+}
+
+// The group's fill `outcome` failed, or was delivered unfaired, and flows that this fill delivered
+// before it (`flows`) reach into the room its patch may take: a flow's patch, a longer dome than its
+// linear floor, can take the room a later patch needs (two openings of a severed part that face
+// each other), and then every fairing of the later group crosses it. Those flows are given their
+// floors on a copy of the mesh (where the floor does not cross the mesh itself), and the group is
+// filled again there (`again(mesh)`); that fill replaces `outcome` where it is faired (or, after a
+// failure, fills the group at all). Returns which flows it gave their floors ({} where it did not
+// replace `outcome`). (docs/fill.md, "An earlier flow given its floor".)
+template <class Again>
+std::vector<std::size_t> fill_again_with_earlier_floors(const Mesh& mesh,
+                                                        const std::vector<std::vector<int>>& patch_loops,
+                                                        const std::vector<int>& group,
+                                                        const std::vector<CommittedFlows>& flows,
+                                                        const std::vector<HoleReport>& unfilled,
+                                                        std::vector<HoleReport>& reports, ChainOutcome& outcome,
+                                                        Again again) {
+  const bool failed = !outcome.reason.empty();
+  if (!failed && outcome.start != PatchStart::unfaired) return {};
+  const Eigen::AlignedBox3d room = patch_room(mesh.V, patch_loops);
+  std::vector<std::size_t> given;
+  std::optional<Mesh> floored;
+  for (std::size_t i = 0; i < flows.size(); ++i) {
+    if (!reaches_into(room, mesh.V, flows[i])) continue;
+    if (!floored) floored = mesh;
+    place(flows[i].floors, floored->V);
+    if (find_face_intersections(floored->V, floored->F, flows[i].faces, 1).empty()) {
+      given.push_back(i);
+      continue;
+    }
+    for (const HoleFloor& floor : flows[i].floors)
+      for (int v : floor.vertices) floored->V.row(v) = mesh.V.row(v);
+  }
+  if (given.empty()) return {};
+  const std::string before = failed ? "the fill failed (" + reports[group.front()].reason + ")"
+                                    : std::string("every fairing crossed the mesh (the last resort: the refined "
+                                                  "triangulation, unfaired)");
+  bool kept = false;
+  const auto gain = [&](const ChainOutcome& retried) -> std::string {
+    if (!failed && retried.start == PatchStart::unfaired) return "";
+    kept = true;
+    const std::vector<int> holes = floor_holes(flows, given);
+    const bool one = holes.size() == 1;
+    return before + "; the flow's patch of " + hole_list(holes) + ", filled before, reaches into its room: " +
+           (one ? "that hole" : "those holes") + " given the linear solution " + (one ? "its" : "their") +
+           " flow started from, filled again";
+  };
+  fill_again_where_better(group, unfilled, reports, outcome, [&] { return again(*floored); }, gain);
+  return kept ? given : std::vector<std::size_t>{};
+}
+
+// The reports of the flows `given` their floors by a later group's fill (`later`), now committed
+// into `mesh` (connectivity `topo`): each hole is the linear solution its flow started from,
+// measured again; the flows are taken off `flows`.
+void report_given_floors(const Mesh& mesh, const Topology& topo, const std::vector<int>& later,
+                         std::vector<std::size_t> given, std::vector<CommittedFlows>& flows,
+                         std::vector<HoleReport>& reports) {
+  std::sort(given.rbegin(), given.rend());
+  for (std::size_t i : given) {
+    for (const HoleFloor& floor : flows[i].floors) {
+      HoleReport& r = reports[floor.hole];
+      const std::string flow_note = r.note;
+      r.linear = true;
+      r.steps = 0;
+      r.final_max_velocity = std::numeric_limits<double>::quiet_NaN();
+      r.two_ring_boundary_fits = false;
+      r.continuity = measure_continuity(mesh.V, mesh.F, topo, floor.vertices);
+      r.note = "its " + std::string(to_string(flow_for(r.supported))) + " flow's patch took the room of " +
+               hole_list(later) + ", filled after it, every fairing of which crossed it: given the linear ∆" +
+               std::to_string(static_cast<int>(r.supported) + 1) + " solution the flow started from" +
+               (flow_note.empty() ? "" : " (the flow: " + flow_note + ")");
+    }
+    flows.erase(flows.begin() + static_cast<std::ptrdiff_t>(i));
+  }
+}
+
 // Whether a loop of `group` runs around a lone triangle, which the group's patch takes in.
 bool takes_in_a_lone_triangle(const std::vector<HoleReport>& reports, const std::vector<int>& group) {
   return std::any_of(group.begin(), group.end(), [&](int h) { return reports[h].around_a_face; });
@@ -469,18 +599,27 @@ bool takes_in_a_lone_triangle(const std::vector<HoleReport>& reports, const std:
 void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                              const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
                              const FillOptions& options, const FillObserver& observer,
-                             std::vector<HoleReport>& reports, std::optional<Topology>& filled) {
+                             std::vector<HoleReport>& reports, std::optional<Topology>& filled,
+                             std::vector<CommittedFlows>& flows) {
   const Topology& current = filled ? *filled : topo;
-  GroupPatches patches(mesh, current, patch_loops, options.patch);
   std::vector<HoleReport> unfilled;
   for (int h : group) unfilled.push_back(reports[h]);
-  ChainOutcome outcome = fill_from_membrane(mesh, loops, group, patches, options, observer, unfilled, reports);
-  if (outcome.reason.empty())
-    retriangulate_if_folded_back(mesh, current, loops, group, patch_loops, patches, options, observer, unfilled,
-                                 reports, outcome);
-  else
-    retriangulate_if_failed(mesh, current, loops, group, patch_loops, patches, options, observer, unfilled, reports,
-                            outcome);
+  const auto fill_on = [&](const Mesh& on) {
+    GroupPatches patches(on, current, patch_loops, options.patch);
+    ChainOutcome outcome = fill_from_membrane(on, loops, group, patches, options, observer, unfilled, reports);
+    if (outcome.reason.empty())
+      retriangulate_if_folded_back(on, current, loops, group, patch_loops, patches, options, observer, unfilled,
+                                   reports, outcome);
+    else
+      retriangulate_if_failed(on, current, loops, group, patch_loops, patches, options, observer, unfilled, reports,
+                              outcome);
+    return outcome;
+  };
+  ChainOutcome outcome = fill_on(mesh);
+  const std::vector<std::size_t> given =
+      options.fallback_on_failure && options.floor_earlier_flows
+          ? fill_again_with_earlier_floors(mesh, patch_loops, group, flows, unfilled, reports, outcome, fill_on)
+          : std::vector<std::size_t>{};
   if (outcome.reason.empty() && takes_in_a_lone_triangle(reports, group) && group_folds_back(reports, group)) {
     // A lone triangle folded against the patch that took it in: not a fill of the surface it was
     // cut from; the group fails, and the triangle's loop is reported as not taken in.
@@ -493,7 +632,15 @@ void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector
     mark(reports, group, HoleStatus::failed, text);
     return;
   }
-  if (outcome.reason.empty()) commit(outcome.filled, mesh, filled);
+  if (!outcome.reason.empty()) return;
+  const int first_face = mesh.num_faces();
+  std::vector<HoleFloor> floors = std::move(outcome.filled.floors);
+  commit(outcome.filled, mesh, filled);
+  if (!given.empty()) report_given_floors(mesh, *filled, group, given, flows, reports);
+  if (floors.empty()) return;
+  std::vector<int> faces(static_cast<std::size_t>(mesh.num_faces() - first_face));
+  std::iota(faces.begin(), faces.end(), first_face);
+  flows.push_back({std::move(floors), std::move(faces)});
 }
 
 // The loops of `group` as one patch fills them: relinked at the border's pinches (relink_pinched_loops),
@@ -511,14 +658,6 @@ std::optional<std::vector<std::vector<int>>> relinked_loops(const Mesh& mesh, co
   }
 }
 
-// "holes 3, 5 and 7"
-std::string hole_list(const std::vector<int>& holes) {
-  std::string text = holes.size() == 1 ? "hole " : "holes ";
-  for (std::size_t i = 0; i < holes.size(); ++i)
-    text += (i == 0 ? "" : i + 1 == holes.size() ? " and " : ", ") + std::to_string(holes[i]);
-  return text;
-}
-
 // Whether loop `h` shares a vertex with a loop of `group` around a lone triangle.
 bool beside_a_lone_triangle(const std::vector<std::vector<int>>& loops, const std::vector<int>& group,
                             const std::vector<HoleReport>& reports, int h) {
@@ -534,7 +673,7 @@ bool beside_a_lone_triangle(const std::vector<std::vector<int>>& loops, const st
 void fill_failed_group_one_by_one(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                                   const std::vector<int>& group, const FillOptions& options,
                                   const FillObserver& observer, std::vector<HoleReport>& reports,
-                                  std::optional<Topology>& filled) {
+                                  std::optional<Topology>& filled, std::vector<CommittedFlows>& flows) {
   const std::string joint_failure = reports[group.front()].reason;
   for (int h : group) {
     HoleReport& r = reports[h];
@@ -550,7 +689,7 @@ void fill_failed_group_one_by_one(Mesh& mesh, const Topology& topo, const std::v
       r.reason = relink_error + "; " + joint;
       continue;
     }
-    fill_group_falling_back(mesh, topo, loops, {h}, *patch_loops, options, observer, reports, filled);
+    fill_group_falling_back(mesh, topo, loops, {h}, *patch_loops, options, observer, reports, filled, flows);
     if (r.status == HoleStatus::filled)
       r.note = joint + "; filled alone" + (r.note.empty() ? "" : "; " + r.note);
     else
@@ -626,6 +765,8 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
   // The connectivity of the mesh once groups are filled into it: the next group's patch reads it.
   // The loops, groups and pinches stay those of the input (`topo`).
   std::optional<Topology> filled;
+  // The flows filled so far over their linear floors, which a later group may give back.
+  std::vector<CommittedFlows> flows;
   const auto loops = boundary_loops(mesh.F, topo);
   report.holes = hole_reports(loops, options);
 
@@ -642,9 +783,9 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
       for (int other : group)
         if (other != h) report.holes[h].filled_with.push_back(other);
     const auto group_start = Clock::now();
-    fill_group_falling_back(mesh, topo, loops, group, *patch_loops, options, observer, report.holes, filled);
+    fill_group_falling_back(mesh, topo, loops, group, *patch_loops, options, observer, report.holes, filled, flows);
     if (group.size() > 1 && report.holes[group.front()].status == HoleStatus::failed)
-      fill_failed_group_one_by_one(mesh, topo, loops, group, options, observer, report.holes, filled);
+      fill_failed_group_one_by_one(mesh, topo, loops, group, options, observer, report.holes, filled, flows);
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
   }
   fill_detail::report_lone_triangles_not_taken_in(loops, report.holes);

@@ -162,10 +162,11 @@ std::string fair_hole_alone(InitialPatch& patch, const std::vector<int>& free, c
 // group's other patches stay as the group left them, so the hole's fixed rings are complete; it
 // keeps the flow where that fairing delivers one at the group's continuity or above, steady and
 // clear of the mesh, and its linear solution otherwise, untouched (docs/fill.md, "Joint holes, one
-// by one").
+// by one"). A hole given its flow has that linear solution as its floor, added to `floors`.
 void refair_each_hole(InitialPatch& patch, const std::vector<int>& group, const std::vector<std::vector<int>>& free,
                       const std::vector<std::vector<int>>& faces, const FairRegionOptions& fairing_options,
-                      const FillOptions& options, const FlowObserver& observer, std::vector<HoleReport>& reports) {
+                      const FillOptions& options, const FlowObserver& observer, std::vector<HoleReport>& reports,
+                      std::vector<HoleFloor>& floors) {
   for (std::size_t k = 0; k < group.size(); ++k) {
     if (free[k].empty()) continue;
     HoleReport& r = reports[group[k]];
@@ -184,12 +185,31 @@ void refair_each_hole(InitialPatch& patch, const std::vector<int>& group, const 
                order + " solution: " + lost;
       continue;
     }
+    floors.push_back({group[k], free[k], std::move(kept)});
     r.note.clear();
     report_fairing(alone, true, r);
     r.continuity = alone.continuity;
     r.note = "the joint fill kept the linear ∆" + order + " solution (" + group_note +
              "); faired again alone, the group's other patches held as filled" + (r.note.empty() ? "" : ": " + r.note);
   }
+}
+
+// The floor under the group's flow (fairing.floor_positions, rows in the order of sub.free_local),
+// hole by hole: `hole_free` holds each hole's free vertices, rows of the patched mesh.
+std::vector<HoleFloor> hole_floors(const FairRegionReport& fairing, const Submesh& sub, const std::vector<int>& group,
+                                   const std::vector<std::vector<int>>& hole_free) {
+  std::vector<HoleFloor> floors;
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    if (hole_free[k].empty()) continue;
+    HoleFloor floor{group[k], hole_free[k], Vertices(static_cast<Eigen::Index>(hole_free[k].size()), 3)};
+    const std::vector<int> local = to_local(sub, hole_free[k]);
+    for (std::size_t i = 0; i < local.size(); ++i) {
+      const auto row = std::lower_bound(sub.free_local.begin(), sub.free_local.end(), local[i]) - sub.free_local.begin();
+      floor.positions.row(static_cast<Eigen::Index>(i)) = fairing.floor_positions.row(row);
+    }
+    floors.push_back(std::move(floor));
+  }
+  return floors;
 }
 
 // A hole whose loop was joined to another's at a pinch of the border (PatchOwnership::patch_hole)
@@ -298,16 +318,18 @@ std::string fill_group(const Mesh& mesh, const std::vector<std::vector<int>>& lo
       r.note = "the patch has no interior vertex: the loop's triangulation alone, continuous in position only";
     }
   }
+  std::vector<HoleFloor> floors;
+  if (flowed && fairing.floor_positions.rows() > 0) floors = hole_floors(fairing, sub, group, hole_free);
   if (group.size() > 1 && !unfaired && fairing.linear && !fairing.held_out_linear &&
       fairing_options.method == FairMethod::flow) {
     // Each hole's own first try: the tangential relaxation is the group's answer to its own patch
     // crossing the mesh (crossing_retry_relaxation), not a default for a hole faired alone.
     FairRegionOptions alone = fairing_options;
     alone.flow.tangential_relaxation = options.flow.tangential_relaxation;
-    refair_each_hole(patch, group, hole_free, hole_faces, alone, options, step_observer, reports);
+    refair_each_hole(patch, group, hole_free, hole_faces, alone, options, step_observer, reports, floors);
   }
   report_shared_patches(own.patch_hole, group, reports);
-  out = {std::move(patch.mesh.V), std::move(patch.mesh.F), std::move(patch.topology)};
+  out = {std::move(patch.mesh.V), std::move(patch.mesh.F), std::move(patch.topology), std::move(floors)};
   return "";
 }
 

@@ -70,12 +70,22 @@ class GroupPatches {
   Built relaxed_, unrelaxed_;
 };
 
+/// The linear floor under one hole's delivered flow (FairRegionReport::floor_positions): the
+/// hole's free vertices, rows of the filled mesh, and where the floor had them, one row each.
+struct HoleFloor {
+  int hole = -1;
+  std::vector<int> vertices;
+  Vertices positions;
+};
+
 /// A group's filled mesh (the input's vertices and faces first, then the patch) and its connectivity,
-/// not yet committed to the input: another start's fill may still take its place.
+/// not yet committed to the input: another start's fill may still take its place. `floors`: the
+/// holes of the group delivered as a flow over a linear floor.
 struct FilledMesh {
   Vertices V;
   Faces F;
   Topology topology;
+  std::vector<HoleFloor> floors;
 };
 
 /// Fills the holes `group` jointly on `mesh` from the group's patch for `start` (PatchStart; built on

@@ -3,6 +3,7 @@
 // held-out rings it re-predicted worse — and no farther from the uncut surface than the floor allows.
 #include <fairsurf/applications/fill.h>
 #include <fairsurf/applications/repair.h>
+#include <fairsurf/geometry/continuity_measure.h>
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/topology.h>
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <cstdio>
 #include <string>
 
@@ -1423,4 +1425,60 @@ TEST(RealHoleLoneTriangle, ThreeLoneTrianglesAtOneHoleAreTakenIntoOnePatch) {
   EXPECT_EQ(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).size(), 0u);
   EXPECT_EQ(filled.F.topRows(cut.num_faces()), cut.F);
   EXPECT_FALSE(test::new_faces_cross(cut, filled));
+}
+
+// Three balls (16 h, 11 h and 7 h) sever the raw hammer scan's handle from its head (bench_stress
+// --section fill, balls, hammer seed 20). The handle's opening, hole 0, is filled first: its flow on
+// 2-ring boundary fits (the 1-ring one folds) is a longer dome than its linear floor, and it takes
+// the room of the head's two facing openings, holes 2 and 3: every fairing of theirs crossed it, and
+// they were delivered as their refined triangulation, unfaired (C0). Hole 0 is given the linear
+// solution its flow started from, and holes 2 and 3 are faired.
+TEST(RealHoleRoom, AnEarlierFlowInTheWayIsGivenItsFloorAndTheLaterHolesAreFaired) {
+  const Mesh truth = read_mesh(test::data_path("hammer_rawscan.obj"));
+  const double h = test::mean_edge_length(truth);
+  Mesh cut = test::cut_ball(truth, {-0.013274, -0.195742, 3.427811}, 16 * h);
+  cut = test::cut_ball(cut, {-1.052844, -0.263451, 4.051783}, 11 * h);
+  cut = test::cut_ball(cut, {0.401397, -0.315544, 4.084942}, 7 * h);
+
+  Mesh kept_flow = cut;
+  FillOptions in_the_way;
+  in_the_way.floor_earlier_flows = false;
+  const FillReport before = fill_holes(kept_flow, in_the_way);
+  ASSERT_EQ(before.holes.size(), 4u);
+  ASSERT_EQ(before.filled, 4);
+  EXPECT_EQ(delivered_label(before.holes[0].supported, before.holes[0].linear), "G2");
+  for (int hole : {2, 3}) {
+    EXPECT_EQ(delivered_label(before.holes[hole].supported, before.holes[hole].linear), "C0 (linear)");
+    EXPECT_NE(before.holes[hole].note.find("delivered unfaired"), std::string::npos) << before.holes[hole].note;
+  }
+
+  Mesh filled = cut;
+  const FillReport report = fill_holes(filled, FillOptions{});
+  ASSERT_EQ(report.filled, 4);
+  EXPECT_FALSE(test::new_faces_cross(cut, filled));
+  EXPECT_TRUE(validate(filled).manifold());
+  const HoleReport& handle = report.holes[0];
+  EXPECT_EQ(delivered_label(handle.supported, handle.linear), "C2 (linear)");
+  EXPECT_TRUE(handle.note.starts_with("its sixth-order flow's patch took the room of holes 2 and 3")) << handle.note;
+  for (int hole : {2, 3}) {
+    const HoleReport& r = report.holes[hole];
+    EXPECT_EQ(delivered_label(r.supported, r.linear), "G2");
+    EXPECT_TRUE(r.note.starts_with("every fairing crossed the mesh (the last resort: the refined triangulation, "
+                                   "unfaired); the flow's patch of hole 0, filled before, reaches into its room"))
+        << r.note;
+  }
+  // Hole 0's patch (the first committed) is its floor now, and its border is measured there.
+  std::vector<int> handle_vertices(static_cast<std::size_t>(handle.vertices_added));
+  std::iota(handle_vertices.begin(), handle_vertices.end(), cut.num_vertices());
+  ASSERT_EQ(handle.vertices_added, before.holes[0].vertices_added);
+  const double measured = measure_continuity(filled.V, filled.F, handle_vertices).max_normal_angle;
+  EXPECT_NEAR(handle.continuity.max_normal_angle, measured, 1e-12);
+  EXPECT_NE(handle.continuity.max_normal_angle, before.holes[0].continuity.max_normal_angle);
+  double moved = 0;
+  for (int v : handle_vertices) moved = std::max(moved, (filled.V.row(v) - kept_flow.V.row(v)).norm());
+  std::printf("[room] hammer seed 20: hole 0 border %.1f° as a flow, %.1f° at its floor (moved up to %.2f h); "
+              "holes 2 and 3 %s\n",
+              before.holes[0].continuity.max_normal_angle / kDegree, measured / kDegree, moved / h,
+              delivered_label(report.holes[2].supported, report.holes[2].linear).c_str());
+  EXPECT_GT(moved, 0.1 * h);
 }

@@ -110,6 +110,14 @@ struct FillOptions : FairRegionOptions {
   /// (docs/fill.md, "Triangulated within the Delaunay faces"). With fallback_on_failure, a group
   /// whose fill failed is also filled once more from those faces.
   bool refill_folded_back = true;
+  /// With fallback_on_failure: where a group fails, or every fairing of it crosses the mesh and its
+  /// refined triangulation would be delivered unfaired, and flows delivered for earlier groups
+  /// reach into the room its patch may take (a dome over the opening of a severed part, facing the
+  /// other part's openings), those earlier holes are given the linear ∆^k solution their flow
+  /// started from (FairRegionReport::floor_positions), where that does not cross the mesh, and the
+  /// group is filled again. That fill is kept where it is faired (after a failure: where it fills
+  /// the group at all); the notes of both say so (docs/fill.md, "An earlier flow given its floor").
+  bool floor_earlier_flows = true;
 };
 
 enum class HoleStatus { filled, skipped, failed };
