@@ -459,9 +459,11 @@ TEST(BlendReal, ATubeFromTheMembraneThatFoldsBackIsBuiltAgainFromTheHermiteTube)
 
 // A band across spot's body (bench_real_holes' spot 2099 y): the time-stepped flow does not settle
 // (it diverged before the flow limited the term of unresolved curvature; now its max|V| falls over
-// its 200 steps). The energy descent from its last state turns the normal across the loops by 12.3°
-// where the linear tube turns it by 8.8°: it folds against the linear tube, which lies closer to
-// spot (0.032 h), and the linear tube is delivered.
+// its 200 steps). The energy descent that continues from it turns the normal across the loops by
+// 11–12° where the linear tube turns it by 8.8°: it folds against the linear tube, which lies
+// closer to spot (0.032 h), and the linear tube is delivered. (Which of the descent's starts wins,
+// the flow's last state or the tube it started from, and so the angle, depends on the machine: the
+// unsettled flow's last state carries its rounding, amplified over 200 steps.)
 TEST(BlendReal, ADescentThatFoldsAgainstTheLinearTubeIsNotKept) {
   const Band b = band_across("spot.obj", {-0.293232, 0.0711038, 0.460405}, Eigen::Vector3d::UnitY());
   ASSERT_EQ(loop_count(b.cut), 2);
@@ -470,11 +472,13 @@ TEST(BlendReal, ADescentThatFoldsAgainstTheLinearTubeIsNotKept) {
   std::printf("[blend] spot band: %s\n", r.fair.note.c_str());
   EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)");
   EXPECT_TRUE(r.fair.checks_chose_linear);  // the angle rule, which keep_settled_flow switches off
-  EXPECT_NE(r.fair.note.find("the energy descent continued from its last state"), std::string::npos) << r.fair.note;
-  EXPECT_NE(r.fair.note.find("the sixth-order flow's tube turns the normal across the loops by 12.3°, more than the "
-                             "linear tube (8.84°)"),
-            std::string::npos)
-      << r.fair.note;
+  EXPECT_NE(r.fair.note.find("the energy descent continued from"), std::string::npos) << r.fair.note;
+  const std::string rule = "the sixth-order flow's tube turns the normal across the loops by ";
+  const std::size_t at = r.fair.note.find(rule);
+  ASSERT_NE(at, std::string::npos) << r.fair.note;
+  const double angle = std::stod(r.fair.note.substr(at + rule.size()));
+  EXPECT_GT(angle, 1.05 * 8.84) << r.fair.note;
+  EXPECT_NE(r.fair.note.find("°, more than the linear tube (8.84°)", at), std::string::npos) << r.fair.note;
   EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
   const double delivered = tube_distance(m, b.cut.num_vertices(), b.uncut, b.h);
   std::printf("[blend] spot band: tube %.4f h from the uncut mesh\n", delivered);
@@ -679,7 +683,12 @@ TEST(BlendReal, AG2TubeIsWeighedAgainstALowerLinearTubeWhereTheLinearOneCrosses)
   const BlendReport r = blend_loops(m, from_membrane);
   print("blub 954 z", r);
   expect_lower_linear_tube(r);
-  EXPECT_NE(r.fair.note.find("the sixth-order flow's tube creases"), std::string::npos) << r.fair.note;
+  // It loses to that tube by the crease rule or the angle rule, whichever the machine's rounding of
+  // the unsettled time-stepped flow it descended from leads to (24 creased edges; or 38.3° against
+  // 26.4°).
+  EXPECT_TRUE(r.fair.note.find("the sixth-order flow's tube creases") != std::string::npos ||
+              r.fair.note.find("the sixth-order flow's tube turns the normal across the loops by") != std::string::npos)
+      << r.fair.note;
   EXPECT_NE(r.fair.note.find("(the linear ∆3 tube crosses the mesh)"), std::string::npos) << r.fair.note;
   EXPECT_TRUE(new_face_crossings(m, b.cut.num_faces()).empty());
   expect_clean(m);
