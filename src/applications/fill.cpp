@@ -202,7 +202,10 @@ bool takes_in_a_lone_triangle(const std::vector<HoleReport>& reports, const std:
 
 // Fills `group` from the membrane and the refined triangulation (fill_from_membrane), triangulated
 // again where that fill folds back (retriangulate_if_folded_back) or fails (retriangulate_if_failed),
-// and commits the fill, unless it folds back against a lone triangle it takes in.
+// and all that again where it still fails or is delivered unfaired, with the earlier flows in its
+// way at their floors (fill_again_with_earlier_floors, FillOptions::floor_earlier_flows); commits
+// the fill, unless it folds back against a lone triangle it takes in, and keeps its flows' floors
+// in `flows`.
 void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                              const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
                              const FillOptions& options, const FillObserver& observer,
