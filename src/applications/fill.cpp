@@ -126,7 +126,7 @@ std::vector<int> floor_holes(const std::vector<CommittedFlows>& flows, const std
 // each other), and then every fairing of the later group crosses it. Those flows are given their
 // floors on a copy of the mesh (where the floor does not cross the mesh itself), and the group is
 // filled again there (`again(mesh)`); that fill replaces `outcome` where it is faired (or, after a
-// failure, fills the group at all). Returns which flows it gave their floors ({} where it did not
+// failure, fills the group without folding back). Returns which flows it gave their floors ({} where it did not
 // replace `outcome`). (docs/fill.md, "An earlier flow given its floor".)
 template <class Again>
 std::vector<std::size_t> fill_again_with_earlier_floors(const Mesh& mesh,
@@ -159,6 +159,9 @@ std::vector<std::size_t> fill_again_with_earlier_floors(const Mesh& mesh,
   bool kept = false;
   const auto gain = [&](const ChainOutcome& retried) -> std::string {
     if (!failed && retried.start == PatchStart::unfaired) return "";
+    // As retriangulate_if_failed: a failed group is not closed by a patch that folds back (a part's
+    // opening facing another's, which blend joins).
+    if (failed && group_folds_back(reports, group)) return "";
     kept = true;
     const std::vector<int> holes = floor_holes(flows, given);
     const bool one = holes.size() == 1;

@@ -116,7 +116,8 @@ struct FillOptions : FairRegionOptions {
   /// other part's openings), those earlier holes are given the linear ∆^k solution their flow
   /// started from (FairRegionReport::floor_positions), where that does not cross the mesh, and the
   /// group is filled again. That fill is kept where it is faired (after a failure: where it fills
-  /// the group at all); the notes of both say so (docs/fill.md, "An earlier flow given its floor").
+  /// the group without folding back); the notes of both say so (docs/fill.md, "An earlier flow
+  /// given its floor").
   bool floor_earlier_flows = true;
 };
 
