@@ -107,8 +107,9 @@ std::string border_fold_reason(const Submesh& sub, const Topology& local, const 
 
 // Runs the flow on the submesh. With the linear floor (and a ∆^k start), a flow that throws or does
 // not settle leaves the ∆^k solution in place, reported linear; without it, a throw leaves the last
-// accepted state in the caller's mesh and propagates.
-void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& region, const FairRegionOptions& options,
+// accepted state in the caller's mesh and propagates. Returns why the floor was kept ("settled, but
+// turns ...", "did not settle ..."), empty where the flow is delivered.
+std::string run_flow_with_floor(Submesh& sub, const Topology& local, const Region& region, const FairRegionOptions& options,
                          const FlowObserver& observer, FairRegionReport& report, Vertices& caller) {
   FlowOptions flow = options.flow;
   flow.kind = report.flow_kind = flow_for(region.supported);
@@ -131,12 +132,12 @@ void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& regi
     }
     failure = std::string("failed (") + e.what() + ")";
   }
-  if (!floor) return;
+  if (!floor) return "";
   if (failure.empty()) {
     report.floor_positions.resize(static_cast<Eigen::Index>(sub.free_local.size()), 3);
     for (std::size_t k = 0; k < sub.free_local.size(); ++k)
       report.floor_positions.row(static_cast<Eigen::Index>(k)) = start.row(sub.free_local[k]);
-    return;
+    return "";
   }
   sub.mesh.V = start;
   report.linear = true;
@@ -147,6 +148,7 @@ void run_flow_with_floor(Submesh& sub, const Topology& local, const Region& regi
   const std::string chosen = report.note.empty() ? "" : report.note + "; ";
   report.note = chosen + "the " + to_string(report.flow_kind) + " flow " + failure + "; kept the linear ∆" +
                 std::to_string(static_cast<int>(region.supported) + 1) + " solution it started from";
+  return failure;
 }
 
 // roughness() of the surface around the region: over the vertices 3 and 4 rings out, whose 2-rings
@@ -274,11 +276,13 @@ Submesh whole_submesh(const Mesh& mesh, std::span<const int> free_vertices) {
 }
 
 // FairRegionOptions::retry_other_boundary_fits: after the flow chosen by the held-out rings (run
-// with `ran`) folded against its start and the floor was kept (`report`), the flow with the other
-// boundary fits runs from that start, where its held-out error was below the linear solution's.
-// Delivered where it settles without folding; otherwise run_flow_with_floor has put the floor back,
-// and its report is restored as it was.
+// with `ran`) folded against its start and the floor was kept (`report`; `fold`: why, as
+// run_flow_with_floor returned it; `held_out_note`: the note before that run), the flow with the
+// other boundary fits runs from that start, where its held-out error was below the linear
+// solution's. Delivered where it settles without folding; otherwise run_flow_with_floor has put the
+// floor back, and its report is restored as it was.
 void retry_other_boundary_fits(Submesh& sub, const Topology& local, const Region& region, const FairRegionOptions& ran,
+                               const std::string& held_out_note, const std::string& fold,
                                const FlowObserver& observer, FairRegionReport& report, Vertices& caller) {
   if (!ran.retry_other_boundary_fits || !ran.held_out_two_ring_fits || !report.linear || report.held_out_linear ||
       !(report.checks_chose_linear || report.flow_folded_back))
@@ -295,11 +299,10 @@ void retry_other_boundary_fits(Submesh& sub, const Topology& local, const Region
     report = folded;
     return;
   }
-  // "the sixth-order flow settled, but turns ...; kept the linear ∆3 solution ...": which fits
-  // folded, and what was delivered instead.
-  std::string why = folded.note.substr(0, folded.note.rfind("; kept the linear"));
-  if (const std::size_t at = why.find(" flow settled"); at != std::string::npos)
-    why.insert(at + 5, std::string(" with its boundary data fitted over ") + (two_ring ? "1" : "2") + "-rings");
+  // Which fits folded, and what was delivered instead.
+  const std::string why = (held_out_note.empty() ? "" : held_out_note + "; ") + "the " +
+                          to_string(report.flow_kind) + " flow with its boundary data fitted over " +
+                          (two_ring ? "1" : "2") + "-rings " + fold;
   char text[320];
   std::snprintf(text, sizeof text,
                 "; fitted over %d-rings instead it settles without folding, and re-predicts the %d rings around "
@@ -358,8 +361,9 @@ void fair_submesh(Submesh& sub, const Topology& local, const Region& region, con
       flow_options.harmonic_start_iterations = 0;
     }
   }
-  run_flow_with_floor(sub, local, region, flow_options, observer, report, caller);
-  retry_other_boundary_fits(sub, local, region, flow_options, observer, report, caller);
+  const std::string held_out_note = report.note;
+  const std::string fold = run_flow_with_floor(sub, local, region, flow_options, observer, report, caller);
+  retry_other_boundary_fits(sub, local, region, flow_options, held_out_note, fold, observer, report, caller);
 }
 
 }  // namespace
