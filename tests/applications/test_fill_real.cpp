@@ -1482,3 +1482,30 @@ TEST(RealHoleRoom, AnEarlierFlowInTheWayIsGivenItsFloorAndTheLaterHolesAreFaired
               delivered_label(report.holes[2].supported, report.holes[2].linear).c_str());
   EXPECT_GT(moved, 0.1 * h);
 }
+
+// An 8 h ball at spot's vertex 548 severs a part of the cow, with 0.1 h of normal noise (noise seed
+// 2): two facing openings. Hole 0's G2 dome takes hole 1's room, and every fill of hole 1 crosses the
+// mesh, so hole 1 fails. Given hole 0's floor, hole 1 could be closed, but only by its refined
+// triangulation unfaired, folding back (133° across its border, C0): a part's opening that faces
+// another is for blend. So hole 1 stays open with the blend hint, and hole 0 keeps its flow.
+TEST(RealHoleRoom, AFailedHoleDoesNotTakeAnEarlierFlowsRoomToFoldBack) {
+  const Mesh truth = read_mesh(test::data_path("spot.obj"));
+  const double h = test::mean_edge_length(truth);
+  Mesh cut = test::cut_ball(truth, truth.V.row(548).transpose(), 8 * h);
+  test::add_normal_noise(cut, 0.1 * h, 2);
+
+  Mesh filled = cut;
+  const FillReport report = fill_holes(filled, FillOptions{});
+  ASSERT_EQ(report.holes.size(), 2u);
+  const HoleReport& dome = report.holes[0];
+  ASSERT_EQ(dome.status, HoleStatus::filled) << dome.reason;
+  EXPECT_EQ(delivered_label(dome.supported, dome.linear), "G2") << dome.note;
+  EXPECT_EQ(dome.note.find("took the room"), std::string::npos) << dome.note;
+  const HoleReport& facing = report.holes[1];
+  EXPECT_EQ(facing.status, HoleStatus::failed);
+  EXPECT_NE(facing.reason.find("openings that face each other are joined by blend"), std::string::npos)
+      << facing.reason;
+  EXPECT_EQ(report.filled, 1);
+  EXPECT_FALSE(test::new_faces_cross(cut, filled));
+  EXPECT_TRUE(validate(filled).manifold());
+}
