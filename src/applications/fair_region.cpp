@@ -165,6 +165,13 @@ double surroundings_roughness(const Submesh& sub, const Topology& local) {
 // The fairing the held-out rings choose (FairRegionOptions::held_out_rings).
 enum class HeldOutChoice { flow, two_ring_flow, linear, refined_linear };
 
+// What choose_by_held_out decided: the fairing, and, for a flow, whether it starts from (and falls
+// back to) fill's solve from before the membrane instead of the re-evaluated linear solution.
+struct HeldOutVerdict {
+  HeldOutChoice choice = HeldOutChoice::flow;
+  bool flow_from_refined = false;
+};
+
 // FairRegionOptions::held_out_rings: whichever of the flow as given, the flow with its boundary data
 // fitted over 2-rings (held_out_two_ring_fits) and the linear ∆^k solution re-predicts the held-out
 // rings best, with the reason in report.note where it is not the flow as given. The linear solution
@@ -175,34 +182,54 @@ enum class HeldOutChoice { flow, two_ring_flow, linear, refined_linear };
 // The linear method (method = harmonic) weighs only these two: with `refined` and held-out rings it
 // returns refined_linear or linear, else linear. Without held_out_may_choose_linear the flow weighs
 // only its two boundary fits.
-HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, const FairRegionOptions& options,
-                                 FairRegionReport& report, const Vertices* refined) {
+// Around a region rougher than held_out_max_roughness, with `refined`, that solve is the linear
+// solution: the linear method's result without weighing, and the flows' start and floor (their
+// trials start there too). On noisy borders it lies closer to the surface than the re-evaluated
+// solution (docs/fill.md, "The refined solve on rough surroundings").
+HeldOutVerdict choose_by_held_out(const Submesh& sub, const Topology& local, const FairRegionOptions& options,
+                                  FairRegionReport& report, const Vertices* refined) {
   const bool linear_method = options.method == FairMethod::harmonic;
-  if (options.held_out_rings <= 0) return linear_method ? HeldOutChoice::linear : HeldOutChoice::flow;
-  if (linear_method && !refined) return HeldOutChoice::linear;
-  if (!linear_method && (!options.linear_floor || options.harmonic_start_iterations <= 0)) return HeldOutChoice::flow;
+  if (options.held_out_rings <= 0) return {linear_method ? HeldOutChoice::linear : HeldOutChoice::flow};
+  if (linear_method && !refined) return {HeldOutChoice::linear};
+  if (!linear_method && (!options.linear_floor || options.harmonic_start_iterations <= 0)) return {HeldOutChoice::flow};
   const bool may_choose_linear = linear_method || options.held_out_may_choose_linear;
-  if (!may_choose_linear && !fair_detail::weighs_two_ring_fits(options)) return HeldOutChoice::flow;
+  if (!may_choose_linear && !fair_detail::weighs_two_ring_fits(options)) return {HeldOutChoice::flow};
   // The re-evaluated solution may win by held_out_margin, unless the surroundings are rough; fill's
   // solve from before its membrane still may, by kRefinedStartMargin: noise does not win by half.
   bool floor_may_win = may_choose_linear;
+  bool from_refined = false;
   std::string rough;  // why it may not, if it otherwise could
   const int order = static_cast<int>(report.supported) + 1;
-  if (!linear_method && may_choose_linear && std::isfinite(options.held_out_max_roughness)) {
+  if (may_choose_linear && std::isfinite(options.held_out_max_roughness)) {
     report.held_out_roughness = surroundings_roughness(sub, local);
     if (report.held_out_roughness > options.held_out_max_roughness) {
       floor_may_win = false;
-      char text[240];
-      std::snprintf(text, sizeof text,
-                    "the surface around the region is rough (%.3g edges, above %.3g): the held-out rings, which "
-                    "reward a linear solution held by noisy rings for following the noise, did not weigh the "
-                    "linear ∆%d solution against the flow",
-                    report.held_out_roughness, options.held_out_max_roughness, order);
+      from_refined = refined != nullptr;
+      char text[400];
+      std::snprintf(text, sizeof text, "the surface around the region is rough (%.3g edges, above %.3g): ",
+                    report.held_out_roughness, options.held_out_max_roughness);
       rough = text;
+      if (linear_method) {
+        std::snprintf(text, sizeof text,
+                      "one linear ∆%d solve from the patch before its membrane, the closer linear fill on noisy "
+                      "borders",
+                      order);
+        report.note = rough + text;
+        return {HeldOutChoice::refined_linear};
+      }
+      std::snprintf(text, sizeof text,
+                    "the held-out rings, which reward a linear solution held by noisy rings for following the "
+                    "noise, did not weigh the linear ∆%d solution against the flow",
+                    order);
+      rough += text;
+      if (from_refined)
+        rough += ", and the flow starts from one linear ∆" + std::to_string(order) +
+                 " solve from the patch before its membrane, the closer linear fill on noisy borders";
     }
   }
-  const fair_detail::HeldOutErrors errors = fair_detail::held_out_errors(
-      sub, local, options.held_out_rings, options, may_choose_linear ? refined : nullptr, !linear_method);
+  const fair_detail::HeldOutErrors errors =
+      fair_detail::held_out_errors(sub, local, options.held_out_rings, options, may_choose_linear ? refined : nullptr,
+                                   !linear_method, from_refined);
   report.held_out_flow_error = errors.flow;
   report.held_out_two_ring_flow_error = errors.two_ring_flow;
   report.held_out_linear_error = errors.linear;
@@ -218,9 +245,9 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
                   order, options.held_out_rings, order, flow_start.c_str(), errors.refined_linear, errors.linear,
                   linear_method ? "" : "; the flow was not tried");
     report.note = text;
-    return HeldOutChoice::refined_linear;
+    return {HeldOutChoice::refined_linear};
   }
-  if (linear_method) return HeldOutChoice::linear;
+  if (linear_method) return {HeldOutChoice::linear};
   const bool two_ring = errors.two_ring_flow < errors.flow;  // false for NaN (not weighed)
   const double best_flow = two_ring ? errors.two_ring_flow : errors.flow;
   if (floor_may_win && errors.linear * options.held_out_margin < best_flow) {
@@ -230,11 +257,11 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
                   "flow (%.3g against %.3g mean edges off the input)",
                   order, options.held_out_rings, flow_name, errors.linear, best_flow);
     report.note = text;
-    return HeldOutChoice::linear;
+    return {HeldOutChoice::linear};
   }
   if (!two_ring) {
     report.note = rough;
-    return HeldOutChoice::flow;
+    return {HeldOutChoice::flow, from_refined};
   }
   std::snprintf(text, sizeof text,
                 "boundary data fitted over 2-rings: with them the %s flow re-predicts the %d rings around the "
@@ -242,7 +269,7 @@ HeldOutChoice choose_by_held_out(const Submesh& sub, const Topology& local, cons
                 "linear ∆%d solution)",
                 flow_name, options.held_out_rings, errors.two_ring_flow, errors.flow, errors.linear, order);
   report.note = rough.empty() ? std::string(text) : rough + "; " + text;
-  return HeldOutChoice::two_ring_flow;
+  return {HeldOutChoice::two_ring_flow, from_refined};
 }
 
 // Whether the neighbourhood extract_neighbourhood would cut around `free_vertices` is all of `mesh`
@@ -322,24 +349,32 @@ void fair_submesh(Submesh& sub, const Topology& local, const Region& region, con
   harmonic.solver = options.harmonic_solver;
   harmonic.iterations = std::max(1, options.harmonic_start_iterations);
   harmonic.tolerance = options.harmonic_start_tolerance;
-  HeldOutChoice choice = choose_by_held_out(sub, local, options, report, refined);
+  const HeldOutVerdict verdict = choose_by_held_out(sub, local, options, report, refined);
+  HeldOutChoice choice = verdict.choice;
   report.held_out_linear = options.method == FairMethod::flow &&
                            (choice == HeldOutChoice::linear || choice == HeldOutChoice::refined_linear);
   report.checks_chose_linear = report.held_out_linear;
-  if (choice == HeldOutChoice::refined_linear) {
+  // One ∆^k solve from the refined positions into sub.mesh.V. It was weighed on the enlarged region,
+  // not on this one: where it fails here, the re-evaluated solution stands in, and the note says so.
+  const auto solve_from_refined = [&] {
     HarmonicOptions once = harmonic;
     once.iterations = 1;
     Vertices V = *refined;
     try {
       report.harmonic = harmonic_fair(V, sub.mesh.F, local, region, once);
       sub.mesh.V = std::move(V);
+      return true;
+    } catch (const NumericalError& e) {
+      report.note += std::string("; that solve failed on the region (") + e.what() + "): kept the re-evaluated one";
+      return false;
+    }
+  };
+  if (choice == HeldOutChoice::refined_linear) {
+    if (solve_from_refined()) {
       report.linear = report.refined_start = true;
       return;
-    } catch (const NumericalError& e) {
-      // Solved on the enlarged region, not on this one: the re-evaluated floor instead.
-      report.note += std::string("; that solve failed on the region (") + e.what() + "): kept the re-evaluated one";
-      choice = HeldOutChoice::linear;
     }
+    choice = HeldOutChoice::linear;
   }
   if (choice == HeldOutChoice::linear) {
     report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, local, region, harmonic);
@@ -349,9 +384,10 @@ void fair_submesh(Submesh& sub, const Topology& local, const Region& region, con
   FairRegionOptions flow_options = options;
   if (choice == HeldOutChoice::two_ring_flow) flow_options.flow.two_ring_boundary_fits = true;
   report.two_ring_boundary_fits = flow_options.flow.two_ring_boundary_fits;
-  if (solved_start) {
+  const bool from_refined = verdict.flow_from_refined && solve_from_refined();
+  if (!from_refined && solved_start) {
     report.harmonic = *solved_start;
-  } else if (options.harmonic_start_iterations > 0) {
+  } else if (!from_refined && options.harmonic_start_iterations > 0) {
     try {
       report.harmonic = harmonic_fair(sub.mesh.V, sub.mesh.F, local, region, harmonic);
     } catch (const NumericalError& e) {
@@ -364,6 +400,7 @@ void fair_submesh(Submesh& sub, const Topology& local, const Region& region, con
   const std::string held_out_note = report.note;
   const std::string fold = run_flow_with_floor(sub, local, region, flow_options, observer, report, caller);
   retry_other_boundary_fits(sub, local, region, flow_options, held_out_note, fold, observer, report, caller);
+  report.refined_start = from_refined && report.linear;  // the floor kept is that solve
 }
 
 }  // namespace

@@ -107,7 +107,7 @@ void require_valid_held_out_options(const FairRegionOptions& options, const char
 }
 
 HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int rings, const FairRegionOptions& fairing,
-                              const Vertices* refined, bool weigh_flows) {
+                              const Vertices* refined, bool weigh_flows, bool flows_from_refined) {
   const std::vector<int> free = k_ring(topo, sub.free_local, rings);
   std::vector<int> held_out;
   std::set_difference(free.begin(), free.end(), sub.free_local.begin(), sub.free_local.end(),
@@ -136,13 +136,15 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
   flow.linear_floor = false;
   const LinearTrial linear = linear_trial(sub.mesh, sub.mesh, topo, free, held_out, normal, edge, harmonic);
   errors.linear = linear.error;
+  LinearTrial refined_linear;
   if (refined) {
     FairRegionOptions once = harmonic;
     once.harmonic_start_iterations = 1;
     Mesh from;
     from.V = *refined;
     from.F = sub.mesh.F;
-    errors.refined_linear = linear_trial(std::move(from), sub.mesh, topo, free, held_out, normal, edge, once).error;
+    refined_linear = linear_trial(std::move(from), sub.mesh, topo, free, held_out, normal, edge, once);
+    errors.refined_linear = refined_linear.error;
   }
   // Where the refined solve wins, the flows would start from the solution it beats.
   if (errors.refined_start_wins() || !weigh_flows) {
@@ -150,8 +152,10 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
     if (weigh_two_ring) errors.two_ring_flow = errors.flow;
     return errors;
   }
-  // The flow trials start from it (or, without a harmonic start, from the input).
-  const LinearTrial* start = linear.ok && flow.harmonic_start_iterations > 0 ? &linear : nullptr;
+  // The flow trials start from it, or from the refined solve, as the delivered flow does (without a
+  // harmonic start, from the input).
+  const LinearTrial& from = flows_from_refined && refined_linear.ok ? refined_linear : linear;
+  const LinearTrial* start = from.ok && flow.harmonic_start_iterations > 0 ? &from : nullptr;
   errors.flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, flow, start,
                                     &errors.flow_well_posedness);
   if (weigh_two_ring) {

@@ -62,10 +62,13 @@ void require_valid_held_out_options(const FairRegionOptions& options, const char
 /// tangent planes there. `refined`, if given (#V of sub.mesh by 3, differing from it at the free
 /// vertices only), is weighed too, before the flows: one ∆^k solve from those positions; where it
 /// wins (HeldOutErrors::refined_start_wins) the flows are not tried, nor where `weigh_flows` is false
-/// (the linear method: only the two linear solutions are weighed).
+/// (the linear method: only the two linear solutions are weighed). The flows' trials start from the
+/// re-evaluated linear solution, or from the refined solve where `flows_from_refined` (rough
+/// surroundings: the delivered flow starts there too).
 /// `local`: the connectivity of sub.mesh.
 HeldOutErrors held_out_errors(const Submesh& sub, const Topology& local, int rings, const FairRegionOptions& fairing,
-                              const Vertices* refined = nullptr, bool weigh_flows = true);
+                              const Vertices* refined = nullptr, bool weigh_flows = true,
+                              bool flows_from_refined = false);
 
 /// fair_region on a mesh that has passed its validation, with `topo` the connectivity of mesh.F.
 /// `measure`: measure report.continuity (a trial whose report is discarded skips it). `whole`, if

@@ -84,7 +84,11 @@ struct FairRegionOptions {
   /// region, in edges), the re-evaluated ∆^k solution does not win by them (fill's solve from before
   /// the membrane still may, by its factor of 2). A linear solution held by the input's noisy rings
   /// follows their noise into the held-out rings and wins there by following it, not by lying
-  /// closer to the surface. ∞ (here, and for `fairsurf fair`): off;
+  /// closer to the surface. There, fill's solve from before the membrane is the linear solution
+  /// instead: the flow starts from it (its held-out trials too) and falls back to it, and the linear
+  /// method delivers it without weighing, since on noisy borders it lies closer to the surface than
+  /// the re-evaluated solution (docs/fill.md, "The refined solve on rough surroundings"). ∞ (here,
+  /// and for `fairsurf fair`): off;
   /// FillOptions uses 0.05, above the 0.000–0.021 of the clean meshes and scans of data/ and below
   /// the 0.073–0.084 that 0.1 edges of noise reads on them (docs/fill.md, "Rough surroundings").
   double held_out_max_roughness = std::numeric_limits<double>::infinity();
@@ -179,7 +183,9 @@ struct FairRegionReport {
   /// Fill only: the delivered linear solution is that one (report.linear is then true too), taken
   /// where its held-out error is under half the re-evaluated linear solution's, from which the
   /// flows start; they are then not tried (their errors NaN). The linear method (method = harmonic,
-  /// with held_out_rings) weighs the same two linear solutions and no flow.
+  /// with held_out_rings) weighs the same two linear solutions and no flow. Around a region rougher
+  /// than held_out_max_roughness it is the linear solution without weighing: the linear method's
+  /// result, and the flow's floor, set where the floor is kept.
   bool refined_start = false;
   /// The held-out rings chose a linear solution (refined_start's or the re-evaluated one) over the
   /// flow, which was then not run on the region; where the flow ran and was not kept (it did not

@@ -65,7 +65,8 @@ struct FillOptions : FairRegionOptions {
   /// The linear solution is delivered only where the held-out rings prefer it by more than 5%
   /// (held_out_margin = 1.05; docs/fill.md, "Ties go to the flow"); the re-evaluated ∆³ solution
   /// not at all where the surface around the hole is rough (held_out_max_roughness = 0.05;
-  /// docs/fill.md, "Rough surroundings").
+  /// docs/fill.md, "Rough surroundings"): there the flow starts from, and falls back to, one ∆^k
+  /// solve from the patch before its membrane, which the linear method delivers.
   FillOptions();
 
   PatchOptions patch;  ///< triangulation, refinement and membrane of the initial patch
@@ -167,7 +168,8 @@ struct HoleReport {
   /// The patch is the linear ∆^k solution (k = supported + 1): C(k−1), not G(k−1) — the harmonic
   /// method, or the floor kept when the flow did not settle or its patch crossed the mesh. It is
   /// the re-evaluated solution from the membrane, except where the held-out rings prefer one solve
-  /// from the patch before its membrane by more than twice (refined_start; no flow is then tried).
+  /// from the patch before its membrane by more than twice (refined_start; no flow is then tried),
+  /// and where the surface around the hole is rough (held_out_max_roughness; refined_start too).
   /// delivered_label(supported, linear) names it ("G2", "C2 (linear)"). A patch without interior
   /// vertex (a small loop's triangulation alone) or committed unfaired (fallback_on_failure's last
   /// resort) is reported C0 (linear), with a note.
