@@ -194,8 +194,9 @@ HeldOutVerdict choose_by_held_out(const Submesh& sub, const Topology& local, con
   if (!linear_method && (!options.linear_floor || options.harmonic_start_iterations <= 0)) return {HeldOutChoice::flow};
   const bool may_choose_linear = linear_method || options.held_out_may_choose_linear;
   if (!may_choose_linear && !fair_detail::weighs_two_ring_fits(options)) return {HeldOutChoice::flow};
-  // The re-evaluated solution may win by held_out_margin, unless the surroundings are rough; fill's
-  // solve from before its membrane still may, by kRefinedStartMargin: noise does not win by half.
+  // The re-evaluated solution may win by held_out_margin and fill's solve from before its membrane
+  // by kRefinedStartMargin, unless the surroundings are rough: there that solve is the flows' start
+  // and floor instead, and the flows are weighed only against each other.
   bool floor_may_win = may_choose_linear;
   bool from_refined = false;
   std::string rough;  // why it may not, if it otherwise could
@@ -236,7 +237,7 @@ HeldOutVerdict choose_by_held_out(const Submesh& sub, const Topology& local, con
   report.held_out_refined_linear_error = errors.refined_linear;
   const char* flow_name = to_string(flow_for(report.supported));
   char text[320];
-  if (errors.refined_start_wins()) {
+  if (errors.refined_start_wins() && !from_refined) {
     const std::string flow_start = linear_method ? "" : std::string(" the ") + flow_name + " flow starts from";
     std::snprintf(text, sizeof text,
                   "one linear ∆%d solve from the patch before its membrane re-predicts the %d rings around the "

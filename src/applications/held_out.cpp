@@ -146,8 +146,9 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
     refined_linear = linear_trial(std::move(from), sub.mesh, topo, free, held_out, normal, edge, once);
     errors.refined_linear = refined_linear.error;
   }
-  // Where the refined solve wins, the flows would start from the solution it beats.
-  if (errors.refined_start_wins() || !weigh_flows) {
+  // Where the refined solve wins, the flows would start from the solution it beats (unless they
+  // start from the refined solve itself).
+  if ((errors.refined_start_wins() && !flows_from_refined) || !weigh_flows) {
     errors.flow = std::numeric_limits<double>::quiet_NaN();
     if (weigh_two_ring) errors.two_ring_flow = errors.flow;
     return errors;
