@@ -265,7 +265,7 @@ void setup_fill(CLI::App& app) {
       ->check(whole_number_at_least(1));
   cmd->add_flag("--skip-largest", args->skip_largest,
                 "Leave the longest loop open (the outer border of an open surface)");
-  cmd->add_option("--method", args->method, "flow (default: the flow, or its linear ∆^k floor where that re-predicts the held-out rings better by more than 5%) or harmonic (the cotangent ∆^k alone, labelled C2 (linear): re-evaluated from the membrane, or one solve from the patch before it where that re-predicts the held-out rings more than twice as well)");
+  cmd->add_option("--method", args->method, "flow (default: the flow, or its linear ∆^k floor where that re-predicts the held-out rings better by more than 5%) or harmonic (the cotangent ∆^k alone, labelled C2 (linear): re-evaluated from the membrane, or one solve from the patch before it where that re-predicts the held-out rings more than twice as well, or where the surface around the hole is rough)");
   add_keep_flow_flag(cmd, args->keep_flow);
   add_solver_options(cmd, args->solver);
   cmd->add_option("--max-steps", args->max_steps, "Stop each hole's flow after this many accepted steps (>= 1)")

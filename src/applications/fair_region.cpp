@@ -206,16 +206,15 @@ HeldOutVerdict choose_by_held_out(const Submesh& sub, const Topology& local, con
     if (report.held_out_roughness > options.held_out_max_roughness) {
       floor_may_win = false;
       from_refined = refined != nullptr;
-      char text[400];
+      const std::string refined_fill = "one linear ∆" + std::to_string(order) +
+                                       " solve from the patch before its membrane, the closer linear fill on noisy "
+                                       "borders";
+      char text[240];
       std::snprintf(text, sizeof text, "the surface around the region is rough (%.3g edges, above %.3g): ",
                     report.held_out_roughness, options.held_out_max_roughness);
       rough = text;
       if (linear_method) {
-        std::snprintf(text, sizeof text,
-                      "one linear ∆%d solve from the patch before its membrane, the closer linear fill on noisy "
-                      "borders",
-                      order);
-        report.note = rough + text;
+        report.note = rough + refined_fill;
         return {HeldOutChoice::refined_linear};
       }
       std::snprintf(text, sizeof text,
@@ -223,9 +222,7 @@ HeldOutVerdict choose_by_held_out(const Submesh& sub, const Topology& local, con
                     "noise, did not weigh the linear ∆%d solution against the flow",
                     order);
       rough += text;
-      if (from_refined)
-        rough += ", and the flow starts from one linear ∆" + std::to_string(order) +
-                 " solve from the patch before its membrane, the closer linear fill on noisy borders";
+      if (from_refined) rough += ", and the flow starts from " + refined_fill;
     }
   }
   const fair_detail::HeldOutErrors errors =
