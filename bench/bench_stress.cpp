@@ -228,7 +228,7 @@ std::string fill_summary(const FillTally& t) {
                 "fill: %d trials (%d refused), %d holes: %d left open (%d at a lone triangle; after repair, %d), "
                 "%d faired from the refined triangulation, %d filled by it unfaired, %d folding back (%d in disk "
                 "holes where the uncut surface turns less than a right angle); outputs crossing the mesh %d, not "
-                "manifold %d (where the cut was, %d); slowest trial %.2f s",
+                "manifold %d (%d of them where the cut was manifold); slowest trial %.2f s",
                 t.trials, t.refused, t.holes, t.open, t.open_at_lone_triangle, t.open_after_repair, t.refined,
                 t.unfaired, t.folded, t.folded_against_uncut, t.crossing, t.non_manifold, t.made_non_manifold, t.slowest);
   return text;
