@@ -10,12 +10,13 @@
 //        two loops of at most 200 edges.
 //
 // Usage: bench_stress [--section fill|fair|blend|all] [--mesh NAME | --mesh-file PATH...]
-//                     [--trials N] [--seed S] [--cut balls|irregular]
+//                     [--trials N] [--seed S] [--cut balls|irregular] [--write DIR]
 #include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/applications/fill.h>
 #include <fairsurf/applications/repair.h>
 #include <fairsurf/geometry/continuity_measure.h>
+#include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/face_intersection.h>
 #include <fairsurf/mesh/region_selection.h>
@@ -28,6 +29,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -54,6 +56,7 @@ struct Args {
   int trials = 40;                      // per mesh and section
   std::uint64_t seed = 1;               // of the first trial; trial t draws from seed + t
   std::string cut = "balls";            // fill and fair: balls, or irregular blobs and slits
+  std::string write_dir;                // fill: where each trial's cut and filled meshes go
 };
 
 void add_options(CLI::App& app, Args& args) {
@@ -70,6 +73,11 @@ void add_options(CLI::App& app, Args& args) {
                  "Fill and fair: balls, or irregular blobs and slits of faces (their inner vertices freed for fair)")
       ->check(CLI::IsMember({"balls", "irregular"}))
       ->capture_default_str();
+  app.add_option("--write", args.write_dir,
+                 "Fill: write each trial's cut and filled meshes into DIR, as MESH_seedS_cut.ply and "
+                 "MESH_seedS_filled.ply, to look at with fairsurf render or fill again with the CLI")
+      ->type_name("DIR")
+      ->check(CLI::ExistingDirectory);
 }
 
 // 1–3 balls, each centred at a vertex of `mesh` as cut so far (`cut`: cut each ball out, else keep
@@ -163,13 +171,21 @@ int open_after_repair(Mesh cut) {
   return fill_holes(filled, FillOptions{}).failed;
 }
 
-void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, FillTally& tally) {
+// --write: `DIR/MESH_seedS_` + `what` + `.ply`.
+void write_trial(const std::string& dir, const ClosedMesh& m, std::uint64_t seed, const char* what, const Mesh& mesh) {
+  const std::string name = m.name + "_seed" + std::to_string(seed) + "_" + what + ".ply";
+  write_mesh(std::filesystem::path(dir) / name, mesh);
+}
+
+void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, const std::string& write_dir,
+                FillTally& tally) {
   bool slit = false;
   const Balls balls = irregular ? draw_irregular(m, seed, slit) : draw_balls(m, seed, true);
   const Mesh& cut = balls.cut;
   std::printf("fill  %-26s seed %3llu: %sloops %s", m.name.c_str(), static_cast<unsigned long long>(seed),
               irregular ? (slit ? "slit, " : "blob, ") : "", bench::border_sizes(cut).c_str());
   ++tally.trials;
+  if (!write_dir.empty()) write_trial(write_dir, m, seed, "cut", cut);
   Mesh filled = cut;
   FillReport report;
   try {
@@ -179,6 +195,7 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, FillTal
     std::printf(", refused: %s\n", e.what());
     return;
   }
+  if (!write_dir.empty()) write_trial(write_dir, m, seed, "filled", filled);
   const bool crossing = crosses(filled, bench::rows_from(cut.num_faces(), filled.num_faces()));
   const bool manifold = validate(filled).manifold();
   const bool cut_manifold = validate(cut).manifold();
@@ -379,7 +396,7 @@ int main(int argc, char** argv) {
       FillTally tally;
       for (const ClosedMesh& m : meshes)
         for (int t = 0; t < args.trials; ++t)
-          fill_trial(m, args.seed + static_cast<std::uint64_t>(t), args.cut == "irregular", tally);
+          fill_trial(m, args.seed + static_cast<std::uint64_t>(t), args.cut == "irregular", args.write_dir, tally);
       summaries.push_back(fill_summary(tally));
     }
     if (wanted("fair")) {
