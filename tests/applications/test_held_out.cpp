@@ -7,6 +7,7 @@
 #include <fairsurf/applications/fill.h>
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/submesh.h>
 #include <fairsurf/mesh/topology.h>
 
 #include <gtest/gtest.h>
@@ -98,6 +99,36 @@ TEST(HeldOutTrials, TheReportSaysWhetherTheRingsChoseTheLinearSolution) {
   const FairRegionReport flow = fair_region(flowed, region, lenient);
   EXPECT_FALSE(flow.held_out_linear) << flow.note;
   EXPECT_GE(flow.flow.accepted_steps, 1) << flow.note;
+}
+
+// Where the delivered flow starts from fill's solve from before the membrane (rough surroundings),
+// its held-out trials start there too (flows_from_refined), so that the flow weighed is the flow
+// delivered. The same trials with and without it: the two linear trials are the same, the flow
+// trials are not.
+TEST(HeldOutTrials, TheFlowTrialsStartFromTheSolveFromBeforeTheMembraneWhereTheFlowDoes) {
+  const Mesh mesh = read_mesh(test::data_path("spot.obj"));
+  const Topology topo = build_topology(mesh.F, mesh.num_vertices());
+  Submesh sub;
+  sub.mesh = mesh;
+  sub.to_global.resize(mesh.num_vertices());
+  for (int v = 0; v < mesh.num_vertices(); ++v) sub.to_global[v] = v;
+  sub.free_local = test::ball_vertices(mesh, {0.312594, 0.674309, -0.341185}, 0.190738);
+  ASSERT_GT(sub.free_local.size(), 20u);
+  // Other positions of the free vertices: each moved by a tenth of the ball's radius along z, up
+  // and down in turn.
+  Vertices refined = mesh.V;
+  for (std::size_t k = 0; k < sub.free_local.size(); ++k) refined(sub.free_local[k], 2) += (k % 2 ? 0.019 : -0.019);
+  const FairRegionOptions fairing = FillOptions();
+  const fair_detail::HeldOutErrors from_linear =
+      fair_detail::held_out_errors(sub, topo, 2, fairing, &refined, true, false);
+  const fair_detail::HeldOutErrors from_refined =
+      fair_detail::held_out_errors(sub, topo, 2, fairing, &refined, true, true);
+  ASSERT_TRUE(std::isfinite(from_linear.flow) && std::isfinite(from_refined.flow));
+  EXPECT_EQ(from_linear.linear, from_refined.linear);
+  EXPECT_EQ(from_linear.refined_linear, from_refined.refined_linear);
+  EXPECT_NE(from_linear.refined_linear, from_linear.linear);
+  EXPECT_NE(from_linear.flow, from_refined.flow);
+  EXPECT_NE(from_linear.two_ring_flow, from_refined.two_ring_flow);
 }
 
 }  // namespace
