@@ -4,6 +4,8 @@
 // when it turns it by more than a right angle.
 #pragma once
 
+#include <fairsurf/geometry/continuity_measure.h>
+
 #include <algorithm>
 #include <numbers>
 
@@ -17,6 +19,17 @@ inline constexpr double kSmallestFoldAngle = 5 * std::numbers::pi / 180;
 // `linear`: above `ratio` times it and above kSmallestFoldAngle.
 inline bool folds_against(double angle, double linear, double ratio) {
   return angle > std::max(ratio * linear, kSmallestFoldAngle);
+}
+
+// Whether a faired region whose border (or one loop of it) measures `faired` folds against the
+// linear solution's `linear` on rough surroundings (fair_region's check of a settled flow against
+// its ∆^k start): by folds_against both at its worst border vertex and on average along the border.
+// The worst vertex alone is one vertex's one-sided fits, which on a noisy scan's border read the
+// noise: there a flow that does not follow the noisy rings turns more at some vertex than the
+// linear solution held by them, without folding (docs/fill.md, "A fold is a turn along the border").
+inline bool border_folds_against(const ContinuityMeasure& faired, const ContinuityMeasure& linear, double ratio) {
+  return folds_against(faired.max_normal_angle, linear.max_normal_angle, ratio) &&
+         folds_against(faired.mean_normal_angle, linear.mean_normal_angle, ratio);
 }
 
 // Whether the largest border normal angle `angle` (radians) folds back against the surface: more than

@@ -21,6 +21,7 @@
 #include <numbers>
 #include <numeric>
 #include <optional>
+#include <span>
 
 namespace fairsurf {
 
@@ -82,26 +83,61 @@ void keep_settled_flow(FairRegionOptions& options) {
 
 namespace {
 
+// The region's border vertices (fixed, with a free neighbour), one group per component of the
+// border along the mesh's edges: one per loop of a group of holes, so that a fold at one window of
+// a row is not averaged away over the row's other windows.
+std::vector<std::vector<int>> border_components(const Topology& local, std::span<const int> free_vertices) {
+  std::vector<char> is_free(local.num_vertices, 0), on_border(local.num_vertices, 0);
+  for (int v : free_vertices) is_free[v] = 1;
+  for (int v : free_vertices)
+    for (int w : local.vertex_vertices.row(v)) on_border[w] = !is_free[w];
+  std::vector<std::vector<int>> components;
+  for (int seed = 0; seed < local.num_vertices; ++seed) {
+    if (!on_border[seed]) continue;
+    std::vector<int>& component = components.emplace_back(1, seed);
+    on_border[seed] = 0;
+    for (std::size_t k = 0; k < component.size(); ++k)
+      for (int w : local.vertex_vertices.row(component[k]))
+        if (on_border[w]) on_border[w] = 0, component.push_back(w);
+  }
+  return components;
+}
+
 // Empty, or why the flow's steady state folds against the ∆^k solution `start` it started from:
-// its max normal angle across the region's border exceeds both
+// its largest normal angle across the region's border exceeds both
 // FairRegionOptions::max_border_angle_ratio times the linear solution's and kSmallestFoldAngle
-// (border_fold.h; `by_ratio` says so), or it folds back (more than a right angle) where the linear
-// solution does not (FairRegionOptions::refuse_folding_back; `back` says so).
+// (`by_ratio` says so), or it folds back (more than a right angle) where the linear solution does
+// not (FairRegionOptions::refuse_folding_back; `back` says so). Around a `rough` region, where the
+// largest angle is one border vertex's reading of the noise, the ratio must be exceeded on average
+// too, along one component of the border (border_folds_against, border_fold.h).
 std::string border_fold_reason(const Submesh& sub, const Topology& local, const Vertices& start,
-                               const FairRegionOptions& options, bool& by_ratio, bool& back) {
+                               const FairRegionOptions& options, bool rough, bool& by_ratio, bool& back) {
   by_ratio = back = false;
   if (std::isinf(options.max_border_angle_ratio) && !options.refuse_folding_back) return "";
-  const double flowed = measure_continuity(sub.mesh.V, sub.mesh.F, local, sub.free_local).max_normal_angle;
-  const double linear = measure_continuity(start, sub.mesh.F, local, sub.free_local).max_normal_angle;
-  by_ratio = detail::folds_against(flowed, linear, options.max_border_angle_ratio);
-  back = options.refuse_folding_back && detail::turns_back(flowed) && !detail::turns_back(linear);
+  // An empty list measures at every border vertex.
+  const std::vector<std::vector<int>> parts =
+      rough ? border_components(local, sub.free_local) : std::vector<std::vector<int>>(1);
+  ContinuityMeasure flowed, linear;  // of the first part that folds, for the note
+  for (const std::vector<int>& part : parts) {
+    const ContinuityMeasure f = measure_continuity(sub.mesh.V, sub.mesh.F, local, sub.free_local, part);
+    const ContinuityMeasure l = measure_continuity(start, sub.mesh.F, local, sub.free_local, part);
+    const bool folds = rough ? detail::border_folds_against(f, l, options.max_border_angle_ratio)
+                             : detail::folds_against(f.max_normal_angle, l.max_normal_angle,
+                                                     options.max_border_angle_ratio);
+    const bool folds_back = options.refuse_folding_back && detail::turns_back(f.max_normal_angle) &&
+                            !detail::turns_back(l.max_normal_angle);
+    if ((folds || folds_back) && !by_ratio && !back) flowed = f, linear = l;
+    by_ratio = by_ratio || folds;
+    back = back || folds_back;
+  }
   if (!by_ratio && !back) return "";
   constexpr double kDegrees = 180 / std::numbers::pi;
-  char text[200];
+  char text[240];
   std::snprintf(text, sizeof text,
-                "settled, but turns the normal across the border by %.1f deg where the linear solution it "
-                "started from turns it by %.1f deg",
-                flowed * kDegrees, linear * kDegrees);
+                "settled, but turns the normal across the border by %.1f deg (%.1f on average) where the linear "
+                "solution it started from turns it by %.1f deg (%.1f)",
+                flowed.max_normal_angle * kDegrees, flowed.mean_normal_angle * kDegrees,
+                linear.max_normal_angle * kDegrees, linear.mean_normal_angle * kDegrees);
   return text;
 }
 
@@ -121,7 +157,8 @@ std::string run_flow_with_floor(Submesh& sub, const Topology& local, const Regio
     report.flow = run_flow(sub.mesh.V, sub.mesh.F, local, region, flow, observer);
     if (report.flow.stop_reason != FlowStopReason::steady) failure = unsettled_reason(report.flow);
     else if (floor) {
-      failure = border_fold_reason(sub, local, start, options, folded, folded_back);
+      const bool rough = report.held_out_roughness > options.held_out_max_roughness;  // NaN: not measured
+      failure = border_fold_reason(sub, local, start, options, rough, folded, folded_back);
     }
   } catch (const NumericalError& e) {
     if (const auto* failure = dynamic_cast<const flow_detail::FlowFailure*>(&e))

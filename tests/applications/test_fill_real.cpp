@@ -190,6 +190,34 @@ TEST(RealHoleJointGroup, EachHoleOfAJointGroupGetsItsOwnChoice) {
   EXPECT_LT(g2, joint);  // the windows whose own flow folds or predicts worse keep the floor
 }
 
+// The same windows with 0.1 h of normal noise (seed 2), a scan's border: the surroundings read rough,
+// so the fold check weighs the angle across the border on average too (max_border_angle_ratio), and
+// it does so window by window. Averaged over the whole row, one window's fold vanished among its
+// neighbours: the row's flow was delivered, windows turning the normal by up to 66° (23° on
+// average), 0.19 h from the uncut airplane on average. Window by window the row's flow folds at
+// some windows, each window is faired again alone, and the fills lie 0.094 h from it.
+TEST(RealHoleJointGroup, OnANoisyScanAWindowThatFoldsIsNotAveragedAwayOverItsRow) {
+  const Mesh input = read_mesh(test::data_path("airplane_holes.obj"));
+  const Mesh truth = read_mesh(test::data_path("airplane.obj"));
+  const double h = test::mean_edge_length(input);
+  Mesh noisy = input;
+  test::add_normal_noise(noisy, 0.1 * h, 2);
+  Mesh filled = noisy;
+  const FillReport report = fill_holes(filled, FillOptions{});
+  ASSERT_EQ(report.filled, 27);
+  int joint = 0;
+  for (const HoleReport& hole : report.holes) {
+    if (hole.filled_with.empty() || hole.vertices_added == 0) continue;
+    ++joint;
+    EXPECT_GT(hole.held_out_roughness, FillOptions{}.held_out_max_roughness) << hole.index;
+    EXPECT_NE(hole.note.find("faired again alone"), std::string::npos) << hole.index << ": " << hole.note;
+  }
+  EXPECT_EQ(joint, 26);
+  const double distance = mean_new_vertex_distance(filled, noisy.num_vertices(), truth) / h;
+  std::printf("[joint, noisy] airplane_holes, 0.1h noise, seed 2: %.3f h from the uncut airplane\n", distance);
+  EXPECT_LT(distance, 0.14);
+}
+
 // Two loops 8 h across blub's tail (bench_real_holes' blub 1626 8h, 37 and 26 edges) that meet at a
 // vertex: the ball pinches the border there, and relinking at the pinch makes one loop, one patch,
 // of the two. Filled jointly, the group's flow settles into a patch that crosses the mesh, and
@@ -1014,14 +1042,48 @@ TEST(RealNoisyHole, OnRoughSurroundingsTheFlowsAreTriedWhereTheSolveFromBeforeTh
   EXPECT_LT(r.distance, 0.7 * linear_distance);
 }
 
-// A 4h hole at spot's vertex 508 with 0.1 h of noise (seed 1): the held-out rings choose the flow on
-// 1-ring fits, whose steady state turns the normal across the border by 27.1° where the ∆³ solution
-// it started from turns it by 17.5° (more than 1.5 times: the fold check). Before the floor is kept,
-// the flow on 2-ring fits, which the held-out rings also preferred to the floor, runs from the same
-// start; it does not fold, and it is delivered, closer to the uncut cow than the floor (0.077 h
-// against 0.180 h; FairRegionOptions::retry_other_boundary_fits).
+// spot 4h at vertex 1012 with 0.1 h of noise (seed 2). The surroundings read rough, and the G2 flow,
+// started from one ∆³ solve from the patch before its membrane (the linear method's fill), settles
+// turning the normal across the border by 40° at its worst border vertex where that solve turns it by
+// 23°: more than 1.5 times, a fold on smooth surroundings. On average along the border it turns it by
+// 12° against 9°; the worst vertex reads the noise of the rings, which the solve follows and the
+// flow does not. So the flow is not refused as a fold, and it lies closer to the clean cow than the
+// solve (0.062 h against 0.119 h; FairRegionOptions::max_border_angle_ratio).
+TEST(RealNoisyHole, OnRoughSurroundingsAFlowThatTurnsMoreOnlyAtItsWorstBorderVertexIsDelivered) {
+  const BallHole ball = fill_ball_hole("spot.obj", {0.346277, 0.031858, 0.167040}, 4, 0.1, 2);
+  const FilledTwice& r = ball.r;
+  ASSERT_EQ(r.report.holes.size(), 1u);
+  const HoleReport& hole = r.hole();
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_GT(hole.held_out_roughness, FillOptions{}.held_out_max_roughness);
+  EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
+
+  Mesh linear_filled = ball.cut;
+  FillOptions linear;
+  linear.method = FairMethod::harmonic;
+  const HoleReport linear_hole = fill_holes(linear_filled, linear).holes.front();
+  EXPECT_TRUE(linear_hole.refined_start) << linear_hole.note;
+  const double ratio = FillOptions{}.max_border_angle_ratio;
+  EXPECT_GT(hole.continuity.max_normal_angle, ratio * linear_hole.continuity.max_normal_angle);
+  EXPECT_LT(hole.continuity.mean_normal_angle, ratio * linear_hole.continuity.mean_normal_angle);
+  const double linear_distance = mean_new_vertex_distance(linear_filled, ball.cut.num_vertices(), ball.truth) / ball.h;
+  std::printf("[noisy hole] spot 1012 4h, 0.1h noise, seed 2: border %.1f deg (%.1f on average), the solve %.1f deg "
+              "(%.1f); G2 %.3f h, the solve %.3f h from the clean cow\n",
+              hole.continuity.max_normal_angle / kDegree, hole.continuity.mean_normal_angle / kDegree,
+              linear_hole.continuity.max_normal_angle / kDegree, linear_hole.continuity.mean_normal_angle / kDegree,
+              r.distance, linear_distance);
+  EXPECT_LT(r.distance, 0.7 * linear_distance);
+}
+
+// A 4h hole at spot's vertex 1925 with 0.1 h of noise (seed 1): the held-out rings choose the flow on
+// 1-ring fits, whose steady state turns the normal across the border by 60.5° (16.9° on average)
+// where the ∆³ solution it started from turns it by 26.2° (10.1°): more than 1.5 times at the worst
+// vertex and on average, the fold check on rough surroundings. Before the floor is kept, the flow on
+// 2-ring fits, which the held-out rings also preferred to the floor, runs from the same start; it
+// does not fold, and it is delivered, closer to the uncut cow than the floor (0.093 h against
+// 0.360 h; FairRegionOptions::retry_other_boundary_fits).
 TEST(RealNoisyHole, AFlowThatFoldsIsTriedOnItsOtherBoundaryFitsBeforeTheFloorIsKept) {
-  const BallHole ball = fill_ball_hole("spot.obj", {-0.368668, -0.137134, 0.438729}, 4, 0.1, 1);
+  const BallHole ball = fill_ball_hole("spot.obj", {-0.308510, -0.340088, 0.875405}, 4, 0.1, 1);
   const FilledTwice& r = ball.r;
   ASSERT_EQ(r.report.holes.size(), 1u);
   const HoleReport& hole = r.hole();
@@ -1048,7 +1110,7 @@ TEST(RealNoisyHole, AFlowThatFoldsIsTriedOnItsOtherBoundaryFitsBeforeTheFloorIsK
   // Delivered from the floor's own start, it turns the normal by at most 1.5 times as much.
   EXPECT_LE(hole.continuity.max_normal_angle, 1.5 * off_hole.continuity.max_normal_angle);
   const double floor_distance = mean_new_vertex_distance(floor_filled, ball.cut.num_vertices(), ball.truth) / ball.h;
-  std::printf("[other fits] spot 508 4h, 0.1h noise, seed 1: G2 on 2-ring fits %.4f h, the floor %.4f h; border %.1f "
+  std::printf("[other fits] spot 1925 4h, 0.1h noise, seed 1: G2 on 2-ring fits %.4f h, the floor %.4f h; border %.1f "
               "against %.1f deg\n",
               r.distance, floor_distance, hole.continuity.max_normal_angle / kDegree,
               off_hole.continuity.max_normal_angle / kDegree);

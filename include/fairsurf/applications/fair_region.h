@@ -95,9 +95,12 @@ struct FairRegionOptions {
   /// With the linear floor: a flow whose steady state turns the normal across the region's border
   /// (ContinuityMeasure::max_normal_angle) by more than this many times the ∆^k solution it started
   /// from does, and by more than 5 degrees, folds against it: the linear solution is kept, reported
-  /// `linear` with both angles in the note. Such a state is not the curvature-continuous surface it
+  /// `linear` with the angles in the note. Such a state is not the curvature-continuous surface it
   /// is labelled, and on real holes it lands farther from the surface than the floor more often than
-  /// not (docs/fill.md, "A flow that folds against its start"). Infinity: off.
+  /// not (docs/fill.md, "A flow that folds against its start"). Where the surroundings are rough
+  /// (above held_out_max_roughness), the largest angle is one border vertex's reading of the noise,
+  /// and the flow folds only where it exceeds the ratio on average (mean_normal_angle) too, along
+  /// one loop of the border (docs/fill.md, "A fold is a turn along the border"). Infinity: off.
   double max_border_angle_ratio = std::numeric_limits<double>::infinity();
   /// With the linear floor: a flow whose steady state folds back across the region's border (turns
   /// the normal by more than a right angle) where the ∆^k solution it started from does not is not
