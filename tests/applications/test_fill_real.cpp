@@ -102,6 +102,15 @@ BallHole fill_ball_hole(const std::string& mesh, const Eigen::Vector3d& centre, 
   return b;
 }
 
+// The one hole of a noisy ball cut filled, around surroundings that read rough (above
+// FillOptions::held_out_max_roughness). Call it within ASSERT_NO_FATAL_FAILURE.
+void expect_filled_rough_hole(const BallHole& ball) {
+  ASSERT_EQ(ball.r.report.holes.size(), 1u);
+  const HoleReport& hole = ball.r.hole();
+  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+  EXPECT_GT(hole.held_out_roughness, FillOptions{}.held_out_max_roughness);
+}
+
 class RealHoles : public ::testing::TestWithParam<RealHole> {};
 
 }  // namespace
@@ -942,10 +951,8 @@ TEST(RealNoisyHole, OnRoughSurroundingsTheHeldOutRingsDoNotChooseTheFloorAndTheG
   const BallHole ball = fill_ball_hole("spot.obj", {-0.0626485, 0.640189, -0.506046}, 4, 0.1, 6);
   const Mesh& cut = ball.cut;
   const FilledTwice& r = ball.r;
-  ASSERT_EQ(r.report.holes.size(), 1u);
+  ASSERT_NO_FATAL_FAILURE(expect_filled_rough_hole(ball));
   const HoleReport& hole = r.hole();
-  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
-  EXPECT_GT(hole.held_out_roughness, FillOptions{}.held_out_max_roughness);
   EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
   EXPECT_NE(hole.note.find("the surface around the region is rough"), std::string::npos) << hole.note;
 
@@ -983,10 +990,8 @@ TEST(RealNoisyHole, OnRoughSurroundingsTheHeldOutRingsDoNotChooseTheFloorAndTheG
 TEST(RealNoisyHole, OnRoughSurroundingsTheLinearSolutionIsTheSolveFromBeforeTheMembrane) {
   const BallHole ball = fill_ball_hole("spot.obj", {0.312594, 0.674309, -0.341185}, 4, 0.1, 1);
   const FilledTwice& r = ball.r;
-  ASSERT_EQ(r.report.holes.size(), 1u);
+  ASSERT_NO_FATAL_FAILURE(expect_filled_rough_hole(ball));
   const HoleReport& hole = r.hole();
-  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
-  EXPECT_GT(hole.held_out_roughness, FillOptions{}.held_out_max_roughness);
   EXPECT_EQ(delivered_label(hole.supported, hole.linear), "C2 (linear)") << hole.note;
   EXPECT_TRUE(hole.refined_start);
   EXPECT_NE(hole.note.find("the flow starts from one linear ∆3 solve from the patch before its membrane"),
@@ -1020,10 +1025,8 @@ TEST(RealNoisyHole, OnRoughSurroundingsTheLinearSolutionIsTheSolveFromBeforeTheM
 TEST(RealNoisyHole, OnRoughSurroundingsTheFlowsAreTriedWhereTheSolveFromBeforeTheMembraneWinsByTwice) {
   const BallHole ball = fill_ball_hole("spot.obj", {0.304443, -0.521287, -0.117606}, 4, 0.1, 2);
   const FilledTwice& r = ball.r;
-  ASSERT_EQ(r.report.holes.size(), 1u);
+  ASSERT_NO_FATAL_FAILURE(expect_filled_rough_hole(ball));
   const HoleReport& hole = r.hole();
-  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
-  EXPECT_GT(hole.held_out_roughness, FillOptions{}.held_out_max_roughness);
   EXPECT_LT(2 * hole.held_out_refined_linear_error, hole.held_out_linear_error);  // it wins by twice
   EXPECT_TRUE(std::isfinite(hole.held_out_flow_error)) << hole.note;             // and the flows were tried
   EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
@@ -1052,10 +1055,8 @@ TEST(RealNoisyHole, OnRoughSurroundingsTheFlowsAreTriedWhereTheSolveFromBeforeTh
 TEST(RealNoisyHole, OnRoughSurroundingsAFlowThatTurnsMoreOnlyAtItsWorstBorderVertexIsDelivered) {
   const BallHole ball = fill_ball_hole("spot.obj", {0.346277, 0.031858, 0.167040}, 4, 0.1, 2);
   const FilledTwice& r = ball.r;
-  ASSERT_EQ(r.report.holes.size(), 1u);
+  ASSERT_NO_FATAL_FAILURE(expect_filled_rough_hole(ball));
   const HoleReport& hole = r.hole();
-  ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
-  EXPECT_GT(hole.held_out_roughness, FillOptions{}.held_out_max_roughness);
   EXPECT_EQ(delivered_label(hole.supported, hole.linear), "G2") << hole.note;
 
   Mesh linear_filled = ball.cut;
