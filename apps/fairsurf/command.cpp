@@ -144,7 +144,8 @@ void drop_shape_properties(Mesh& mesh, const std::string& path) {
 void add_functions_option(CLI::App* cmd, std::vector<std::string>& functions) {
   cmd->add_option("--functions,--f", functions,
                   "Energy function(s) f(H,K) of the sixth-order flow, repeatable, one per --functions: H "
-                  "(default), K, H2, absHpH:p, 4absHH+2K, k1, k2 or a formula in H and K")
+                  "(default), K, H2, absHpH:p, 4absHH+2K, k1, k2 or a formula in H and K (which may use eps and kappa, "
+                  "the curvature scale: docs/energies.md)")
       ->allow_extra_args(false);
 }
 

@@ -61,13 +61,14 @@ EnergyValue evaluate_builtin(Builtin kind, double p, double H, double K, double 
 
 /// One muparser instance with the variables it is bound to; one per thread.
 struct FormulaSlot {
-  double H = 0, K = 0, eps = 0;
+  double H = 0, K = 0, eps = 0, kappa = 1;
   mu::Parser parser;
 
   explicit FormulaSlot(const std::string& formula) {
     parser.DefineVar("H", &H);
     parser.DefineVar("K", &K);
     parser.DefineVar("eps", &eps);
+    parser.DefineVar("kappa", &kappa);
     parser.SetExpr(formula);
   }
 
@@ -80,6 +81,7 @@ struct FormulaSlot {
   /// f and its five-point central differences (exact for polynomials of degree ≤ 4).
   EnergyValue evaluate(double h, double k, const EnergyScale& scale) {
     eps = scale.epsilon();
+    kappa = scale.curvature;
     const double m = std::max({std::abs(h), std::sqrt(std::abs(k)), scale.curvature});
     const double dh = kRelativeStep * m, dk = kRelativeStep * m * m;
     const auto derivative = [](double f2m, double f1m, double f1p, double f2p, double step) {

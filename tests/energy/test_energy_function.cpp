@@ -145,6 +145,19 @@ TEST(EnergyFunction, FormulaCanUseTheRegularizationEpsilon) {
   EXPECT_NEAR(fn.evaluate(0.3, 0.0, scale).f_H, 0.3 / std::sqrt(0.09 + 0.0004), 1e-10);
 }
 
+// K/kappa has the units of H whatever the mesh's size, so {H, K/kappa} weighs its two terms alike
+// on every surface (docs/energies.md).
+TEST(EnergyFunction, FormulaCanUseTheCurvatureScale) {
+  const EnergyFunction fn = parse_energy_function("K/kappa");
+  const EnergyScale scale{4.0, 1e-3};
+  EXPECT_DOUBLE_EQ(fn.evaluate(0.3, 2.0, scale).f, 0.5);
+  EXPECT_NEAR(fn.evaluate(0.3, 2.0, scale).f_K, 0.25, 1e-10);
+  EXPECT_NEAR(fn.evaluate(0.3, 2.0, scale).f_H, 0.0, 1e-10);
+  // Scaling a surface by s scales H by 1/s, K by 1/s² and κ by 1/s: f scales as H does.
+  const double s = 10;
+  EXPECT_DOUBLE_EQ(fn.evaluate(0.3 / s, 2.0 / (s * s), EnergyScale{4.0 / s, 1e-3}).f, 0.5 / s);
+}
+
 TEST(EnergyFunction, ParseErrorsArePrecise) {
   const std::string valid = "H, K, H2, absHpH:p, 4absHH+2K, k1, k2";
   EXPECT_EQ(builtin_energy_function_names(), valid);

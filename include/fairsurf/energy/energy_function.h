@@ -3,7 +3,8 @@
 // A function is named by a string (docs/energies.md has the catalogue):
 //   built-ins, with exact f, f_H, f_K:  H  K  H2  absHpH:p  4absHH+2K  k1  k2
 //   anything else is parsed as a formula in H and K (muparser syntax: H^3+0.5*K, exp(H)*K, ...), whose
-//   f_H and f_K are central differences (see below). A formula may also use `eps`, the regularization ε.
+//   f_H and f_K are central differences (see below). A formula may also use `eps`, the regularization ε,
+//   and `kappa`, the curvature scale κ (so that K/kappa has the units of H).
 // Signs follow method.md §1: H = ½ trace of the shape operator with the outward normal, so H = −1/R and
 // K = 1/R² on a sphere of radius R; k1,2 = H ± √(H² − K), k1 ≥ k2.
 //
