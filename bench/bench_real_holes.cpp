@@ -5,6 +5,7 @@
 //
 // Usage: bench_real_holes [--section fill|fair|blend|all] [--mesh NAME | --mesh-file PATH...] [--no-cgal]
 //                         [--quick] [--random N [--seed S]] [--cut ball|blob|slit] [--all-slabs] [--keep-flow]
+//                         [--functions F ...]
 //                         [--csv FILE]
 #include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
@@ -53,6 +54,7 @@ struct Args {
   int random = 0;          // ball centres drawn at random instead of the fixed ones (0: fixed)
   std::uint64_t seed = 1;  // of those draws
   bool keep_flow = false;  // fairsurf's rows as with --keep-flow
+  std::vector<std::string> functions;  // fairsurf's rows with these f instead of H (--functions)
   std::string cut = "ball";  // fill: the holes' shape round each centre (ball, blob or slit)
 };
 
@@ -69,13 +71,14 @@ struct Ours {
   BlendOptions blend;
 };
 
-Ours ours_options(bool keep_flow) {
+Ours ours_options(bool keep_flow, const std::vector<std::string>& functions) {
   Ours ours;
   if (keep_flow) {
     keep_settled_flow(ours.fill);
     keep_settled_flow(ours.fair);
     keep_settled_flow(ours.blend);
   }
+  if (!functions.empty()) ours.fill.flow.functions = ours.fair.flow.functions = ours.blend.flow.functions = functions;
   return ours;
 }
 
@@ -656,6 +659,11 @@ void add_options(CLI::App& app, Args& args) {
   app.add_flag("--keep-flow", args.keep_flow,
                "fairsurf's rows as `fairsurf fill|fair|blend --keep-flow`: the settled flow kept over the linear "
                "floor that the held-out rings and the fold and angle checks prefer");
+  app.add_option("--functions,--f", args.functions,
+                 "fairsurf's rows with these energy functions f(H,K) instead of H, one per --functions "
+                 "(as `fairsurf fill|fair|blend --functions`)")
+      ->type_name("F")
+      ->allow_extra_args(false);
 }
 
 }  // namespace
@@ -683,8 +691,9 @@ int main(int argc, char** argv) {
       for (int c : m.centres) std::printf(" %d", c);
       std::printf("\n");
     }
-    const Ours ours = ours_options(args.keep_flow);
+    const Ours ours = ours_options(args.keep_flow, args.functions);
     if (args.keep_flow) std::printf("fairsurf's rows with --keep-flow\n");
+    for (const std::string& f : args.functions) std::printf("fairsurf's rows with --functions %s\n", f.c_str());
     std::vector<std::string> summaries;
     const auto wanted = [&](const char* section) { return args.section == section || args.section == "all"; };
     if (wanted("fill")) summaries.push_back(fill_section(meshes, ours, args.cgal, args.cut));
