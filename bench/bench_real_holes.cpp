@@ -5,7 +5,7 @@
 //
 // Usage: bench_real_holes [--section fill|fair|blend|all] [--mesh NAME | --mesh-file PATH...] [--no-cgal]
 //                         [--quick] [--random N [--seed S]] [--cut ball|blob|slit] [--all-slabs] [--keep-flow]
-//                         [--functions F ...]
+//                         [--functions F ...] [--other-functions F ...]
 //                         [--csv FILE]
 #include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
@@ -55,6 +55,7 @@ struct Args {
   std::uint64_t seed = 1;  // of those draws
   bool keep_flow = false;  // fairsurf's rows as with --keep-flow
   std::vector<std::string> functions;  // fairsurf's rows with these f instead of H (--functions)
+  std::vector<std::string> other_functions;  // and weighing these on the held-out rings (--other-functions)
   std::string cut = "ball";  // fill: the holes' shape round each centre (ball, blob or slit)
 };
 
@@ -71,7 +72,8 @@ struct Ours {
   BlendOptions blend;
 };
 
-Ours ours_options(bool keep_flow, const std::vector<std::string>& functions) {
+Ours ours_options(bool keep_flow, const std::vector<std::string>& functions,
+                  const std::vector<std::string>& other_functions) {
   Ours ours;
   if (keep_flow) {
     keep_settled_flow(ours.fill);
@@ -79,6 +81,7 @@ Ours ours_options(bool keep_flow, const std::vector<std::string>& functions) {
     keep_settled_flow(ours.blend);
   }
   if (!functions.empty()) ours.fill.flow.functions = ours.fair.flow.functions = ours.blend.flow.functions = functions;
+  ours.fill.held_out_other_functions = ours.fair.held_out_other_functions = other_functions;
   return ours;
 }
 
@@ -664,6 +667,11 @@ void add_options(CLI::App& app, Args& args) {
                  "(as `fairsurf fill|fair|blend --functions`)")
       ->type_name("F")
       ->allow_extra_args(false);
+  app.add_option("--other-functions", args.other_functions,
+                 "fill and fair: also weigh the flow with these energy functions on the held-out rings, one per "
+                 "--other-functions (as `fairsurf fill|fair --other-functions`)")
+      ->type_name("F")
+      ->allow_extra_args(false);
 }
 
 }  // namespace
@@ -691,9 +699,11 @@ int main(int argc, char** argv) {
       for (int c : m.centres) std::printf(" %d", c);
       std::printf("\n");
     }
-    const Ours ours = ours_options(args.keep_flow, args.functions);
+    const Ours ours = ours_options(args.keep_flow, args.functions, args.other_functions);
     if (args.keep_flow) std::printf("fairsurf's rows with --keep-flow\n");
     for (const std::string& f : args.functions) std::printf("fairsurf's rows with --functions %s\n", f.c_str());
+    for (const std::string& f : args.other_functions)
+      std::printf("fairsurf's rows with --other-functions %s\n", f.c_str());
     std::vector<std::string> summaries;
     const auto wanted = [&](const char* section) { return args.section == section || args.section == "all"; };
     if (wanted("fill")) summaries.push_back(fill_section(meshes, ours, args.cgal, args.cut));

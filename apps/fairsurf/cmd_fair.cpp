@@ -20,6 +20,7 @@ struct FairArgs {
   std::string input, output, region_file, region_property;
   std::vector<double> region_sphere;
   std::string start = "harmonic";
+  std::vector<std::string> other_functions;  // weighed on the held-out rings too (empty: off)
   bool keep_flow = false;
   RegionFairingArgs fairing;
 };
@@ -55,6 +56,7 @@ void run_fair(const FairArgs& args) {
       args.start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{};
   apply_region_fairing_args(f, options);
   apply_keep_flow(args.keep_flow, "fair", options);
+  apply_other_functions(args.other_functions, "fair", options);
   Mesh mesh = read_input(args.input);
   drop_shape_properties(mesh, args.input);
   const auto repaired = repair_input(mesh, f.repair, args.input);
@@ -64,6 +66,7 @@ void run_fair(const FairArgs& args) {
                      {{"command", "fair"},
                       {"input", args.input},
                       {"functions", f.functions},
+                      {"other_functions", args.other_functions},
                       {"keep_flow", args.keep_flow},
                       {"repair", repair_json(repaired)}},
                      options.flow.step_kind);
@@ -104,6 +107,7 @@ void setup_fair(CLI::App& app) {
                   "time-stepped flow with tau doubling from 1e-9)")
       ->check(CLI::IsMember({"harmonic", "flat"}));
   add_region_fairing_options(cmd, args->fairing);
+  add_other_functions_option(cmd, args->other_functions);
   add_keep_flow_flag(cmd, args->keep_flow);
   cmd->callback([args] { run_fair(*args); });
 }

@@ -23,6 +23,7 @@ struct FillArgs {
   std::string continuity = "G2", method = "flow";
   SolverArgs solver;
   std::vector<std::string> functions{"H"};
+  std::vector<std::string> other_functions;  // weighed on the held-out rings too (empty: off)
   std::vector<int> holes;
   int max_hole_edges = 0, max_steps = 0;
   bool skip_largest = false, force = false, quiet = false, repair = false, keep_flow = false;
@@ -41,6 +42,7 @@ FillOptions fill_options(const FillArgs& args) {
   o.max_hole_edges = args.max_hole_edges;
   o.skip_largest = args.skip_largest;
   apply_keep_flow(args.keep_flow, "fill", o);
+  apply_other_functions(args.other_functions, "fill", o);
   return o;
 }
 
@@ -198,6 +200,7 @@ void run_fill(const FillArgs& args) {
                        {"method", args.method},
                        {"keep_flow", args.keep_flow},
                        {"functions", args.functions},
+                       {"other_functions", args.other_functions},
                        {"filled", report.filled},
                        {"skipped", report.skipped},
                        {"failed", report.failed},
@@ -256,6 +259,7 @@ void setup_fill(CLI::App& app) {
   cmd->add_option("--continuity", args->continuity,
                   "G2 (default: sixth-order flow, three fixed rings), G1 (Willmore) or G0 (mean curvature)");
   add_functions_option(cmd, args->functions);
+  add_other_functions_option(cmd, args->other_functions);
   cmd->add_option("--holes", args->holes,
                   "Fill only these boundary loops (0-based, comma separated, or one per --holes)")
       ->delimiter(',')

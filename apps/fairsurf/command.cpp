@@ -149,6 +149,14 @@ void add_functions_option(CLI::App* cmd, std::vector<std::string>& functions) {
       ->allow_extra_args(false);
 }
 
+void add_other_functions_option(CLI::App* cmd, std::vector<std::string>& functions) {
+  cmd->add_option("--other-functions", functions,
+                  "Also weigh the flow with these energy functions on the held-out rings, one per "
+                  "--other-functions, and run it with them where they predict the rings better (e.g. "
+                  "--other-functions H --other-functions K/kappa; docs/fill.md)")
+      ->allow_extra_args(false);
+}
+
 void add_solver_options(CLI::App* cmd, SolverArgs& args) {
   cmd->add_option("--solver", args.name,
                   "Linear solver: mumps (default, also 'lu'), umfpack, gmres, or mumps-mpi (MUMPS with its "

@@ -93,6 +93,8 @@ void write_output(Write&& write) {
 /// Adds --functions (alias --f) to `cmd`: the energy functions f_l of the sixth-order flow
 /// (FlowOptions::functions), one per occurrence.
 void add_functions_option(CLI::App* cmd, std::vector<std::string>& functions);
+/// --other-functions F (repeatable): fill's and fair's FairRegionOptions::held_out_other_functions.
+void add_other_functions_option(CLI::App* cmd, std::vector<std::string>& functions);
 
 /// --solver and --mumps-controls, shared by the commands that solve.
 struct SolverArgs {

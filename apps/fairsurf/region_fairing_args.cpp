@@ -1,10 +1,12 @@
 #include "region_fairing_args.h"
-#include "repair_report.h"
+
+#include <fairsurf/energy/energy_function.h>
 
 #include <cstdio>
 
 #include "command.h"
 #include "flow_log.h"
+#include "repair_report.h"
 
 namespace fairsurf::cli {
 
@@ -44,6 +46,18 @@ void add_keep_flow_flag(CLI::App* cmd, bool& keep_flow) {
                 "the surface; the floor still takes a flow that does not settle, crosses the mesh, or (fill, "
                 "fair) folds back (turns the normal across the border by more than a right angle) where the "
                 "floor does not");
+}
+
+void apply_other_functions(const std::vector<std::string>& functions, const std::string& command,
+                           FairRegionOptions& options) {
+  if (functions.empty()) return;
+  if (options.method == FairMethod::harmonic)
+    throw InvalidArgument(command + ": --other-functions weighs another flow; --method harmonic runs no flow");
+  if (options.held_out_rings <= 0)
+    throw InvalidArgument(command + ": --other-functions is weighed on the held-out rings, which only the "
+                                    "harmonic start has (--start harmonic)");
+  parse_energy_functions(functions);  // a bad name fails here, before any work
+  options.held_out_other_functions = functions;
 }
 
 void note_keep_flow(const std::string& what) {

@@ -52,6 +52,12 @@ void apply_keep_flow(bool keep_flow, const std::string& command, Options& option
   keep_settled_flow(options);
 }
 
+/// Sets FairRegionOptions::held_out_other_functions (fill, fair) from --other-functions; throws
+/// InvalidArgument, naming `command`, where the options weigh nothing on held-out rings: the
+/// harmonic method (no flow) or `fair --start flat` (no held-out rings).
+void apply_other_functions(const std::vector<std::string>& functions, const std::string& command,
+                           FairRegionOptions& options);
+
 /// Where the checks that --keep-flow switches off chose the linear solution over the flow
 /// (FairRegionReport::checks_chose_linear): "fairsurf: note: `what`; --keep-flow keeps ..." on
 /// standard error, so that the flag is found where it would change the result.

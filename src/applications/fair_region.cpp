@@ -207,7 +207,32 @@ enum class HeldOutChoice { flow, two_ring_flow, linear, refined_linear };
 struct HeldOutVerdict {
   HeldOutChoice choice = HeldOutChoice::flow;
   bool flow_from_refined = false;
+  bool other_functions = false;  // the flow runs with FairRegionOptions::held_out_other_functions
 };
+
+// "{H, K/kappa}": energy functions as the notes name them.
+std::string function_list(const std::vector<std::string>& functions) {
+  std::string text;
+  for (const std::string& f : functions) text += (text.empty() ? "" : ", ") + f;
+  return "{" + text + "}";
+}
+
+// Where the flow with FairRegionOptions::held_out_other_functions re-predicts the held-out rings
+// better than the flow with its own functions (each on its better boundary fits; false where the
+// other was not weighed): the note that says so, prefixed to `note`.
+bool other_functions_win(const fair_detail::HeldOutErrors& errors, const FairRegionOptions& options,
+                         std::string& note) {
+  const double own = std::min(errors.flow, std::isnan(errors.two_ring_flow) ? errors.flow : errors.two_ring_flow);
+  const double other =
+      std::min(errors.other_flow, std::isnan(errors.other_two_ring_flow) ? errors.other_flow : errors.other_two_ring_flow);
+  if (!(other < own)) return false;
+  char text[240];
+  std::snprintf(text, sizeof text, "with f = %s the flow re-predicts the %d rings around the region better (%.3g against %.3g mean edges off the input with f = %s)",
+                function_list(options.held_out_other_functions).c_str(), options.held_out_rings, other, own,
+                function_list(options.flow.functions).c_str());
+  note = note.empty() ? std::string(text) : std::string(text) + "; " + note;
+  return true;
+}
 
 // FairRegionOptions::held_out_rings: whichever of the flow as given, the flow with its boundary data
 // fitted over 2-rings (held_out_two_ring_fits) and the linear ∆^k solution re-predicts the held-out
@@ -283,8 +308,14 @@ HeldOutVerdict choose_by_held_out(const Submesh& sub, const Topology& local, con
     return {HeldOutChoice::refined_linear};
   }
   if (linear_method) return {HeldOutChoice::linear};
-  const bool two_ring = errors.two_ring_flow < errors.flow;  // false for NaN (not weighed)
-  const double best_flow = two_ring ? errors.two_ring_flow : errors.flow;
+  report.held_out_other_flow_error = errors.other_flow;
+  report.held_out_other_two_ring_flow_error = errors.other_two_ring_flow;
+  std::string other_note;
+  const bool other = other_functions_win(errors, options, other_note);
+  const double flow_error = other ? errors.other_flow : errors.flow;
+  const double two_ring_error = other ? errors.other_two_ring_flow : errors.two_ring_flow;
+  const bool two_ring = two_ring_error < flow_error;  // false for NaN (not weighed)
+  const double best_flow = two_ring ? two_ring_error : flow_error;
   if (floor_may_win && errors.linear * options.held_out_margin < best_flow) {
     report.flow.well_posedness = errors.flow_well_posedness;  // the flow that was weighed, not run here
     std::snprintf(text, sizeof text,
@@ -295,16 +326,17 @@ HeldOutVerdict choose_by_held_out(const Submesh& sub, const Topology& local, con
     return {HeldOutChoice::linear};
   }
   if (!two_ring) {
-    report.note = rough;
-    return {HeldOutChoice::flow, from_refined};
+    report.note = rough.empty() ? other_note : other_note.empty() ? rough : rough + "; " + other_note;
+    return {HeldOutChoice::flow, from_refined, other};
   }
   std::snprintf(text, sizeof text,
                 "boundary data fitted over 2-rings: with them the %s flow re-predicts the %d rings around the "
                 "region better (%.3g against %.3g mean edges off the input with 1-ring fits, %.3g for the "
                 "linear ∆%d solution)",
-                flow_name, options.held_out_rings, errors.two_ring_flow, errors.flow, errors.linear, order);
-  report.note = rough.empty() ? std::string(text) : rough + "; " + text;
-  return {HeldOutChoice::two_ring_flow, from_refined};
+                flow_name, options.held_out_rings, two_ring_error, flow_error, errors.linear, order);
+  const std::string chosen = other_note.empty() ? std::string(text) : other_note + "; " + text;
+  report.note = rough.empty() ? chosen : rough + "; " + chosen;
+  return {HeldOutChoice::two_ring_flow, from_refined, other};
 }
 
 // Whether the neighbourhood extract_neighbourhood would cut around `free_vertices` is all of `mesh`
@@ -418,7 +450,9 @@ void fair_submesh(Submesh& sub, const Topology& local, const Region& region, con
   }
   FairRegionOptions flow_options = options;
   if (choice == HeldOutChoice::two_ring_flow) flow_options.flow.two_ring_boundary_fits = true;
+  if (verdict.other_functions) flow_options.flow.functions = options.held_out_other_functions;
   report.two_ring_boundary_fits = flow_options.flow.two_ring_boundary_fits;
+  report.other_functions = verdict.other_functions;
   const bool from_refined = verdict.flow_from_refined && solve_from_refined();
   if (!from_refined && solved_start) {
     report.harmonic = *solved_start;

@@ -164,6 +164,15 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
     two_ring.flow.two_ring_boundary_fits = true;
     errors.two_ring_flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, two_ring, start);
   }
+  if (!fairing.held_out_other_functions.empty()) {
+    FairRegionOptions other = flow;
+    other.flow.functions = fairing.held_out_other_functions;
+    errors.other_flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, other, start);
+    if (weigh_two_ring) {
+      other.flow.two_ring_boundary_fits = true;
+      errors.other_two_ring_flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, other, start);
+    }
+  }
   return errors;
 }
 

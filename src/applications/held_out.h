@@ -43,6 +43,10 @@ struct HeldOutErrors {
   /// One ∆^k solve from other positions of the free vertices (fill: the patch before its membrane);
   /// NaN when none were given.
   double refined_linear = std::numeric_limits<double>::quiet_NaN();
+  /// FairRegionOptions::held_out_other_functions: the flow with those functions, on 1-ring and
+  /// 2-ring fits (as two_ring_flow); NaN when not weighed.
+  double other_flow = std::numeric_limits<double>::quiet_NaN();
+  double other_two_ring_flow = std::numeric_limits<double>::quiet_NaN();
   /// Of the flow's trial on the enlarged region (its report's, or its error's when the flow threw).
   WellPosedness flow_well_posedness;
 

@@ -131,6 +131,40 @@ TEST_F(CliFair, RegionErrorsHaveClearMessagesAndExitCodes) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// --other-functions: on a region of data/torus.obj the held-out rings choose the flow with the
+// Gaussian curvature term, and the line and the log say so; without held-out rings (--start flat)
+// or without a flow (fill --method harmonic) the flag is refused before any work.
+TEST_F(CliFair, OtherFunctionsAreWeighedOnTheHeldOutRingsAndRefusedWhereThereAreNone) {
+  const std::string mesh = test::data_path("torus.obj");
+  const std::string out = path("out.ply"), log = path("log.json");
+  const std::string region = " --region-sphere 1,0,0,0.45";
+  CliRun r = run_cli("fair '" + mesh + "' -o '" + out + "'" + region +
+                     " --other-functions H --other-functions K/kappa --log '" + log + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find(" free vertices, G2 (sixth-order flow"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("with f = {H, K/kappa} the flow re-predicts the 2 rings around the region better"),
+            std::string::npos)
+      << r.out;
+  std::ifstream in(log);
+  const nlohmann::json json = nlohmann::json::parse(in);
+  EXPECT_EQ(json.at("other_functions"), nlohmann::json({"H", "K/kappa"})) << json.dump();
+
+  r = run_cli("fair '" + mesh + "' -o '" + path("flat.ply") + "'" + region + " --start flat --other-functions K/kappa");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("fair: --other-functions is weighed on the held-out rings, which only the harmonic start "
+                       "has (--start harmonic)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(path("flat.ply")));
+  r = run_cli("fill '" + test::data_path("stanford_bunny_zipper.obj") + "' -o '" + path("linear.ply") +
+              "' --method harmonic --other-functions K/kappa");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("fill: --other-functions weighs another flow; --method harmonic runs no flow"),
+            std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(path("linear.ply")));
+}
+
 TEST_F(CliFair, BlendJoinsTwoMeshFilesAndReportsBothBorders) {
   const Scene s = make_scene("fig4", {0.2});
   // The two caps as separate files: the second is appended to the first.

@@ -208,6 +208,31 @@ TEST(FairRegionReal, TheGaussianCurvatureTermFairsATorusRegionCloserThanTheLinea
   EXPECT_LT(error, 0.3 * linear_error);
 }
 
+// FairRegionOptions::held_out_other_functions: with f = H the held-out rings prefer ∆³ on this torus
+// region; weighing {H, K/kappa} too, they choose that flow, which runs and is delivered.
+TEST(FairRegionReal, TheHeldOutRingsChooseTheOtherFunctionsWhereTheyPredictTheRingsBetter) {
+  const Mesh torus = read_mesh(test::data_path("torus.obj"));
+  const double h = test::mean_edge_length(torus);
+  const std::vector<int> region = test::ball_vertices(torus, torus.V.row(2257).transpose(), 8 * h);
+  Mesh alone = torus;
+  const FairRegionReport own = fair_region(alone, region, FairRegionOptions::harmonic_started());
+  EXPECT_TRUE(own.linear) << own.note;
+  EXPECT_TRUE(std::isnan(own.held_out_other_flow_error));  // off by default
+  FairRegionOptions options = FairRegionOptions::harmonic_started();
+  options.held_out_other_functions = {"H", "K/kappa"};
+  Mesh faired = torus;
+  const FairRegionReport report = fair_region(faired, region, options);
+  std::printf("[fair_region] torus 8h ball, held-out errors: f = H %.3g, {H, K/kappa} %.3g, ∆3 %.3g; %s\n",
+              report.held_out_flow_error, report.held_out_other_flow_error, report.held_out_linear_error,
+              report.note.c_str());
+  EXPECT_TRUE(report.other_functions);
+  EXPECT_FALSE(report.linear) << report.note;
+  EXPECT_LT(std::min(report.held_out_other_flow_error, report.held_out_other_two_ring_flow_error),
+            report.held_out_linear_error);
+  EXPECT_NE(report.note.find("with f = {H, K/kappa} the flow re-predicts"), std::string::npos) << report.note;
+  EXPECT_LT(mean_torus_distance(faired.V, region), 0.3 * mean_torus_distance(alone.V, region));
+}
+
 TEST(FairRegion, FallsBackToTheContinuityTheRingsSupport) {
   Mesh m = test::regular_grid(12, 12, 0.1);
   std::vector<int> free;

@@ -69,6 +69,13 @@ struct FairRegionOptions {
   /// average out the noise the flow would otherwise carry into the region (docs/fill.md, "Boundary
   /// data over two rings"). Costs one more fairing of the enlarged region.
   bool held_out_two_ring_fits = false;
+  /// With held_out_rings: also weigh the flow with these energy functions instead of
+  /// flow.functions (on 2-ring boundary fits too, where held_out_two_ring_fits), and run the flow
+  /// with them where they re-predict the held-out rings best. {"H", "K/kappa"} adds the Gaussian
+  /// curvature term, which pays on clean tori and machined parts and costs on noisy organic ones;
+  /// the held-out rings choose per region (docs/fill.md, "Gaussian curvature in the energy"). Costs
+  /// one more fairing of the enlarged region (two with the 2-ring fits). Empty: off.
+  std::vector<std::string> held_out_other_functions;
   /// With held_out_rings: the linear solution is delivered only where its held-out error times this
   /// stays below the flow's (the better of the two flows'). 1 (here, and for `fairsurf fair`): the
   /// plain comparison. FillOptions uses 1.05: within a few percent the held-out rings cannot tell a
@@ -209,6 +216,12 @@ struct FairRegionReport {
   bool crossing_fallback = false;
   /// The flow ran with FlowOptions::two_ring_boundary_fits (given, or chosen by the held-out rings).
   bool two_ring_boundary_fits = false;
+  /// held_out_other_functions: the errors of the flow with those functions, on 1-ring and 2-ring
+  /// boundary fits (as held_out_flow_error), and whether the held-out rings chose them: the flow
+  /// then ran with them.
+  double held_out_other_flow_error = std::numeric_limits<double>::quiet_NaN();
+  double held_out_other_two_ring_flow_error = std::numeric_limits<double>::quiet_NaN();
+  bool other_functions = false;
   /// Where a flow was delivered over the linear floor (linear_floor on, `linear` false), the floor:
   /// the positions of the free vertices at the linear ∆^k solution the flow started from, #free by
   /// 3, one row per free vertex in ascending vertex order. Empty otherwise, and for a region in
