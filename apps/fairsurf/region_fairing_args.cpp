@@ -91,6 +91,9 @@ nlohmann::json to_json(const FairRegionReport& r) {
     j["held_out_linear_error"] = r.held_out_linear_error;
     j["held_out_two_ring_flow_error"] = r.held_out_two_ring_flow_error;
     j["two_ring_boundary_fits"] = r.two_ring_boundary_fits;
+    j["held_out_other_flow_error"] = r.held_out_other_flow_error;  // --other-functions; else null
+    j["held_out_other_two_ring_flow_error"] = r.held_out_other_two_ring_flow_error;
+    j["other_functions_chosen"] = r.other_functions;
     j["checks_chose_linear"] = r.checks_chose_linear;
     j["flow_folded_back"] = r.flow_folded_back;
   }

@@ -148,6 +148,8 @@ TEST_F(CliFair, OtherFunctionsAreWeighedOnTheHeldOutRingsAndRefusedWhereThereAre
   std::ifstream in(log);
   const nlohmann::json json = nlohmann::json::parse(in);
   EXPECT_EQ(json.at("other_functions"), nlohmann::json({"H", "K/kappa"})) << json.dump();
+  EXPECT_EQ(json.at("other_functions_chosen"), true) << json.dump();
+  EXPECT_TRUE(json.at("held_out_other_flow_error").is_number()) << json.dump();
 
   r = run_cli("fair '" + mesh + "' -o '" + path("flat.ply") + "'" + region + " --start flat --other-functions K/kappa");
   EXPECT_EQ(r.exit_code, 1) << r.out;
