@@ -217,20 +217,26 @@ std::string function_list(const std::vector<std::string>& functions) {
   return "{" + text + "}";
 }
 
-// Where the flow with FairRegionOptions::held_out_other_functions re-predicts the held-out rings
-// better than the flow with its own functions (each on its better boundary fits; false where the
-// other was not weighed): the note that says so, prefixed to `note`.
+// The better of a flow's held-out errors on 1-ring and on 2-ring boundary fits (NaN: not weighed).
+double better_fits(double one_ring, double two_ring) {
+  return std::isnan(two_ring) ? one_ring : std::min(one_ring, two_ring);
+}
+
+// Whether the flow with FairRegionOptions::held_out_other_functions re-predicts the held-out rings
+// better than the flow with its own functions, each on its better boundary fits (false where the
+// other was not weighed); `note` then says so.
 bool other_functions_win(const fair_detail::HeldOutErrors& errors, const FairRegionOptions& options,
                          std::string& note) {
-  const double own = std::min(errors.flow, std::isnan(errors.two_ring_flow) ? errors.flow : errors.two_ring_flow);
-  const double other =
-      std::min(errors.other_flow, std::isnan(errors.other_two_ring_flow) ? errors.other_flow : errors.other_two_ring_flow);
+  const double own = better_fits(errors.flow, errors.two_ring_flow);
+  const double other = better_fits(errors.other_flow, errors.other_two_ring_flow);
   if (!(other < own)) return false;
   char text[240];
-  std::snprintf(text, sizeof text, "with f = %s the flow re-predicts the %d rings around the region better (%.3g against %.3g mean edges off the input with f = %s)",
+  std::snprintf(text, sizeof text,
+                "with f = %s the flow re-predicts the %d rings around the region better (%.3g against %.3g mean "
+                "edges off the input with f = %s)",
                 function_list(options.held_out_other_functions).c_str(), options.held_out_rings, other, own,
                 function_list(options.flow.functions).c_str());
-  note = note.empty() ? std::string(text) : std::string(text) + "; " + note;
+  note = text;
   return true;
 }
 
