@@ -10,6 +10,7 @@
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/applications/fill.h>
 #include <fairsurf/applications/smooth.h>
+#include <fairsurf/energy/energy_function.h>
 #include <fairsurf/mesh/errors.h>
 
 #include <pybind11/stl.h>
@@ -117,10 +118,23 @@ void apply_keep_flow(bool keep_flow, const char* call, Options& o) {
   keep_settled_flow(o);
 }
 
+// As the CLI's --other-functions (apply_other_functions): weighed on the held-out rings, so refused
+// where there are none (start 'flat') or no flow (method 'harmonic').
+void apply_other_functions(const std::optional<Functions>& functions, const char* call, FairRegionOptions& o) {
+  if (!functions || functions->empty()) return;
+  if (o.method == FairMethod::harmonic)
+    throw InvalidArgument(std::string(call) + ": other_functions weighs another flow; method 'harmonic' runs no flow");
+  if (o.held_out_rings <= 0)
+    throw InvalidArgument(std::string(call) +
+                          ": other_functions is weighed on the held-out rings, which only start 'harmonic' has");
+  parse_energy_functions(*functions);
+  o.held_out_other_functions = *functions;
+}
+
 py::tuple fill_binding(const py::handle& V, const py::handle& F, const std::string& continuity,
                        const std::optional<py::object>& holes, const Functions& functions, const std::string& method,
                        int max_hole_edges, bool skip_largest, std::optional<int> max_steps, bool keep_flow,
-                       py::object callback) {
+                       const std::optional<Functions>& other_functions, py::object callback) {
   Mesh mesh = to_mesh(V, F);
   FillOptions o;
   o.continuity = parse_continuity(continuity);
@@ -131,6 +145,7 @@ py::tuple fill_binding(const py::handle& V, const py::handle& F, const std::stri
   o.max_hole_edges = max_hole_edges;
   o.skip_largest = skip_largest;
   apply_keep_flow(keep_flow, "fill_holes", o);
+  apply_other_functions(other_functions, "fill_holes", o);
   Progress progress(std::move(callback));
   progress.attach(o.flow);
   FillReport report;
@@ -139,7 +154,8 @@ py::tuple fill_binding(const py::handle& V, const py::handle& F, const std::stri
     report = fill_holes(mesh, o, progress.fill_observer());
   }
   progress.rethrow();
-  py::dict d("continuity"_a = continuity, "method"_a = method, "keep_flow"_a = keep_flow, "functions"_a = functions);
+  py::dict d("continuity"_a = continuity, "method"_a = method, "keep_flow"_a = keep_flow, "functions"_a = functions,
+             "other_functions"_a = o.held_out_other_functions);
   for (const auto item : to_dict(report, progress.fill_steps())) d[item.first] = item.second;
   return py::make_tuple(to_numpy(std::move(mesh.V)), to_numpy(std::move(mesh.F)), d);
 }
@@ -175,7 +191,8 @@ void set_fairing(const FairingArgs& a, FairRegionOptions& o) {
 }
 
 py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handle& region, const FairingArgs& args,
-                       const std::string& start, bool keep_flow, py::object callback) {
+                       const std::string& start, bool keep_flow, const std::optional<Functions>& other_functions,
+                       py::object callback) {
   // 'flat' as the CLI's --start names it; 'input', this keyword's former value, stays as its alias.
   if (start != "harmonic" && start != "flat" && start != "input")
     throw InvalidArgument("fair: start must be 'harmonic' or 'flat' (alias 'input'), got '" + start + "'");
@@ -185,12 +202,14 @@ py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handl
       start == "harmonic" ? FairRegionOptions::harmonic_started() : FairRegionOptions{};
   set_fairing(args, options);
   apply_keep_flow(keep_flow, "fair", options);
+  apply_other_functions(other_functions, "fair", options);
   Progress progress(std::move(callback));
   progress.attach(options.flow);
   const FairRegionReport report =
       keeping_last_state(mesh, [&] { return fair_region(mesh, free, options, progress.flow_observer()); });
   progress.rethrow();
-  py::dict d("functions"_a = args.functions, "keep_flow"_a = keep_flow);
+  py::dict d("functions"_a = args.functions, "other_functions"_a = options.held_out_other_functions,
+             "keep_flow"_a = keep_flow);
   for (const auto item : to_dict(report)) d[item.first] = item.second;
   return py::make_tuple(to_numpy(std::move(mesh.V)), d);
 }
@@ -239,25 +258,26 @@ void register_flow_functions(py::module_& m) {
       [](const py::handle& V, const py::handle& F, const std::string& continuity,
          const std::optional<py::object>& holes, std::optional<Functions> functions, std::optional<Functions> f,
          const std::string& method, int max_hole_edges, bool skip_largest, std::optional<int> max_steps,
-         bool keep_flow, py::object progress) {
+         bool keep_flow, std::optional<Functions> other_functions, py::object progress) {
         return fill_binding(V, F, continuity, holes, functions_kwarg("fill_holes", functions, f), method,
-                            max_hole_edges, skip_largest, max_steps, keep_flow, std::move(progress));
+                            max_hole_edges, skip_largest, max_steps, keep_flow, other_functions, std::move(progress));
       },
       "V"_a, "F"_a, py::kw_only(), "continuity"_a = "G2", "holes"_a = py::none(), "functions"_a = py::none(),
       "f"_a = py::none(), "method"_a = "flow", "max_hole_edges"_a = 0, "skip_largest"_a = false,
-      "max_steps"_a = py::none(), "keep_flow"_a = false, "progress"_a = py::none(),
+      "max_steps"_a = py::none(), "keep_flow"_a = false, "other_functions"_a = py::none(), "progress"_a = py::none(),
       "Fills boundary loops with G2 (G1, G0) boundary data, as `fairsurf fill`; returns (V, F, report).");
   m.def(
       "fair",
       [](const py::handle& V, const py::handle& F, const py::handle& region, std::string continuity,
          std::optional<Functions> functions, std::optional<Functions> f, std::string method,
-         std::optional<int> max_steps, std::string start, bool keep_flow, py::object progress) {
+         std::optional<int> max_steps, std::string start, bool keep_flow, std::optional<Functions> other_functions,
+         py::object progress) {
         return fair_binding(V, F, region, {continuity, functions_kwarg("fair", functions, f), method, max_steps},
-                            start, keep_flow, std::move(progress));
+                            start, keep_flow, other_functions, std::move(progress));
       },
       "V"_a, "F"_a, "region"_a, py::kw_only(), "continuity"_a = "G2", "functions"_a = py::none(),
       "f"_a = py::none(), "method"_a = "flow", "max_steps"_a = py::none(), "start"_a = "harmonic",
-      "keep_flow"_a = false, "progress"_a = py::none(),
+      "keep_flow"_a = false, "other_functions"_a = py::none(), "progress"_a = py::none(),
       "Fairs a region (boolean mask or vertex indices), as `fairsurf fair`; returns (V, report).");
   m.def(
       "blend",

@@ -63,6 +63,9 @@ py::dict to_dict(const FairRegionReport& r) {
     d["held_out_linear_error"] = r.held_out_linear_error;
     d["held_out_two_ring_flow_error"] = r.held_out_two_ring_flow_error;
     d["two_ring_boundary_fits"] = r.two_ring_boundary_fits;
+    d["held_out_other_flow_error"] = r.held_out_other_flow_error;
+    d["held_out_other_two_ring_flow_error"] = r.held_out_other_two_ring_flow_error;
+    d["other_functions_chosen"] = r.other_functions;
     d["checks_chose_linear"] = r.checks_chose_linear;
     d["flow_folded_back"] = r.flow_folded_back;
   }

@@ -75,3 +75,20 @@ def test_keep_flow_is_reported_and_needs_the_flow(hand, call):
     assert report["keep_flow"] is True
     with pytest.raises(fairsurf.InvalidArgument, match="keep_flow keeps the flow's result; method 'harmonic'"):
         getattr(fairsurf, call)(V, F, keep_flow=True, method="harmonic", **extra)
+
+
+def test_other_functions_are_weighed_on_the_held_out_rings(data_dir):
+    # As `fair --other-functions H --other-functions K/kappa`: on a region of data/torus.obj the
+    # held-out rings choose the flow with the Gaussian curvature term (by default they choose ∆³).
+    V, F = fairsurf.read_mesh(data_dir / "torus.obj")
+    region = np.flatnonzero(np.linalg.norm(V - [1.0, 0.0, 0.0], axis=1) < 0.45)
+    _, default = fairsurf.fair(V, F, region)
+    _, chosen = fairsurf.fair(V, F, region, other_functions=["H", "K/kappa"])
+    assert default["other_functions"] == [] and not default["other_functions_chosen"]
+    assert chosen["other_functions"] == ["H", "K/kappa"] and chosen["other_functions_chosen"]
+    assert chosen["held_out_other_flow_error"] < chosen["held_out_flow_error"]
+    assert "with f = {H, K/kappa} the flow re-predicts" in chosen["note"]
+    with pytest.raises(fairsurf.InvalidArgument, match="only start 'harmonic' has"):
+        fairsurf.fair(V, F, region, start="flat", other_functions=["K/kappa"])
+    with pytest.raises(fairsurf.InvalidArgument, match="method 'harmonic' runs no flow"):
+        fairsurf.fill_holes(V, F, method="harmonic", other_functions=["K/kappa"])
