@@ -157,21 +157,19 @@ HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int ring
   // harmonic start, from the input).
   const LinearTrial& from = flows_from_refined && refined_linear.ok ? refined_linear : linear;
   const LinearTrial* start = from.ok && flow.harmonic_start_iterations > 0 ? &from : nullptr;
-  errors.flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, flow, start,
-                                    &errors.flow_well_posedness);
-  if (weigh_two_ring) {
-    FairRegionOptions two_ring = flow;
-    two_ring.flow.two_ring_boundary_fits = true;
-    errors.two_ring_flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, two_ring, start);
-  }
+  // One flow's trials: on its 1-ring boundary fits and, where weighed, on 2-ring fits.
+  const auto weigh_flow = [&](FairRegionOptions trial, double& one_ring, double& two_ring,
+                              WellPosedness* well_posedness) {
+    one_ring = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, trial, start, well_posedness);
+    if (!weigh_two_ring) return;
+    trial.flow.two_ring_boundary_fits = true;
+    two_ring = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, trial, start);
+  };
+  weigh_flow(flow, errors.flow, errors.two_ring_flow, &errors.flow_well_posedness);
   if (!fairing.held_out_other_functions.empty()) {
     FairRegionOptions other = flow;
     other.flow.functions = fairing.held_out_other_functions;
-    errors.other_flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, other, start);
-    if (weigh_two_ring) {
-      other.flow.two_ring_boundary_fits = true;
-      errors.other_two_ring_flow = flow_held_out_error(sub.mesh, topo, free, held_out, normal, edge, other, start);
-    }
+    weigh_flow(other, errors.other_flow, errors.other_two_ring_flow, nullptr);
   }
   return errors;
 }
