@@ -98,14 +98,14 @@ void flag_fold(Row& row);
 void set_ratios(Row& row);
 void add_note(Row& row, const std::string& note);
 /// Appends one hole's (or region's) held-out decision to row.choice and row.held_out (its four
-/// held-out errors and the roughness around it): `report` is a HoleReport or a FairRegionReport,
-/// which name these fields alike.
+/// held-out errors, the roughness around it, and the other functions' two errors): `report` is a
+/// HoleReport or a FairRegionReport, which name these fields alike.
 template <class Report>
 void add_choice(Row& row, const Report& report) {
   const char* choice = report.refined_start ? "refined"
                        : report.linear      ? "linear"
-                       : report.two_ring_boundary_fits ? "2-ring flow"
-                                                       : "flow";
+                       : report.two_ring_boundary_fits ? (report.other_functions ? "other 2-ring flow" : "2-ring flow")
+                                                       : (report.other_functions ? "other flow" : "flow");
   if (!row.choice.empty()) {
     row.choice.push_back(',');
     row.held_out.push_back(',');
@@ -116,6 +116,8 @@ void add_choice(Row& row, const Report& report) {
     row.held_out.append(number(error)).push_back('/');
   row.held_out.append(number(report.held_out_refined_linear_error)).push_back('/');
   row.held_out.append(number(report.held_out_roughness));
+  for (const double error : {report.held_out_other_flow_error, report.held_out_other_two_ring_flow_error})
+    row.held_out.append("/").append(number(error));
 }
 
 /// CGAL's border angle in degrees, starred when it folds by the same rule.

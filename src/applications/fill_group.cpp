@@ -116,12 +116,15 @@ void report_fairing(const FairRegionReport& fairing, bool flowed, HoleReport& r)
   r.held_out_flow_error = fairing.held_out_flow_error;
   r.held_out_linear_error = fairing.held_out_linear_error;
   r.held_out_two_ring_flow_error = fairing.held_out_two_ring_flow_error;
+  r.held_out_other_flow_error = fairing.held_out_other_flow_error;
+  r.held_out_other_two_ring_flow_error = fairing.held_out_other_two_ring_flow_error;
   r.held_out_refined_linear_error = fairing.held_out_refined_linear_error;
   r.held_out_roughness = fairing.held_out_roughness;
   r.refined_start = fairing.refined_start;
   r.checks_chose_linear = fairing.checks_chose_linear;
   r.flow_folded_back = fairing.flow_folded_back;
   r.two_ring_boundary_fits = flowed && fairing.two_ring_boundary_fits;
+  r.other_functions = fairing.other_functions;
   r.steps = flowed ? fairing.flow.accepted_steps : 0;
   r.harmonic_solves = fairing.harmonic.iterations;
   r.final_max_velocity = flowed ? fairing.flow.final_max_velocity : std::numeric_limits<double>::quiet_NaN();

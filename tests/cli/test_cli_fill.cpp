@@ -134,6 +134,8 @@ TEST_F(CliFill, KeepFlowDeliversTheSettledFlowWhereTheHeldOutRingsChoseTheFloor)
     // The held-out rings still weigh the flow's 1-ring and 2-ring boundary fits.
     EXPECT_TRUE(hole["held_out_flow_error"].is_number()) << hole.dump();
     EXPECT_TRUE(hole["held_out_two_ring_flow_error"].is_number()) << hole.dump();
+    EXPECT_TRUE(hole["held_out_other_flow_error"].is_null()) << hole.dump();  // no --other-functions
+    EXPECT_FALSE(hole["other_functions_chosen"].get<bool>()) << hole.dump();
     EXPECT_LT(hole["continuity"]["max_normal_angle"].get<double>(), std::numbers::pi / 2) << hole.dump();
   }
   const Mesh kept = read_mesh(path("kept.ply"));
@@ -145,6 +147,42 @@ TEST_F(CliFill, KeepFlowDeliversTheSettledFlowWhereTheHeldOutRingsChoseTheFloor)
             std::string::npos)
       << run.out;
   EXPECT_FALSE(fs::exists(path("linear.ply")));
+}
+
+// --other-functions H --other-functions K/kappa on the bunny scan: the held-out rings weigh the
+// flow with the Gaussian curvature term at every hole, and on the largest (hole 4, 80 edges) it
+// re-predicts them better than the flow with f = H and than ∆³, so that hole is G2 with it. Each
+// hole's log gives both flows' errors and which one ran.
+TEST_F(CliFill, OtherFunctionsAreWeighedAtEachHoleAndTheLogSaysWhichFlowRan) {
+  const std::string in = quoted(test::data_path("stanford_bunny_zipper.obj"));
+  const auto run = test::run_cli("fill " + in + " -o " + quoted(path("other.ply")) +
+                                 " --other-functions H --other-functions K/kappa --log " + quoted(path("log.json")));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("(4 C2 (linear), 1 G2; 0 failed"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("with f = {H, K/kappa} the flow re-predicts the 2 rings around the region better"),
+            std::string::npos)
+      << run.out;
+  std::ifstream log_file(path("log.json"));
+  const auto log = nlohmann::json::parse(log_file);
+  EXPECT_EQ(log["other_functions"], nlohmann::json({"H", "K/kappa"}));
+  ASSERT_EQ(log["holes"].size(), 5u);
+  for (const auto& hole : log["holes"]) {
+    ASSERT_TRUE(hole["held_out_other_flow_error"].is_number()) << hole.dump();
+    EXPECT_TRUE(hole["held_out_other_two_ring_flow_error"].is_number()) << hole.dump();
+  }
+  const auto& chosen = log["holes"][4];
+  EXPECT_EQ(chosen["delivered"], "G2") << chosen.dump();
+  EXPECT_TRUE(chosen["other_functions_chosen"].get<bool>()) << chosen.dump();
+  const double other = std::min(chosen["held_out_other_flow_error"].get<double>(),
+                                chosen["held_out_other_two_ring_flow_error"].get<double>());
+  EXPECT_LT(other, chosen["held_out_flow_error"].get<double>()) << chosen.dump();
+  EXPECT_LT(other, chosen["held_out_two_ring_flow_error"].get<double>()) << chosen.dump();
+  EXPECT_LT(other, chosen["held_out_linear_error"].get<double>()) << chosen.dump();
+  for (int i = 0; i < 4; ++i) {
+    const auto& hole = log["holes"][i];
+    EXPECT_EQ(hole["delivered"], "C2 (linear)") << hole.dump();
+    EXPECT_FALSE(hole["other_functions_chosen"].get<bool>()) << hole.dump();
+  }
 }
 
 TEST_F(CliFill, SomeHolesFailingExitsFourAndKeepsTheFilledOnes) {

@@ -88,6 +88,13 @@ def test_other_functions_are_weighed_on_the_held_out_rings(data_dir):
     assert chosen["other_functions"] == ["H", "K/kappa"] and chosen["other_functions_chosen"]
     assert chosen["held_out_other_flow_error"] < chosen["held_out_flow_error"]
     assert "with f = {H, K/kappa} the flow re-predicts" in chosen["note"]
+    # fill_holes: on the bunny scan's largest hole (hole 4) the flow with them is delivered, G2.
+    Vb, Fb = fairsurf.read_mesh(data_dir / "stanford_bunny_zipper.obj")
+    _, _, filled = fairsurf.fill_holes(Vb, Fb, other_functions=["H", "K/kappa"])
+    hole = filled["holes"][4]
+    assert hole["delivered"] == "G2" and hole["other_functions_chosen"]
+    assert hole["held_out_other_flow_error"] < hole["held_out_flow_error"]
+    assert not any(h["other_functions_chosen"] for h in filled["holes"][:4])
     with pytest.raises(fairsurf.InvalidArgument, match="only start 'harmonic' has"):
         fairsurf.fair(V, F, region, start="flat", other_functions=["K/kappa"])
     with pytest.raises(fairsurf.InvalidArgument, match="method 'harmonic' runs no flow"):

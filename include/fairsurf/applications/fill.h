@@ -181,6 +181,10 @@ struct HoleReport {
   double held_out_linear_error = std::numeric_limits<double>::quiet_NaN();
   /// FairRegionOptions::held_out_two_ring_fits: the same after the flow on 2-ring boundary fits.
   double held_out_two_ring_flow_error = std::numeric_limits<double>::quiet_NaN();
+  /// FairRegionOptions::held_out_other_functions: the same after the flow with those functions, on
+  /// 1-ring and 2-ring boundary fits (FairRegionReport's).
+  double held_out_other_flow_error = std::numeric_limits<double>::quiet_NaN();
+  double held_out_other_two_ring_flow_error = std::numeric_limits<double>::quiet_NaN();
   /// Of one ∆^k solve from the patch before its membrane (FairRegionReport's).
   double held_out_refined_linear_error = std::numeric_limits<double>::quiet_NaN();
   /// FairRegionOptions::held_out_max_roughness: the roughness around the hole it was weighed against
@@ -190,6 +194,10 @@ struct HoleReport {
   bool refined_start = false;
   /// The delivered flow read its boundary data from 2-ring fits (FlowOptions::two_ring_boundary_fits).
   bool two_ring_boundary_fits = false;
+  /// The held-out rings chose the flow with FairRegionOptions::held_out_other_functions, and it ran
+  /// with them (FairRegionReport::other_functions; the floor may still have been kept, as `linear`
+  /// and the note say).
+  bool other_functions = false;
   /// The linear solution was delivered over the flow by the held-out rings or the fold check, the
   /// checks keep_settled_flow switches off (FairRegionReport's).
   bool checks_chose_linear = false;
