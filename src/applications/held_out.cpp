@@ -2,6 +2,7 @@
 
 #include "flow/flow_failure.h"
 
+#include <fairsurf/energy/energy_function.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/topology.h>
 #include <fairsurf/mesh/validate.h>
@@ -104,6 +105,13 @@ void require_valid_held_out_options(const FairRegionOptions& options, const char
   if (!(options.held_out_max_roughness >= 0))
     throw InvalidArgument(std::string(caller) + ": held_out_max_roughness must be at least 0, not " +
                           std::to_string(options.held_out_max_roughness));
+  if (options.held_out_other_functions.empty()) return;
+  // Here, before any fairing: inside the held-out trials a bad name would read as a failed flow.
+  try {
+    parse_energy_functions(options.held_out_other_functions);
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(std::string(caller) + ": held_out_other_functions: " + e.what());
+  }
 }
 
 HeldOutErrors held_out_errors(const Submesh& sub, const Topology& topo, int rings, const FairRegionOptions& fairing,

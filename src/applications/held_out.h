@@ -55,8 +55,8 @@ struct HeldOutErrors {
   bool refined_start_wins() const { return kRefinedStartMargin * refined_linear < linear; }
 };
 
-/// Throws InvalidArgument, naming `caller`, where held_out_margin is below 1 or
-/// held_out_max_roughness below 0 (either NaN).
+/// Throws InvalidArgument, naming `caller`, where held_out_margin is below 1,
+/// held_out_max_roughness below 0 (either NaN), or a held_out_other_functions entry does not parse.
 void require_valid_held_out_options(const FairRegionOptions& options, const char* caller);
 
 /// Frees the `rings` rings of fixed vertices around the free vertices in a copy of `sub`, fairs that

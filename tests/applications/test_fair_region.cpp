@@ -233,6 +233,24 @@ TEST(FairRegionReal, TheHeldOutRingsChooseTheOtherFunctionsWhereTheyPredictTheRi
   EXPECT_LT(mean_torus_distance(faired.V, region), 0.3 * mean_torus_distance(alone.V, region));
 }
 
+// A misspelt other function is refused before any fairing, not weighed as a failed trial.
+TEST(FairRegion, RefusesOtherFunctionsThatDoNotParse) {
+  Mesh m = test::regular_grid(12, 12, 0.1);
+  const std::vector<int> free{5 * 13 + 5, 5 * 13 + 6, 6 * 13 + 5, 6 * 13 + 6};
+  const Vertices before = m.V;
+  FairRegionOptions options = FairRegionOptions::harmonic_started();
+  options.held_out_other_functions = {"H", "Kx"};
+  try {
+    fair_region(m, free, options);
+    FAIL() << "no throw";
+  } catch (const InvalidArgument& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("fair_region: held_out_other_functions: "), std::string::npos) << message;
+    EXPECT_NE(message.find("'Kx' is neither a built-in function"), std::string::npos) << message;
+  }
+  EXPECT_TRUE(m.V == before);
+}
+
 TEST(FairRegion, FallsBackToTheContinuityTheRingsSupport) {
   Mesh m = test::regular_grid(12, 12, 0.1);
   std::vector<int> free;
