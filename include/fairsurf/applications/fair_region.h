@@ -74,7 +74,8 @@ struct FairRegionOptions {
   /// with them where they re-predict the held-out rings best. {"H", "K/kappa"} adds the Gaussian
   /// curvature term, which pays on clean tori and machined parts and costs on noisy organic ones;
   /// the held-out rings choose per region (docs/fill.md, "Gaussian curvature in the energy"). Costs
-  /// one more fairing of the enlarged region (two with the 2-ring fits). Empty: off.
+  /// one more fairing of the enlarged region (two with the 2-ring fits). Empty: off. An entry that
+  /// does not parse (parse_energy_functions) is refused, InvalidArgument, before any fairing.
   std::vector<std::string> held_out_other_functions;
   /// With held_out_rings: the linear solution is delivered only where its held-out error times this
   /// stays below the flow's (the better of the two flows'). 1 (here, and for `fairsurf fair`): the
