@@ -217,6 +217,11 @@ std::string function_list(const std::vector<std::string>& functions) {
   return "{" + text + "}";
 }
 
+// The parts of a note that are not empty, in order, joined by "; ".
+std::string joined(const std::string& first, const std::string& second) {
+  return first.empty() ? second : second.empty() ? first : first + "; " + second;
+}
+
 // The better of a flow's held-out errors on 1-ring and on 2-ring boundary fits (NaN: not weighed).
 double better_fits(double one_ring, double two_ring) {
   return std::isnan(two_ring) ? one_ring : std::min(one_ring, two_ring);
@@ -332,7 +337,7 @@ HeldOutVerdict choose_by_held_out(const Submesh& sub, const Topology& local, con
     return {HeldOutChoice::linear};
   }
   if (!two_ring) {
-    report.note = rough.empty() ? other_note : other_note.empty() ? rough : rough + "; " + other_note;
+    report.note = joined(rough, other_note);
     return {HeldOutChoice::flow, from_refined, other};
   }
   std::snprintf(text, sizeof text,
@@ -340,8 +345,7 @@ HeldOutVerdict choose_by_held_out(const Submesh& sub, const Topology& local, con
                 "region better (%.3g against %.3g mean edges off the input with 1-ring fits, %.3g for the "
                 "linear ∆%d solution)",
                 flow_name, options.held_out_rings, two_ring_error, flow_error, errors.linear, order);
-  const std::string chosen = other_note.empty() ? std::string(text) : other_note + "; " + text;
-  report.note = rough.empty() ? chosen : rough + "; " + chosen;
+  report.note = joined(rough, joined(other_note, text));
   return {HeldOutChoice::two_ring_flow, from_refined, other};
 }
 
