@@ -1,6 +1,6 @@
 // The sixth-order energy of a region as the G2 fairing watches it, measured on any positions with the
 // region's connectivity: the uncut surface itself, fairsurf's result, the ∆³ baseline's or CGAL's
-// (docs/fill.md, "The surface is not fair at the scale of a hole").
+// (docs/real-holes.md, "The surface is not fair at the scale of a hole").
 #pragma once
 
 #include <fairsurf/mesh/mesh.h>

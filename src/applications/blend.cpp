@@ -434,7 +434,7 @@ FairRegionReport weigh_uncrossed_tube(Mesh& mesh, const Topology& topo, const st
 }
 
 // Where the flow's tube crosses the mesh: the flow once more from the tube, its trial states relaxed
-// tangentially by options.crossing_retry_relaxation (fill's retry, docs/fill.md "A crossing flow,
+// tangentially by options.crossing_retry_relaxation (fill's retry, docs/real-holes.md "A crossing flow,
 // relaxed"), whose result replaces the crossing one in `mesh` and `report` where it settles clear
 // of the mesh. Returns the crossings left.
 std::vector<FaceIntersection> retry_relaxed(Mesh& mesh, const Topology& topo, const std::vector<int>& free,

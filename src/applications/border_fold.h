@@ -26,7 +26,7 @@ inline bool folds_against(double angle, double linear, double ratio) {
 // its ∆^k start): by folds_against both at its worst border vertex and on average along the border.
 // The worst vertex alone is one vertex's one-sided fits, which on a noisy scan's border read the
 // noise: there a flow that does not follow the noisy rings turns more at some vertex than the
-// linear solution held by them, without folding (docs/fill.md, "A fold is a turn along the border").
+// linear solution held by them, without folding (docs/real-holes.md, "A fold is a turn along the border").
 inline bool border_folds_against(const ContinuityMeasure& faired, const ContinuityMeasure& linear, double ratio) {
   return folds_against(faired.max_normal_angle, linear.max_normal_angle, ratio) &&
          folds_against(faired.mean_normal_angle, linear.mean_normal_angle, ratio);

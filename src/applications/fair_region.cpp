@@ -258,7 +258,7 @@ bool other_functions_win(const fair_detail::HeldOutErrors& errors, const FairReg
 // Around a region rougher than held_out_max_roughness, with `refined`, that solve is the linear
 // solution: the linear method's result without weighing, and the flows' start and floor (their
 // trials start there too). On noisy borders it lies closer to the surface than the re-evaluated
-// solution (docs/fill.md, "The refined solve on rough surroundings").
+// solution (docs/real-holes.md, "The refined solve on rough surroundings").
 HeldOutVerdict choose_by_held_out(const Submesh& sub, const Topology& local, const FairRegionOptions& options,
                                   FairRegionReport& report, const Vertices* refined) {
   const bool linear_method = options.method == FairMethod::harmonic;

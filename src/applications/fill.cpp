@@ -127,7 +127,7 @@ std::vector<int> floor_holes(const std::vector<CommittedFlows>& flows, const std
 // floors on a copy of the mesh (where the floor does not cross the mesh itself), and the group is
 // filled again there (`again(mesh)`); that fill replaces `outcome` where it is faired (or, after a
 // failure, fills the group without folding back). Returns which flows it gave their floors ({} where it did not
-// replace `outcome`). (docs/fill.md, "An earlier flow given its floor".)
+// replace `outcome`). (docs/real-holes.md, "An earlier flow given its floor".)
 template <class Again>
 std::vector<std::size_t> fill_again_with_earlier_floors(const Mesh& mesh,
                                                         const std::vector<std::vector<int>>& patch_loops,
@@ -338,11 +338,11 @@ FillOptions::FillOptions() : FairRegionOptions(harmonic_started()) {
   // A patch starts as a membrane, not a surface estimate: its own operator carries the membrane's
   // kink along the border, so ∆^k is re-evaluated until it settles (fair_region.h).
   harmonic_start_iterations = 8;
-  // Within 5% the held-out rings cannot tell a hole's flow and linear fill apart (docs/fill.md,
+  // Within 5% the held-out rings cannot tell a hole's flow and linear fill apart (docs/real-holes.md,
   // "Ties go to the flow"): such a tie goes to the G2 that was asked for.
   held_out_margin = 1.05;
   // On noisy surroundings the held-out rings reward the linear fill for following the noise
-  // (docs/fill.md, "Rough surroundings"): there the re-evaluated ∆³ solution does not win by them.
+  // (docs/real-holes.md, "Rough surroundings"): there the re-evaluated ∆³ solution does not win by them.
   held_out_max_roughness = 0.05;
 }
 

@@ -128,7 +128,7 @@ ChainOutcome run_fallback_chain(const Mesh& mesh, const std::vector<std::vector<
 // the crease. The chain runs again from the refined triangulation, and its fill takes the first
 // one's place where it turns the normal across the border less than a fill that folds back, or, in
 // place of a floor kept for a flow that folded back, where it is the flow's and does not fold back;
-// the note says so (FillOptions::refill_folded_back; docs/fill.md, "A fill that folds back").
+// the note says so (FillOptions::refill_folded_back; docs/real-holes.md, "A fill that folds back").
 // `unfilled`: the group's reports before the first fill.
 void refill_if_folded_back(const Mesh& mesh, const std::vector<std::vector<int>>& loops,
                            const std::vector<int>& group, GroupPatches& patches, const FillOptions& options,
@@ -233,7 +233,7 @@ bool same_triangulations(GroupPatches& a, GroupPatches& b) {
 // out (spot 1294 8h, a blob: 168° from every start, 36.5° within them). A new fill is delivered where
 // it turns the normal across the border by at most half as much (kRetriangulatedAngleRatio): a few
 // degrees less on a folded patch, mostly noise in the border's fits, gave fills farther from the
-// surface as often as closer (docs/fill.md, "Triangulated again", "Triangulated within the Delaunay
+// surface as often as closer (docs/real-holes.md, "Triangulated again", "Triangulated within the Delaunay
 // faces").
 constexpr double kRetriangulatedAngleRatio = 0.5;
 constexpr int kBridgeCutsWeighed = 8;
@@ -337,7 +337,7 @@ void retriangulate_if_folded_back(const Mesh& mesh, const Topology& topo, const 
 // made once more from the faces of each loop's Delaunay tetrahedralization (HoleTriangulationOptions::
 // delaunay_restricted, CGAL's search). Round a thin tongue of the mesh reaching into a hole, the
 // lightest triangulation from every start can cross the mesh where the Delaunay faces do not
-// (bench_real_holes --cut blob --random 10 --seed 2, spot 1828 8h with noise; docs/fill.md,
+// (bench_real_holes --cut blob --random 10 --seed 2, spot 1828 8h with noise; docs/real-holes.md,
 // "Triangulated within the Delaunay faces"). Where a loop passes a pinch twice, to which those faces
 // do not apply, it is made again along the lightest of the cuts between its passes
 // (failure_retriangulations). A fill that folds back is not taken: from those faces a horn tip cut

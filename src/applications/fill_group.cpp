@@ -164,7 +164,7 @@ std::string fair_hole_alone(InitialPatch& patch, const std::vector<int>& free, c
 // whole, and one hole's own rings, which run over its neighbours' linear patches, judge worse. The
 // group's other patches stay as the group left them, so the hole's fixed rings are complete; it
 // keeps the flow where that fairing delivers one at the group's continuity or above, steady and
-// clear of the mesh, and its linear solution otherwise, untouched (docs/fill.md, "Joint holes, one
+// clear of the mesh, and its linear solution otherwise, untouched (docs/real-holes.md, "Joint holes, one
 // by one"). A hole given its flow has that linear solution as its floor, added to `floors`.
 void refair_each_hole(InitialPatch& patch, const std::vector<int>& group, const std::vector<std::vector<int>>& free,
                       const std::vector<std::vector<int>>& faces, const FairRegionOptions& fairing_options,

@@ -1,5 +1,5 @@
 // Private to fair_region: choosing between the flow and its linear floor by how well each
-// re-predicts the input around the free region (FairRegionOptions::held_out_rings; docs/fill.md,
+// re-predicts the input around the free region (FairRegionOptions::held_out_rings; docs/real-holes.md,
 // "Which fairing a hole gets").
 #pragma once
 
@@ -15,14 +15,14 @@ namespace fairsurf::fair_detail {
 /// are then not tried. Between candidates whose truth distances are close the held-out verdict is a
 /// coin toss, and this one is no better on average; where the membrane creases a patch (blub's tail
 /// fin) it wins by 3-4× and lands 3× closer to the surface, while flows from the creased start crawl
-/// at τ ≈ 1e-18 for seconds (docs/fill.md, "The patch before its membrane").
+/// at τ ≈ 1e-18 for seconds (docs/real-holes.md, "The patch before its membrane").
 inline constexpr double kRefinedStartMargin = 2.0;
 
 /// The flows' held-out trials rank the fairings; they need not settle. A trial still descending
 /// after this many accepted steps is weighed where it stands. Half the descents on bench_real_holes
 /// settle within 6 steps and 95% within 33; a few crawl with τ collapsed below 1e-10 of its start,
 /// up to the 200-step limit, most of them already within 17% of their final energy 20 steps into
-/// the crawl (docs/fill.md, "The held-out trials' budget").
+/// the crawl (docs/real-holes.md, "The held-out trials' budget").
 inline constexpr int kHeldOutTrialSteps = 40;
 
 /// Whether the held-out rings weigh the flow on 2-ring boundary fits too: asked for

@@ -185,7 +185,7 @@ TEST(FairRegion, TheLinearBaselineOnARealRegionIsItsOwnCotangentFairing) {
 
 // f = {H, K/kappa} (docs/energies.md): on the torus the flow with the Gaussian curvature term
 // re-predicts the held-out rings better than ∆³ and is delivered, several times closer to the torus,
-// where the flow with f = H alone loses to ∆³ there (docs/fill.md, "Gaussian curvature in the
+// where the flow with f = H alone loses to ∆³ there (docs/real-holes.md, "Gaussian curvature in the
 // energy").
 TEST(FairRegionReal, TheGaussianCurvatureTermFairsATorusRegionCloserThanTheLinearBaseline) {
   const Mesh torus = read_mesh(test::data_path("torus.obj"));

@@ -182,7 +182,7 @@ TEST(FillTorus, G2HoleStaysCloseToTheTorus) {
   }
 }
 
-// Irregular sampling is not what makes G2 lose to ∆³ on real meshes (docs/fill.md, "The surface is
+// Irregular sampling is not what makes G2 lose to ∆³ on real meshes (docs/real-holes.md, "The surface is
 // not fair at the scale of a hole"): on a torus whose grid parameters are jittered by 0.3 spacings,
 // with every vertex still on the torus, a 4h ball hole gets the default G2 fill, an order of
 // magnitude closer to the torus than the linear ∆³ fill of the same hole.

@@ -826,7 +826,7 @@ TEST(RealHoleBite, WhereEveryFairingFromTheMembraneCrossesTheMeshTheRefinedTrian
 // lightest start triangulates the loop alike, and the faces of the loop's Delaunay tetrahedralization
 // give a patch that turns the normal across the border by 64°, G2, clear of the mesh. It lies about
 // as far from the scan as the folded one (1.40 h against 1.33 h): the handle's end cap and its join
-// to the head are gone, and no disk predicts them (docs/fill.md, "Triangulated within the Delaunay
+// to the head are gone, and no disk predicts them (docs/real-holes.md, "Triangulated within the Delaunay
 // faces").
 TEST(RealHoleBite, AFoldedBiteIsTriangulatedAgainWithinTheDelaunayFaces) {
   const HandleBite b = hammer_handle_bite();

@@ -4,9 +4,10 @@ documentation cannot leave a dangling pointer behind:
 
 - every relative Markdown link in README.md and docs/*.md names an existing file and, with #anchor,
   an existing heading of a Markdown file (GitHub's anchors);
-- every section cited as `NAME.md, "Title"` (or `NAME.md "Title"`), in the pages or in a source
-  comment, exists in docs/NAME.md: a heading or a paragraph's bold lead whose title starts with the
-  cited words (comments wrap long titles, so a citation may stop short).
+- every section cited as `NAME.md, "Title"` (or `NAME.md "Title"`, or a list `NAME.md, "A", "B"
+  and "C"`), in the pages or in a source comment, exists in docs/NAME.md: a heading or a
+  paragraph's bold lead whose title starts with the cited words (comments wrap long titles, so a
+  citation may stop short).
 
 Usage: check_references.py [ROOT]. Prints what does not resolve and exits 1 if anything does not."""
 import os
@@ -75,6 +76,7 @@ def main(root):
     link = re.compile(r'\]\(([^)\s]+)\)')
     # The title may run on over a comment's next line ("//", "///", "#" and the indent dropped).
     citation = re.compile(r'\b([A-Za-z_-]+)\.md,?\s+\\?"([^"\\]+)')
+    next_title = re.compile(r'\\?"?(?:,\s*|\s+and\s+|,\s+and\s+)\\?"([^"\\]+)"')
     for path in sources:
         with open(path, encoding='utf-8') as f:
             text = f.read()
@@ -90,10 +92,19 @@ def main(root):
                 elif anchor and full.endswith('.md') and anchor not in page(full).anchors:
                     problems.append(f'{where}: link to a missing heading: {target}')
         joined = re.sub(r'\n\s*(?:///|//|#)?\s*', ' ', text)
-        for name, cited in citation.findall(joined):
-            doc = os.path.join(root, 'docs', name + '.md')
-            if os.path.exists(doc) and not page(doc).has_section(cited):
-                problems.append(f'{where}: cites a section docs/{name}.md does not have: "{squeeze(cited)}"')
+        for match in citation.finditer(joined):
+            doc = os.path.join(root, 'docs', match.group(1) + '.md')
+            if not os.path.exists(doc):
+                continue
+            cited, end = [match.group(2)], match.end()
+            # A list: NAME.md, "A", "B" and "C".
+            while more := next_title.match(joined, end + 1):
+                cited.append(more.group(1))
+                end = more.end() - 1
+            for title in cited:
+                if not page(doc).has_section(title):
+                    problems.append(f'{where}: cites a section docs/{match.group(1)}.md does not have: '
+                                    f'"{squeeze(title)}"')
 
     for problem in problems:
         print(problem)

@@ -66,14 +66,14 @@ struct FairRegionOptions {
   /// With held_out_rings: also weigh the flow with its boundary data fitted over 2-rings
   /// (FlowOptions::two_ring_boundary_fits, unless flow already sets it) and deliver whichever of the
   /// three fairings re-predicts the held-out rings best. On noisy surroundings the 2-ring fits
-  /// average out the noise the flow would otherwise carry into the region (docs/fill.md, "Boundary
+  /// average out the noise the flow would otherwise carry into the region (docs/real-holes.md, "Boundary
   /// data over two rings"). Costs one more fairing of the enlarged region.
   bool held_out_two_ring_fits = false;
   /// With held_out_rings: also weigh the flow with these energy functions instead of
   /// flow.functions (on 2-ring boundary fits too, where held_out_two_ring_fits), and run the flow
   /// with them where they re-predict the held-out rings best. {"H", "K/kappa"} adds the Gaussian
   /// curvature term, which pays on clean tori and machined parts and costs on noisy organic ones;
-  /// the held-out rings choose per region (docs/fill.md, "Gaussian curvature in the energy"). Costs
+  /// the held-out rings choose per region (docs/real-holes.md, "Gaussian curvature in the energy"). Costs
   /// one more fairing of the enlarged region (two with the 2-ring fits). Empty: off. An entry that
   /// does not parse (parse_energy_functions) is refused, InvalidArgument, before any fairing.
   std::vector<std::string> held_out_other_functions;
@@ -81,7 +81,7 @@ struct FairRegionOptions {
   /// stays below the flow's (the better of the two flows'). 1 (here, and for `fairsurf fair`): the
   /// plain comparison. FillOptions uses 1.05: within a few percent the held-out rings cannot tell a
   /// hole's two fills apart, and such a tie goes to the G2 that was asked for; on marked regions it
-  /// does not pay (docs/fill.md, "Ties go to the flow"). At least 1.
+  /// does not pay (docs/real-holes.md, "Ties go to the flow"). At least 1.
   double held_out_margin = 1.0;
   /// With held_out_rings: whether they may choose a linear solution (the ∆^k floor, or fill's solve
   /// from the patch before its membrane). false (keep_settled_flow): they only choose the flow's
@@ -95,33 +95,33 @@ struct FairRegionOptions {
   /// closer to the surface. There, fill's solve from before the membrane is the linear solution
   /// instead: the flow starts from it (its held-out trials too) and falls back to it, and the linear
   /// method delivers it without weighing, since on noisy borders it lies closer to the surface than
-  /// the re-evaluated solution (docs/fill.md, "The refined solve on rough surroundings"). ∞ (here,
+  /// the re-evaluated solution (docs/real-holes.md, "The refined solve on rough surroundings"). ∞ (here,
   /// and for `fairsurf fair`): off;
   /// FillOptions uses 0.05, above the 0.000–0.021 of the clean meshes and scans of data/ and below
-  /// the 0.073–0.084 that 0.1 edges of noise reads on them (docs/fill.md, "Rough surroundings").
+  /// the 0.073–0.084 that 0.1 edges of noise reads on them (docs/real-holes.md, "Rough surroundings").
   double held_out_max_roughness = std::numeric_limits<double>::infinity();
   /// With the linear floor: a flow whose steady state turns the normal across the region's border
   /// (ContinuityMeasure::max_normal_angle) by more than this many times the ∆^k solution it started
   /// from does, and by more than 5 degrees, folds against it: the linear solution is kept, reported
   /// `linear` with the angles in the note. Such a state is not the curvature-continuous surface it
   /// is labelled, and on real holes it lands farther from the surface than the floor more often than
-  /// not (docs/fill.md, "A flow that folds against its start"). Where the surroundings are rough
+  /// not (docs/real-holes.md, "A flow that folds against its start"). Where the surroundings are rough
   /// (above held_out_max_roughness), the largest angle is one border vertex's reading of the noise,
   /// and the flow folds only where it exceeds the ratio on average (mean_normal_angle) too, along
-  /// one loop of the border (docs/fill.md, "A fold is a turn along the border"). Infinity: off.
+  /// one loop of the border (docs/real-holes.md, "A fold is a turn along the border"). Infinity: off.
   double max_border_angle_ratio = std::numeric_limits<double>::infinity();
   /// With the linear floor: a flow whose steady state folds back across the region's border (turns
   /// the normal by more than a right angle) where the ∆^k solution it started from does not is not
   /// delivered either, whatever max_border_angle_ratio says; keep_settled_flow keeps this check. The
   /// linear solution is kept, with both angles in the note, and FairRegionReport::flow_folded_back
-  /// set (fill then tries the refined triangulation: docs/fill.md, "A fill that folds back").
+  /// set (fill then tries the refined triangulation: docs/real-holes.md, "A fill that folds back").
   bool refuse_folding_back = true;
   /// With the linear floor and held_out_two_ring_fits: where the flow the held-out rings chose folds
   /// against its ∆^k start (max_border_angle_ratio, refuse_folding_back) and the floor is kept, the
   /// flow with the other boundary fits (2-ring for 1-ring, 1-ring for 2-ring) runs from the same
   /// start, if its held-out error was below the linear solution's, and is delivered where it
   /// settles without folding. The fold is often the noise of the border read by one of the two fits
-  /// (docs/fill.md, "The other boundary fits after a fold"). false: the floor stays.
+  /// (docs/real-holes.md, "The other boundary fits after a fold"). false: the floor stays.
   bool retry_other_boundary_fits = false;
   /// With the linear floor: where the flow's result crosses the mesh where the given region did
   /// not, the flow runs once more from the same start, each trial that crosses the mesh rejected

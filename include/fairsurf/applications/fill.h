@@ -63,9 +63,9 @@ struct FillOptions : FairRegionOptions {
   /// rejection), and both linear solvers use the minimum-degree ordering (LinearSolverOptions::
   /// ordering), whose analysis is far cheaper than nested dissection's on patch-sized systems.
   /// The linear solution is delivered only where the held-out rings prefer it by more than 5%
-  /// (held_out_margin = 1.05; docs/fill.md, "Ties go to the flow"); the re-evaluated ∆³ solution
+  /// (held_out_margin = 1.05; docs/real-holes.md, "Ties go to the flow"); the re-evaluated ∆³ solution
   /// not at all where the surface around the hole is rough (held_out_max_roughness = 0.05;
-  /// docs/fill.md, "Rough surroundings"): there the flow starts from, and falls back to, one ∆^k
+  /// docs/real-holes.md, "Rough surroundings"): there the flow starts from, and falls back to, one ∆^k
   /// solve from the patch before its membrane, which the linear method delivers.
   FillOptions();
 
@@ -88,13 +88,13 @@ struct FillOptions : FairRegionOptions {
   /// lower continuity's flow runs only when asked for (`continuity`). If all of them fail, the same
   /// again with the fairings started from the refined triangulation instead of its membrane (a
   /// membrane folded against the border hands its fold to every fairing started there), and last
-  /// that triangulation unfaired, C0 (linear) (docs/fill.md, "A loop that bites into a thin part").
+  /// that triangulation unfaired, C0 (linear) (docs/real-holes.md, "A loop that bites into a thin part").
   bool fallback_on_failure = true;
   /// With fallback_on_failure: where the flow's patch crosses the mesh, the flow is tried once more
   /// before the linear fallback, each of its trial states relaxed tangentially by this fraction
   /// (FlowOptions::tangential_relaxation). Such a crossing is mostly a few patch triangles sheared
   /// over where the border has a notch; relaxed, they stay well shaped while the surface they
-  /// carry is the same (docs/fill.md, "A crossing flow, relaxed"). 0: no second try.
+  /// carry is the same (docs/real-holes.md, "A crossing flow, relaxed"). 0: no second try.
   double crossing_retry_relaxation = 0.5;
   /// Where a fill started from the membrane folds back against the surface (folds_back), or its
   /// flow folded back and gave way to the linear floor (HoleReport::flow_folded_back), the same
@@ -102,13 +102,13 @@ struct FillOptions : FairRegionOptions {
   /// against its border, and every fairing from there keeps the crease. That fill is delivered
   /// where it turns the normal across the border less than the fill that folds back, or, in place
   /// of the floor, where it is the flow's and does not fold back; the note gives the angles
-  /// (docs/fill.md, "A fill that folds back"). Needs patch.relax. Where the fill still folds
+  /// (docs/real-holes.md, "A fill that folds back"). Needs patch.relax. Where the fill still folds
   /// back, the group is triangulated again from the lightest of the triangulation's starts
   /// (patch.triangulation.start_margin 0) and filled from there (both chains); that fill is
-  /// delivered where it turns the normal by at most half as much (docs/fill.md, "Triangulated
+  /// delivered where it turns the normal by at most half as much (docs/real-holes.md, "Triangulated
   /// again"). Where it still folds back, once more within the faces of each loop's Delaunay
   /// tetrahedralization (patch.triangulation.delaunay_restricted), under the same rule
-  /// (docs/fill.md, "Triangulated within the Delaunay faces"). With fallback_on_failure, a group
+  /// (docs/real-holes.md, "Triangulated within the Delaunay faces"). With fallback_on_failure, a group
   /// whose fill failed is also filled once more from those faces.
   bool refill_folded_back = true;
   /// With fallback_on_failure: where a group fails, or every fairing of it crosses the mesh and its
@@ -117,7 +117,7 @@ struct FillOptions : FairRegionOptions {
   /// other part's openings), those earlier holes are given the linear ∆^k solution their flow
   /// started from (FairRegionReport::floor_positions), where that does not cross the mesh, and the
   /// group is filled again. That fill is kept where it is faired (after a failure: where it fills
-  /// the group without folding back); the notes of both say so (docs/fill.md, "An earlier flow
+  /// the group without folding back); the notes of both say so (docs/real-holes.md, "An earlier flow
   /// given its floor").
   bool floor_earlier_flows = true;
 };

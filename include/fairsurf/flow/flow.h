@@ -195,7 +195,7 @@ struct FlowOptions {
   /// keep theirs. The boundary data the fixed rings give (tangent planes, curvatures) is then read
   /// at twice the mesh's scale, which averages out noise of the surrounding surface at the scale of
   /// one edge: on bench_real_holes' noisy holes the sixth-order fill comes closer to the surface
-  /// with it, on clean real holes it does not (docs/fill.md, "Boundary data over two rings").
+  /// with it, on clean real holes it does not (docs/real-holes.md, "Boundary data over two rings").
   bool two_ring_boundary_fits = false;
   /// Asked before every trial step (when set): true ends the run with FlowStopReason::interrupted,
   /// V at the last accepted state. Lets a caller stop from the observer (observers cannot return a

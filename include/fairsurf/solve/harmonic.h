@@ -21,7 +21,7 @@ namespace fairsurf {
 /// 2.9° (or blunter than 177.1°) has its three cotangents scaled down together until that corner's
 /// is this. Raw scans have such slivers: 3 corners within 3 rings of a 37-edge hole cut from
 /// data/hammer_rawscan.obj, |cot| up to 92, made ∆³ = L(M⁻¹L)² raise a ridge 0.9 mean edges off the
-/// scan (0.08 with the bound; docs/fill.md, "Sliver triangles"). Faces without such a corner weigh
+/// scan (0.08 with the bound; docs/real-holes.md, "Sliver triangles"). Faces without such a corner weigh
 /// as before.
 inline constexpr double kMaxCotangent = 20.0;
 
