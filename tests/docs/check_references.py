@@ -17,9 +17,10 @@ import unicodedata
 
 
 def anchor_of(title):
-    """GitHub's anchor for a heading: lower case, punctuation dropped, spaces to hyphens."""
+    """GitHub's anchor for a heading: lower case; letters, marks, numbers, connectors (_), spaces and
+    hyphens kept, the rest (punctuation, symbols such as ∆) dropped; spaces to hyphens."""
     kept = ''.join(c for c in title.strip().lower()
-                   if c in ' -_' or unicodedata.category(c)[0] in 'LN')
+                   if c in ' -' or unicodedata.category(c)[0] in 'LMN' or unicodedata.category(c) == 'Pc')
     return kept.replace(' ', '-')
 
 
