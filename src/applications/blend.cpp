@@ -411,6 +411,9 @@ FairRegionReport weigh_uncrossed_tube(Mesh& mesh, const Topology& topo, const st
     if (reason.empty()) return report;
     FairRegionReport kept = keep_linear_tube(mesh, *linear, report, reason);
     kept.checks_chose_linear = true;
+    // The linear tube from the same start may turn nearly as far: blend_loops builds both again from
+    // the Hermite tube (BlendOptions::rebuild_without_membrane).
+    kept.flow_folded_back = detail::turns_back(report.continuity.max_normal_angle);
     return kept;
   }
   // The linear tube crosses the mesh: the flow's is weighed against the first lower one that does
@@ -645,6 +648,14 @@ std::string rebuilt_tube_gain(const BlendReport& report, const BlendReport& othe
                   folded * kDegrees, angle * kDegrees);
     return text;
   }
+  if (report.fair.flow_folded_back) {
+    if (!(angle < folded)) return "";
+    std::snprintf(text, sizeof text,
+                  "the flow's tube from the G0 membrane folds back, and the linear tube kept in its place turns the "
+                  "normal across the loops by %.1f deg; built again from the Hermite tube, which turns it by %.1f deg",
+                  folded * kDegrees, angle * kDegrees);
+    return text;
+  }
   if (!(other.fair.supported > report.fair.supported) || tube_folds_back(other)) return "";
   std::snprintf(text, sizeof text,
                 "from the G0 membrane the tube fell to %s, the first lower linear tube that does not cross the "
@@ -726,7 +737,7 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
     pinched_start = true;  // every tube without the membrane crossed the mesh: none to build again
   }
   if (options.rebuild_without_membrane && report.relaxed && !pinched_start &&
-      (tube_folds_back(report) || report.fair.crossing_fallback))
+      (tube_folds_back(report) || report.fair.flow_folded_back || report.fair.crossing_fallback))
     blend_again_without_membrane(mesh, input, topo, loop_a, loop_b, options, observer, report);
   report.seconds = detail::seconds_since(start);
   return report;

@@ -395,19 +395,22 @@ void expect_lower_linear_tube(const BlendReport& r) {
   EXPECT_LT(r.fair.supported, Continuity::G2);
 }
 
-// A band of width 4h cut across blub (bench_real_holes' blub 517 y): the time-stepped flow diverges,
-// and the energy descent from its last state settles into a tube that passes through itself (49
-// crossings); from the linear ∆³ tube, with the trials that would cross rejected, it settles at a
-// lower energy than from the tube as built, without crossing. That G2 tube turns the normal across
-// the loops by 99.6° where the linear tube turns it by 86.3°: no gain in smoothness there, and it
-// lies a little farther from blub's surface (0.0388 h against 0.0378 h), so the linear tube is
-// delivered, with both reasons in the note.
+// A band of width 4h cut across blub (bench_real_holes' blub 517 y), started from the G0 membrane
+// only: the time-stepped flow diverges, and the energy descent from its last state settles into a
+// tube that passes through itself (49 crossings); from the linear ∆³ tube, with the trials that
+// would cross rejected, it settles at a lower energy than from the tube as built, without crossing.
+// That G2 tube turns the normal across the loops by 99.6° where the linear tube turns it by 86.3°:
+// no gain in smoothness there, and it lies a little farther from blub's surface (0.0388 h against
+// 0.0378 h), so the linear tube is delivered, with both reasons in the note.
 TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
   const Band b = band_across("blub.obj", {0.280928, -0.0196544, 0.897816}, Eigen::Vector3d::UnitY());
   ASSERT_EQ(loop_count(b.cut), 2);
   Mesh m = b.cut;
-  const BlendReport r = blend_loops(m, BlendOptions{});
+  BlendOptions from_membrane;
+  from_membrane.rebuild_without_membrane = false;
+  const BlendReport r = blend_loops(m, from_membrane);
   print("blub band", r);
+  EXPECT_TRUE(r.fair.flow_folded_back);
   EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)");
   EXPECT_NE(r.fair.note.find("the energy descent continued from the linear ∆3 tube"), std::string::npos)
       << r.fair.note;
@@ -422,6 +425,49 @@ TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
   const BlendReport l = blend_loops(linear, linear_options);
   EXPECT_EQ(m.V, linear.V);  // the linear tube itself
   EXPECT_EQ(r.fair.continuity.max_normal_angle, l.fair.continuity.max_normal_angle);
+}
+
+// The same band with the defaults: the linear tube kept in place of the G2 tube that folds back
+// comes from the same membrane and turns the normal across the loops by 86.3°, where the input
+// reads 32°. So the blend runs again from the Hermite tube (rebuild_without_membrane), as where the
+// delivered tube folds back itself: its linear tube turns it by 29.5° and lies 0.028 h from blub,
+// against the membrane's 0.038 h. (Its G2 tube turns it by 33.5°, more than the linear one, so the
+// linear tube is kept there too.)
+TEST(BlendReal, ALinearTubeKeptInPlaceOfAFlowThatFoldsBackIsBuiltAgainFromTheHermiteTube) {
+  const Band b = band_across("blub.obj", {0.280928, -0.0196544, 0.897816}, Eigen::Vector3d::UnitY());
+  ASSERT_EQ(loop_count(b.cut), 2);
+  BlendOptions once;
+  once.rebuild_without_membrane = false;
+  Mesh from_membrane = b.cut;
+  const BlendReport f = blend_loops(from_membrane, once);
+  ASSERT_TRUE(f.relaxed);
+  ASSERT_TRUE(f.fair.flow_folded_back);
+  ASSERT_FALSE(folds_back(f.a) || folds_back(f.b));  // the old rule alone would not build again
+
+  Mesh m = b.cut;
+  const BlendReport r = blend_loops(m, BlendOptions{});
+  print("blub band, built again", r);
+  EXPECT_TRUE(r.rebuilt_without_membrane);
+  EXPECT_FALSE(r.relaxed);
+  EXPECT_EQ(r.fair.note.rfind("the flow's tube from the G0 membrane folds back, and the linear tube kept in its "
+                              "place turns the normal across the loops by 86.3 deg; built again from the Hermite "
+                              "tube, which turns it by ",
+                              0),
+            0u)
+      << r.fair.note;
+  const auto largest = [](const BlendReport& x) {
+    return std::max(x.a.border.max_normal_angle, x.b.border.max_normal_angle);
+  };
+  const auto reference = [](const BlendReport& x) {
+    return std::max(x.a.reference.max_normal_angle, x.b.reference.max_normal_angle);
+  };
+  EXPECT_GT(largest(f), 1.5 * reference(f));  // folded by bench_real_holes' rule
+  EXPECT_LT(largest(r), 1.5 * reference(r));  // not any more
+  expect_band_closed(m, b);
+  const double rebuilt = tube_distance(m, b.cut.num_vertices(), b.uncut, b.h);
+  const double membrane = tube_distance(from_membrane, b.cut.num_vertices(), b.uncut, b.h);
+  std::printf("[blend] blub band: %.4f h from blub built again, %.4f h from the membrane\n", rebuilt, membrane);
+  EXPECT_LT(rebuilt, 0.9 * membrane);
 }
 
 // A band across blub's tail fin (bench_real_holes --all-slabs' blub 1097 z): the G0 membrane lies

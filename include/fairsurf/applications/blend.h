@@ -70,14 +70,16 @@ struct BlendOptions : FairRegionOptions {
   /// hole's patch: a crossing of a few tube triangles sheared over at a notch of a loop (the raw
   /// hammer scan's band, docs/blend.md). 0: no second try.
   double crossing_retry_relaxation = 0.5;
-  /// Where the tube started from the G0 membrane folds back at a loop (folds_back), or fell below
-  /// the requested continuity because every tube above it crossed the mesh (crossing_fallback), the
-  /// blend runs again from the Hermite tube (patch.relax off): between loops cut across a thin part
-  /// the membrane can lie flat against one side and crease the tube at a loop, and every fairing
-  /// from it keeps the crease. That tube is delivered where it turns the normal across the loops
-  /// less (the larger of the two loops' angles), or, in place of a lower continuity, where it
-  /// reaches a higher one and does not fold back; fair.note says which (docs/blend.md, "Built again
-  /// from the Hermite tube").
+  /// Where the tube started from the G0 membrane folds back at a loop (folds_back), or is the linear
+  /// tube kept in place of a flow's tube that turned the normal back (fair.flow_folded_back), or fell
+  /// below the requested continuity because every tube above it crossed the mesh
+  /// (crossing_fallback), the blend runs again from the Hermite tube (patch.relax off): between loops
+  /// cut across a thin part the membrane can lie flat against one side and crease the tube at a
+  /// loop, and every fairing from it keeps the crease. That tube is delivered where it turns the
+  /// normal across the loops less (the larger of the two loops' angles), or, in place of a lower
+  /// continuity, where it reaches a higher one and does not fold back; fair.note says which
+  /// (docs/blend.md, "Built again from the Hermite tube", "A linear tube kept in place of a flow
+  /// that folds back").
   bool rebuild_without_membrane = true;
 };
 

@@ -209,7 +209,8 @@ struct FairRegionReport {
   bool checks_chose_linear = false;
   /// The flow settled but folded back where the linear solution it started from does not, and the
   /// linear solution was kept (FairRegionOptions::refuse_folding_back). For a region in parts, set
-  /// where any part's is.
+  /// where any part's is. Blend: the linear tube was kept by the angle or crease rule in place of a
+  /// flow's tube that turned the normal across the loops by more than a right angle.
   bool flow_folded_back = false;
   /// The fairing first reached crossed the mesh, and the linear solution delivered is the first
   /// that does not, possibly at a lower continuity than the rings support (`supported` is then
