@@ -632,28 +632,24 @@ double largest_loop_angle(const BlendReport& report) {
 bool tube_folds_back(const BlendReport& report) { return folds_back(report.a) || folds_back(report.b); }
 
 // Why the blend from the Hermite tube (`other`) replaces the delivered one from the membrane
-// (`report`), or empty where it does not: where the membrane's tube folds back, the tube that turns
-// the normal across the loops less; where the membrane's fell to a lower linear tube because the
+// (`report`), or empty where it does not: where the membrane's tube folds back, or is the linear
+// tube kept in place of a flow's that did (fair.flow_folded_back), the tube that turns the normal
+// across the loops less; where the membrane's fell to a lower linear tube because the
 // tubes above it crossed the mesh (crossing_fallback), one of a higher continuity that does not fold
 // back.
 std::string rebuilt_tube_gain(const BlendReport& report, const BlendReport& other) {
   constexpr double kDegrees = 180 / std::numbers::pi;
   const double folded = largest_loop_angle(report), angle = largest_loop_angle(other);
   char text[320];
-  if (tube_folds_back(report)) {
+  const bool tube_folded = tube_folds_back(report);
+  if (tube_folded || report.fair.flow_folded_back) {
     if (!(angle < folded)) return "";
     std::snprintf(text, sizeof text,
-                  "the tube from the G0 membrane folds back (it turns the normal across the loops by %.1f deg); "
-                  "built again from the Hermite tube, which turns it by %.1f deg",
-                  folded * kDegrees, angle * kDegrees);
-    return text;
-  }
-  if (report.fair.flow_folded_back) {
-    if (!(angle < folded)) return "";
-    std::snprintf(text, sizeof text,
-                  "the flow's tube from the G0 membrane folds back, and the linear tube kept in its place turns the "
-                  "normal across the loops by %.1f deg; built again from the Hermite tube, which turns it by %.1f deg",
-                  folded * kDegrees, angle * kDegrees);
+                  "the %s from the G0 membrane folds back (%s the normal across the loops by %.1f deg); built again "
+                  "from the Hermite tube, which turns it by %.1f deg",
+                  tube_folded ? "tube" : "flow's tube",
+                  tube_folded ? "it turns" : "the linear tube kept in its place turns", folded * kDegrees,
+                  angle * kDegrees);
     return text;
   }
   if (!(other.fair.supported > report.fair.supported) || tube_folds_back(other)) return "";

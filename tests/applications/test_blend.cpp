@@ -449,8 +449,8 @@ TEST(BlendReal, ALinearTubeKeptInPlaceOfAFlowThatFoldsBackIsBuiltAgainFromTheHer
   print("blub band, built again", r);
   EXPECT_TRUE(r.rebuilt_without_membrane);
   EXPECT_FALSE(r.relaxed);
-  EXPECT_EQ(r.fair.note.rfind("the flow's tube from the G0 membrane folds back, and the linear tube kept in its "
-                              "place turns the normal across the loops by 86.3 deg; built again from the Hermite "
+  EXPECT_EQ(r.fair.note.rfind("the flow's tube from the G0 membrane folds back (the linear tube kept in its "
+                              "place turns the normal across the loops by 86.3 deg); built again from the Hermite "
                               "tube, which turns it by ",
                               0),
             0u)
