@@ -576,30 +576,35 @@ std::string crossing_text(const std::vector<FaceIntersection>& crossings) {
          detail::crossing_count(crossings);
 }
 
-// The crossings of `faces` on (V, F) that the given region did not have: the faces that crossed in
-// the given mesh (`given_crossed`, as query or as the face crossed; empty: none did) take no part,
-// so a region that already crosses itself, as a noisy scan's may, is held to no more than that.
-// At most kCrossingsSought.
-std::vector<FaceIntersection> new_crossings(const Vertices& V, const Faces& F, const std::vector<int>& faces,
-                                            const std::vector<char>& given_crossed) {
-  if (given_crossed.empty()) return find_face_intersections(V, F, faces, detail::kCrossingsSought);
-  std::vector<int> checked;
-  for (int f : faces)
-    if (!given_crossed[f]) checked.push_back(f);
-  std::vector<FaceIntersection> found;
-  for (const FaceIntersection& c : find_face_intersections(V, F, checked, 0))
-    if (!given_crossed[c.other_face] && found.size() < static_cast<std::size_t>(detail::kCrossingsSought))
-      found.push_back(c);
-  return found;
+// The crossings the given region had (find_face_intersections of its faces): the faces in them,
+// per face of the mesh (empty where there were none), and how many.
+struct GivenCrossings {
+  std::vector<char> faces;
+  std::size_t count = 0;
+};
+
+GivenCrossings given_crossings(const Mesh& mesh, const std::vector<int>& faces) {
+  const std::vector<FaceIntersection> crossings = find_face_intersections(mesh.V, mesh.F, faces, 0);
+  GivenCrossings given{{}, crossings.size()};
+  if (crossings.empty()) return given;
+  given.faces.assign(mesh.num_faces(), 0);
+  for (const FaceIntersection& c : crossings) given.faces[c.query_face] = given.faces[c.other_face] = 1;
+  return given;
 }
 
-// Per face of `mesh`, whether it crosses or is crossed by one of `faces`; empty where none does.
-std::vector<char> crossed_faces(const Mesh& mesh, const std::vector<int>& faces) {
-  const std::vector<FaceIntersection> crossings = find_face_intersections(mesh.V, mesh.F, faces, 0);
-  if (crossings.empty()) return {};
-  std::vector<char> crossed(mesh.num_faces(), 0);
-  for (const FaceIntersection& c : crossings) crossed[c.query_face] = crossed[c.other_face] = 1;
-  return crossed;
+// The crossings of `faces` on (V, F) that the given region did not have, at most kCrossingsSought.
+// A region that already crosses itself, as a noisy scan's may, is held to no more than that: the
+// crossings of the faces that crossed may change partners once those faces move (a pierced face
+// that moves is crossed elsewhere), but may not grow in number, and any other crossing is new.
+std::vector<FaceIntersection> new_crossings(const Vertices& V, const Faces& F, const std::vector<int>& faces,
+                                            const GivenCrossings& given) {
+  if (given.count == 0) return find_face_intersections(V, F, faces, detail::kCrossingsSought);
+  std::vector<FaceIntersection> fresh, at_given;
+  for (const FaceIntersection& c : find_face_intersections(V, F, faces, 0))
+    (given.faces[c.query_face] || given.faces[c.other_face] ? at_given : fresh).push_back(c);
+  if (at_given.size() > given.count) fresh.insert(fresh.end(), at_given.begin(), at_given.end());
+  if (fresh.size() > static_cast<std::size_t>(detail::kCrossingsSought)) fresh.resize(detail::kCrossingsSought);
+  return fresh;
 }
 
 // Where the flow's result crossed the mesh (`crossings`, with `report`) and its linear floor does
@@ -609,7 +614,7 @@ std::vector<char> crossed_faces(const Mesh& mesh, const std::vector<int>& faces)
 // starts from that floor; a start that crosses would turn the rejection off.)
 template <class Fair>
 bool retry_rejecting_crossings(Mesh& mesh, const Vertices& given, const std::vector<int>& faces,
-                               const std::vector<char>& given_crossed, const FairRegionOptions& options, Fair& fair,
+                               const GivenCrossings& given_crossed, const FairRegionOptions& options, Fair& fair,
                                const std::vector<FaceIntersection>& crossings, FairRegionReport& report) {
   if (!options.retry_rejecting_crossings || report.linear || options.method != FairMethod::flow ||
       options.flow.reject_crossings)
@@ -647,7 +652,7 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
   const bool floor = options.linear_floor && options.harmonic_start_iterations > 0;
   if (!floor) return fair(mesh, options);
   const std::vector<int> faces = region_faces(mesh, free_vertices);
-  const std::vector<char> given_crossed = crossed_faces(mesh, faces);
+  const GivenCrossings given_crossed = given_crossings(mesh, faces);
   const auto start = detail::Clock::now();
   const Vertices given = mesh.V;
   FairRegionReport report = fair(mesh, options);

@@ -265,7 +265,8 @@ std::vector<std::vector<int>> region_parts(const Topology& topo, std::span<const
 /// continuity, NumericalError if the flow or the solve fails — with mesh.V at the last accepted state.
 /// With the linear floor (harmonic_started()), a result whose region crosses the mesh where the
 /// given region did not (find_face_intersections; faces that crossed in the given mesh, as a noisy
-/// scan's may, take no part) is replaced by the first linear ∆^k solution from the given positions,
+/// scan's may, may cross other faces once they move, but no more often in all) is replaced by
+/// the first linear ∆^k solution from the given positions,
 /// k from the continuity reached down to 1, that does not (reported `linear`, the reason in
 /// `note`); NumericalError if every one crosses, with mesh.V at the result. A region in parts is
 /// faired part by part (FairRegionReport::parts); a throw leaves the parts before as they ended.
