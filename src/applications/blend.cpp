@@ -57,6 +57,18 @@ void require_apart(const std::vector<int>& loop_a, const std::vector<int>& loop_
                                 ", a non-manifold vertex where the two borders touch; no tube starts from both");
 }
 
+// A loop through one vertex twice pinches there: a non-manifold vertex, which repair splits in two
+// (the loop then splits too). A tube from it would use the vertex's border edges twice.
+void require_simple(const std::vector<int>& loop, int index) {
+  std::vector<int> sorted = loop;
+  std::sort(sorted.begin(), sorted.end());
+  const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+  if (twice != sorted.end())
+    throw RepairableMeshError("blend_loops: loop " + std::to_string(index) + " passes through vertex " +
+                              std::to_string(*twice) +
+                              " twice, a non-manifold vertex where its border pinches; no tube starts from it");
+}
+
 // Worst 4√3·area / Σ edge² over faces [first_face, #F) of (V, F).
 double worst_quality(const Vertices& V, const Faces& F, int first_face) {
   double worst = 1.0;
@@ -713,6 +725,8 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
   report.loop_distance = pair.distance;
   const std::vector<int>& loop_a = loops[pair.first];
   const std::vector<int>& loop_b = loops[pair.second];
+  require_simple(loop_a, pair.first);
+  require_simple(loop_b, pair.second);
   require_apart(loop_a, loop_b, pair);
   report.a.index = pair.first;
   report.a.length = static_cast<int>(loop_a.size());

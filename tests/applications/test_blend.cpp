@@ -355,6 +355,24 @@ TEST(Blend, ClearErrors) {
     EXPECT_STREQ(e.what(), "blend_loops: loops 5 and 12 share vertex 883, a non-manifold vertex where the two "
                            "borders touch; no tube starts from both");
   }
+
+  // A band across spot through vertex 182 (bench_stress --section blend --seed 4242's third slab)
+  // leaves two pieces that touch at one vertex, and the 74-edge loop passes through it twice: a tube
+  // from that loop used its border edges there twice (before, refine_patch's "patch edge ... is used
+  // twice in the same direction", exit 3 with no hint).
+  const Mesh spot = read_mesh(test::data_path("spot.obj"));
+  Mesh pinched = test::cut_slab(spot, spot.V.row(182).transpose(), Eigen::Vector3d(0.659, 0.733, -0.170).normalized(),
+                                2 * test::mean_edge_length(spot));
+  const Mesh given = pinched;
+  try {
+    blend_loops(pinched);
+    FAIL();
+  } catch (const RepairableMeshError& e) {
+    EXPECT_STREQ(e.what(), "blend_loops: loop 0 passes through vertex 2183 twice, a non-manifold vertex where its "
+                           "border pinches; no tube starts from it");
+  }
+  EXPECT_EQ(pinched.V, given.V);
+  EXPECT_EQ(pinched.F, given.F);
 }
 
 // Mean distance of the tube's vertices (from `first_tube_vertex` on) to the uncut mesh, in h.
