@@ -313,6 +313,19 @@ TEST(Blend, ContinuityAtAVertexOutOfRangeIsRefused) {
   }
 }
 
+// blend_loops refuses `mesh` with RepairableMeshError(`message`) and leaves it as it was.
+void expect_refused_for_repair(Mesh mesh, const char* message) {
+  const Mesh given = mesh;
+  try {
+    blend_loops(mesh);
+    FAIL() << "no throw";
+  } catch (const RepairableMeshError& e) {
+    EXPECT_STREQ(e.what(), message);
+  }
+  EXPECT_EQ(mesh.V, given.V);
+  EXPECT_EQ(mesh.F, given.F);
+}
+
 TEST(Blend, ClearErrors) {
   Mesh closed = icosphere(1);
   try {
@@ -347,32 +360,20 @@ TEST(Blend, ClearErrors) {
 
   // data/lagrange_prout.obj's closest loops pass through one vertex: a non-manifold vertex, which
   // repair splits (before, build_tube's InvalidArgument, exit 1 in the CLI, with no hint).
-  Mesh touching = read_mesh(test::data_path("lagrange_prout.obj"));
-  try {
-    blend_loops(touching);
-    FAIL();
-  } catch (const RepairableMeshError& e) {
-    EXPECT_STREQ(e.what(), "blend_loops: loops 5 and 12 share vertex 883, a non-manifold vertex where the two "
-                           "borders touch; no tube starts from both");
-  }
+  expect_refused_for_repair(read_mesh(test::data_path("lagrange_prout.obj")),
+                            "blend_loops: loops 5 and 12 share vertex 883, a non-manifold vertex where the two "
+                            "borders touch; no tube starts from both");
 
   // A band across spot through vertex 182 (bench_stress --section blend --seed 4242's third slab)
   // leaves two pieces that touch at one vertex, and the 74-edge loop passes through it twice: a tube
   // from that loop used its border edges there twice (before, refine_patch's "patch edge ... is used
   // twice in the same direction", exit 3 with no hint).
   const Mesh spot = read_mesh(test::data_path("spot.obj"));
-  Mesh pinched = test::cut_slab(spot, spot.V.row(182).transpose(), Eigen::Vector3d(0.659, 0.733, -0.170).normalized(),
-                                2 * test::mean_edge_length(spot));
-  const Mesh given = pinched;
-  try {
-    blend_loops(pinched);
-    FAIL();
-  } catch (const RepairableMeshError& e) {
-    EXPECT_STREQ(e.what(), "blend_loops: loop 0 passes through vertex 2183 twice, a non-manifold vertex where its "
-                           "border pinches; no tube starts from it");
-  }
-  EXPECT_EQ(pinched.V, given.V);
-  EXPECT_EQ(pinched.F, given.F);
+  expect_refused_for_repair(test::cut_slab(spot, spot.V.row(182).transpose(),
+                                           Eigen::Vector3d(0.659, 0.733, -0.170).normalized(),
+                                           2 * test::mean_edge_length(spot)),
+                            "blend_loops: loop 0 passes through vertex 2183 twice, a non-manifold vertex where "
+                            "its border pinches; no tube starts from it");
 }
 
 // Mean distance of the tube's vertices (from `first_tube_vertex` on) to the uncut mesh, in h.
@@ -395,6 +396,14 @@ Band band_across(const char* file, const Eigen::Vector3d& point, const Eigen::Ve
   b.h = test::mean_edge_length(b.uncut);
   b.cut = test::cut_slab(b.uncut, point, axis, 2 * b.h);
   return b;
+}
+
+// Band `b` blended into `out` from the G0 membrane only (rebuild_without_membrane off).
+BlendReport blend_from_membrane_only(const Band& b, Mesh& out) {
+  BlendOptions once;
+  once.rebuild_without_membrane = false;
+  out = b.cut;
+  return blend_loops(out, once);
 }
 
 // The blend `m` of band `b` closes the cut: its tube crosses nothing, the mesh is clean (expect_clean)
@@ -454,10 +463,8 @@ TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
 TEST(BlendReal, ALinearTubeKeptInPlaceOfAFlowThatFoldsBackIsBuiltAgainFromTheHermiteTube) {
   const Band b = band_across("blub.obj", {0.280928, -0.0196544, 0.897816}, Eigen::Vector3d::UnitY());
   ASSERT_EQ(loop_count(b.cut), 2);
-  BlendOptions once;
-  once.rebuild_without_membrane = false;
-  Mesh from_membrane = b.cut;
-  const BlendReport f = blend_loops(from_membrane, once);
+  Mesh from_membrane;
+  const BlendReport f = blend_from_membrane_only(b, from_membrane);
   ASSERT_TRUE(f.relaxed);
   ASSERT_TRUE(f.fair.flow_folded_back);
   ASSERT_FALSE(folds_back(f.a) || folds_back(f.b));  // the old rule alone would not build again
@@ -496,10 +503,8 @@ TEST(BlendReal, ATubeFromTheMembraneThatFoldsBackIsBuiltAgainFromTheHermiteTube)
   const Mesh blub = read_mesh(test::data_path("blub.obj"));
   const Band b = band_across("blub.obj", blub.V.row(1097).transpose(), Eigen::Vector3d::UnitZ());
   ASSERT_EQ(loop_count(b.cut), 2);
-  BlendOptions once;
-  once.rebuild_without_membrane = false;
-  Mesh folded = b.cut;
-  const BlendReport f = blend_loops(folded, once);
+  Mesh folded;
+  const BlendReport f = blend_from_membrane_only(b, folded);
   ASSERT_TRUE(f.relaxed);
   ASSERT_TRUE(folds_back(f.a) || folds_back(f.b));
 
