@@ -432,10 +432,8 @@ void expect_lower_linear_tube(const BlendReport& r) {
 TEST(BlendReal, AnUnsettledFlowDescendsFromTheLinearTubeWithoutCrossing) {
   const Band b = band_across("blub.obj", {0.280928, -0.0196544, 0.897816}, Eigen::Vector3d::UnitY());
   ASSERT_EQ(loop_count(b.cut), 2);
-  Mesh m = b.cut;
-  BlendOptions from_membrane;
-  from_membrane.rebuild_without_membrane = false;
-  const BlendReport r = blend_loops(m, from_membrane);
+  Mesh m;
+  const BlendReport r = blend_from_membrane_only(b, m);
   print("blub band", r);
   EXPECT_TRUE(r.fair.flow_folded_back);
   EXPECT_EQ(delivered_label(r.fair.supported, r.fair.linear), "C2 (linear)");
@@ -746,10 +744,8 @@ TEST(BlendReal, WhereNoDescentSettlesTheLinearTubeIsKept) {
 TEST(BlendReal, AG2TubeIsWeighedAgainstALowerLinearTubeWhereTheLinearOneCrosses) {
   const Band b = band_across("blub.obj", {0.0599292, -0.275701, -1.33125}, Eigen::Vector3d::UnitZ());
   ASSERT_EQ(loop_count(b.cut), 2);
-  Mesh m = b.cut;
-  BlendOptions from_membrane;
-  from_membrane.rebuild_without_membrane = false;
-  const BlendReport r = blend_loops(m, from_membrane);
+  Mesh m;
+  const BlendReport r = blend_from_membrane_only(b, m);
   print("blub 954 z", r);
   expect_lower_linear_tube(r);
   // It loses to that tube by the crease rule or the angle rule, whichever the machine's rounding of
