@@ -56,7 +56,7 @@ struct Args {
   int trials = 40;                      // per mesh and section
   std::uint64_t seed = 1;               // of the first trial; trial t draws from seed + t
   std::string cut = "balls";            // fill and fair: balls, or irregular blobs and slits
-  std::string write_dir;                // fill: where each trial's cut and filled meshes go
+  std::string write_dir;                // where each trial's input and output meshes go
 };
 
 void add_options(CLI::App& app, Args& args) {
@@ -74,8 +74,10 @@ void add_options(CLI::App& app, Args& args) {
       ->check(CLI::IsMember({"balls", "irregular"}))
       ->capture_default_str();
   app.add_option("--write", args.write_dir,
-                 "Fill: write each trial's cut and filled meshes into DIR, as MESH_seedS_cut.ply and "
-                 "MESH_seedS_filled.ply, to look at with fairsurf render or fill again with the CLI")
+                 "Write each trial's input and output into DIR, to look at with fairsurf render or run again with "
+                 "the CLI: fill MESH_seedS_cut.ply and _filled.ply; fair MESH_seedS[_noise]_region.ply (vertex "
+                 "property region, for fairsurf fair --region-property region) and _faired.ply; blend "
+                 "MESH_vertexV_slab.ply and _blended.ply")
       ->type_name("DIR")
       ->check(CLI::ExistingDirectory);
 }
@@ -171,11 +173,12 @@ int open_after_repair(Mesh cut) {
   return fill_holes(filled, FillOptions{}).failed;
 }
 
-// --write: `DIR/MESH_seedS_` + `what` + `.ply`.
-void write_trial(const std::string& dir, const ClosedMesh& m, std::uint64_t seed, const char* what, const Mesh& mesh) {
-  const std::string name = m.name + "_seed" + std::to_string(seed) + "_" + what + ".ply";
-  write_mesh(std::filesystem::path(dir) / name, mesh);
+// --write: `DIR/` + `trial` + `_` + `what` + `.ply`, where `trial` names the mesh and its draw.
+void write_trial(const std::string& dir, const std::string& trial, const char* what, const Mesh& mesh) {
+  write_mesh(std::filesystem::path(dir) / (trial + "_" + what + ".ply"), mesh);
 }
+
+std::string seed_name(const ClosedMesh& m, std::uint64_t seed) { return m.name + "_seed" + std::to_string(seed); }
 
 void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, const std::string& write_dir,
                 FillTally& tally) {
@@ -185,7 +188,7 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, const s
   std::printf("fill  %-26s seed %3llu: %sloops %s", m.name.c_str(), static_cast<unsigned long long>(seed),
               irregular ? (slit ? "slit, " : "blob, ") : "", bench::border_sizes(cut).c_str());
   ++tally.trials;
-  if (!write_dir.empty()) write_trial(write_dir, m, seed, "cut", cut);
+  if (!write_dir.empty()) write_trial(write_dir, seed_name(m, seed), "cut", cut);
   Mesh filled = cut;
   FillReport report;
   try {
@@ -195,7 +198,7 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, const s
     std::printf(", refused: %s\n", e.what());
     return;
   }
-  if (!write_dir.empty()) write_trial(write_dir, m, seed, "filled", filled);
+  if (!write_dir.empty()) write_trial(write_dir, seed_name(m, seed), "filled", filled);
   const bool crossing = crosses(filled, bench::rows_from(cut.num_faces(), filled.num_faces()));
   const bool manifold = validate(filled).manifold();
   const bool cut_manifold = validate(cut).manifold();
@@ -280,7 +283,17 @@ std::string parts_text(const FairRegionReport& r, FairTally& tally) {
   return text + "]";
 }
 
-void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, bool irregular, FairTally& tally) {
+// The mesh given to fair_region with its region as the vertex property `region` (1 inside, 0
+// elsewhere), which `fairsurf fair --region-property region` reads.
+Mesh with_region_property(Mesh mesh, const std::vector<int>& region) {
+  Eigen::VectorXd mark = Eigen::VectorXd::Zero(mesh.num_vertices());
+  for (int v : region) mark[v] = 1;
+  mesh.vertex_scalars["region"] = mark;
+  return mesh;
+}
+
+void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, bool irregular, const std::string& write_dir,
+                FairTally& tally) {
   Mesh mesh = m.mesh;
   if (noisy) bench::add_normal_noise(mesh, kNoise * m.h, seed);
   ClosedMesh drawn{m.name, mesh, m.h};
@@ -294,9 +307,12 @@ void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, bool irregu
     return;
   }
   ++tally.regions;
+  const std::string trial = seed_name(m, seed) + (noisy ? "_noise" : "");
+  if (!write_dir.empty()) write_trial(write_dir, trial, "region", with_region_property(mesh, region));
   Mesh faired = mesh;
   try {
     const FairRegionReport r = fair_region(faired, region, FairRegionOptions::harmonic_started());
+    if (!write_dir.empty()) write_trial(write_dir, trial, "faired", with_region_property(faired, region));
     const bool steady = settled(r);
     // More crossings than the given region had (a noisy scan's may cross already).
     std::vector<char> free(mesh.num_vertices(), 0);
@@ -346,13 +362,17 @@ Mesh draw_slab(const ClosedMesh& m, std::mt19937_64& draw, int& vertex, Eigen::V
   return cut;
 }
 
-void blend_trial(const ClosedMesh& m, const Mesh& cut, int vertex, const Eigen::Vector3d& axis, BlendTally& tally) {
+void blend_trial(const ClosedMesh& m, const Mesh& cut, int vertex, const Eigen::Vector3d& axis,
+                 const std::string& write_dir, BlendTally& tally) {
   std::printf("blend %-26s vertex %5d axis (%.3f, %.3f, %.3f), loops %s: ", m.name.c_str(), vertex, axis(0),
               axis(1), axis(2), bench::border_sizes(cut).c_str());
   ++tally.blends;
+  const std::string trial = m.name + "_vertex" + std::to_string(vertex);
+  if (!write_dir.empty()) write_trial(write_dir, trial, "slab", cut);
   Mesh blended = cut;
   try {
     const BlendReport r = blend_loops(blended, BlendOptions{});
+    if (!write_dir.empty()) write_trial(write_dir, trial, "blended", blended);
     const bool steady = r.fair.linear || r.fair.flow.stop_reason == FlowStopReason::steady;
     const bool crossing = crosses(blended, bench::rows_from(cut.num_faces(), blended.num_faces()));
     const bool back = folds_back(r.a) || folds_back(r.b);  // `fairsurf blend` warns there
@@ -404,7 +424,8 @@ int main(int argc, char** argv) {
       for (const ClosedMesh& m : meshes)
         for (bool noisy : {false, true})
           for (int t = 0; t < args.trials; ++t)
-            fair_trial(m, args.seed + static_cast<std::uint64_t>(t), noisy, args.cut == "irregular", tally);
+            fair_trial(m, args.seed + static_cast<std::uint64_t>(t), noisy, args.cut == "irregular", args.write_dir,
+                       tally);
       summaries.push_back(fair_summary(tally));
     }
     if (wanted("blend")) {
@@ -418,7 +439,7 @@ int main(int argc, char** argv) {
           const Mesh cut = draw_slab(m, draw, vertex, axis);
           if (cut.num_faces() == 0) continue;
           ++found;
-          blend_trial(m, cut, vertex, axis, tally);
+          blend_trial(m, cut, vertex, axis, args.write_dir, tally);
         }
       }
       summaries.push_back(blend_summary(tally));
