@@ -695,13 +695,34 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
 namespace {
 
 // fair_region on a validated mesh: part by part (fair_in_parts), each part with its crossing check.
-FairRegionReport fair_validated(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
-                                const FairRegionOptions& options, const FlowObserver& observer) {
+FairRegionReport fair_parts(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                            const FairRegionOptions& options, const FlowObserver& observer) {
   return fair_detail::fair_in_parts(mesh, topo, free_vertices, options, [&](std::span<const int> part) {
     return fair_uncrossed(mesh, topo, part, options, [&](Mesh& faired, const FairRegionOptions& o) {
       return fair_detail::fair_valid_mesh(faired, topo, part, o, observer);
     });
   });
+}
+
+// fair_parts on the free vertices that belong to a face. A vertex no face uses (scans list some:
+// the Stanford bunny's OBJ has 1113) is not on the surface: it has no neighbour to be faired
+// against, so it stays where it is, and the note says how many did.
+FairRegionReport fair_validated(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                const FairRegionOptions& options, const FlowObserver& observer) {
+  std::vector<int> on_faces;
+  on_faces.reserve(free_vertices.size());
+  for (int v : free_vertices)
+    if (v < 0 || v >= topo.num_vertices || topo.vertex_faces.size(v) > 0) on_faces.push_back(v);
+  const std::size_t loose = free_vertices.size() - on_faces.size();
+  if (loose == 0) return fair_parts(mesh, topo, free_vertices, options, observer);
+  if (on_faces.empty())
+    throw InvalidArgument("fair_region: no vertex of the free region (" + std::to_string(loose) +
+                          ") belongs to a face, so there is no surface to fair");
+  FairRegionReport report = fair_parts(mesh, topo, on_faces, options, observer);
+  const std::string left = std::to_string(loose) + (loose == 1 ? " vertex of the region belongs to no face and stays where it is"
+                                                               : " vertices of the region belong to no face and stay where they are");
+  report.note = report.note.empty() ? left : left + "; " + report.note;
+  return report;
 }
 
 }  // namespace

@@ -288,3 +288,29 @@ TEST_F(CliLabels, FillRunsNoLowerContinuityUnlessAsked) {
   EXPECT_EQ(run.out.find(" G1"), std::string::npos) << run.out;
   EXPECT_EQ(run.out.find(" G0"), std::string::npos) << run.out;
 }
+
+// A vertex no face uses inside a marked region (scans' OBJ files list some) is not on the surface:
+// `fair` leaves it where it is, fairs the rest and says so, where it used to exit 1 with
+// harmonic_fair's "free vertex 0 is not connected to any fixed vertex".
+TEST_F(CliLabels, FairLeavesAVertexThatBelongsToNoFaceWhereItIsAndSaysSo) {
+  Mesh sphere = test::icosphere(3);
+  const int loose = sphere.num_vertices();
+  sphere.V.conservativeResize(loose + 2, 3);
+  sphere.V.row(loose) = Eigen::RowVector3d(0.1, 0, 0.9);  // inside the cap's ball
+  sphere.V.row(loose + 1) = Eigen::RowVector3d(0, 0, 3);  // alone in a ball of its own
+  write_mesh(file("loose.ply"), sphere);
+  auto run = test::run_cli("fair " + path("loose.ply") + " -o " + path("f.ply") + " --region-sphere 0,0,1,0.5");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("1 vertex of the region belongs to no face and stays where it is"), std::string::npos)
+      << run.out;
+  const Mesh faired = read_mesh(file("f.ply"));
+  ASSERT_EQ(faired.num_vertices(), loose + 2);
+  EXPECT_EQ(faired.V.row(loose), Eigen::RowVector3d(0.1, 0, 0.9));
+
+  run = test::run_cli("fair " + path("loose.ply") + " -o " + path("g.ply") + " --region-sphere 0,0,3,0.1");
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_NE(run.out.find("no vertex of the free region (1) belongs to a face, so there is no surface to fair"),
+            std::string::npos)
+      << run.out;
+  EXPECT_FALSE(fs::exists(file("g.ply")));
+}
