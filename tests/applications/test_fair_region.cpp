@@ -308,34 +308,50 @@ TEST(FairRegion, RejectsBadInput) {
   EXPECT_THROW(fair_region(m, std::vector<int>{1}), InvalidMeshError);
 }
 
-// A vertex no face uses (the Stanford bunny's OBJ lists 1113) is not on the surface. Inside a
-// marked region it stays where it is and the rest is faired as if it were not there; before, it was
-// a region part of its own and harmonic_fair threw ("free vertex 0 is not connected to any fixed
-// vertex").
-TEST(FairRegion, AVertexThatBelongsToNoFaceStaysWhereItIsAndTheRestIsFaired) {
+// A vertex no face uses (the Stanford bunny's OBJ lists 1113) is not on the surface, and a
+// component of the mesh marked whole has no fixed ring. Both stay where they are and the rest of the
+// region is faired as if they were not marked; before, each was a region part of its own and
+// harmonic_fair threw ("free vertex 0 is not connected to any fixed vertex").
+TEST(FairRegion, WhatHasNoFixedVertexInItsComponentStaysWhereItIsAndTheRestIsFaired) {
   FlattenedCap plain(3);
-  FlattenedCap loose(3);
-  const int extra = loose.mesh.num_vertices();
-  loose.mesh.V.conservativeResize(extra + 1, 3);
-  loose.mesh.V.row(extra) = Eigen::RowVector3d(0.1, 0.2, 0.6);  // inside the cap, on no face
-  std::vector<int> region = loose.cap;
-  region.insert(region.begin() + 3, extra);
+  FlattenedCap more(3);
+  const int loose = more.mesh.num_vertices();
+  const Mesh ball = test::icosphere(1, 0.3);  // a second component, all of it marked
+  more.mesh.V.conservativeResize(loose + 1 + ball.num_vertices(), 3);
+  more.mesh.V.row(loose) = Eigen::RowVector3d(0.1, 0.2, 0.6);  // inside the cap, on no face
+  more.mesh.V.bottomRows(ball.num_vertices()) = ball.V.rowwise() + Eigen::RowVector3d(3, 0, 0);
+  more.mesh.F.conservativeResize(more.mesh.num_faces() + ball.num_faces(), 3);
+  more.mesh.F.bottomRows(ball.num_faces()) = ball.F.array() + (loose + 1);
+  std::vector<int> region = more.cap;
+  region.insert(region.begin() + 3, loose);
+  for (int v = 0; v < ball.num_vertices(); ++v) region.push_back(loose + 1 + v);
+  const Vertices given = more.mesh.V;
+
   const FairRegionOptions options = FairRegionOptions::harmonic_started();
   const FairRegionReport a = fair_region(plain.mesh, plain.cap, options);
-  const FairRegionReport b = fair_region(loose.mesh, region, options);
+  const FairRegionReport b = fair_region(more.mesh, region, options);
   EXPECT_EQ(b.free_vertices, a.free_vertices);
   EXPECT_EQ(b.linear, a.linear);
-  EXPECT_TRUE(loose.mesh.V.topRows(extra) == plain.mesh.V);
-  EXPECT_EQ(loose.mesh.V.row(extra), Eigen::RowVector3d(0.1, 0.2, 0.6));
-  EXPECT_EQ(b.note.rfind("1 vertex of the region belongs to no face and stays where it is", 0), 0u) << b.note;
+  EXPECT_TRUE(more.mesh.V.topRows(loose) == plain.mesh.V);
+  EXPECT_TRUE(more.mesh.V.bottomRows(1 + ball.num_vertices()) == given.bottomRows(1 + ball.num_vertices()));
+  EXPECT_EQ(b.note.rfind("left where they are, with no fixed vertex to fair them against: 1 vertex on no face, "
+                         "1 component of the mesh marked whole (42 vertices)",
+                         0),
+            0u)
+      << b.note;
 
-  try {  // nothing else to fair
-    fair_region(loose.mesh, std::vector<int>{extra}, options);
+  const Vertices faired = more.mesh.V;
+  std::vector<int> nothing_fixed(1, loose);
+  for (int v = 0; v < ball.num_vertices(); ++v) nothing_fixed.push_back(loose + 1 + v);
+  try {
+    fair_region(more.mesh, nothing_fixed, options);
     FAIL() << "no exception";
   } catch (const InvalidArgument& e) {
-    EXPECT_STREQ(e.what(), "fair_region: no vertex of the free region (1) belongs to a face, so there is no "
-                           "surface to fair");
+    EXPECT_STREQ(e.what(), "fair_region: no vertex of the free region has a fixed vertex in its component of the "
+                           "mesh (1 vertex on no face, 1 component of the mesh marked whole (42 vertices)), so there "
+                           "is nothing to fair it against");
   }
+  EXPECT_TRUE(more.mesh.V == faired);  // refused before anything moved
 }
 
 // A flow that throws under the linear floor leaves the linear solution, and its report keeps the

@@ -270,9 +270,10 @@ std::vector<std::vector<int>> region_parts(const Topology& topo, std::span<const
 /// k from the continuity reached down to 1, that does not (reported `linear`, the reason in
 /// `note`); NumericalError if every one crosses, with mesh.V at the result. A region in parts is
 /// faired part by part (FairRegionReport::parts); a throw leaves the parts before as they ended.
-/// A free vertex that no face uses is not on the surface: it stays where it is, the others are
-/// faired as if it were not free (`free_vertices` does not count it), and `note` starts with how
-/// many stayed; InvalidArgument if no free vertex belongs to a face.
+/// Free vertices with no fixed vertex in their connected component of the mesh (a vertex no face
+/// uses, a component marked whole) have nothing to be faired against: they stay where they are, the
+/// others are faired as if they were not free (`free_vertices` does not count them), and `note`
+/// starts with what stayed; InvalidArgument if that is the whole region.
 FairRegionReport fair_region(Mesh& mesh, std::span<const int> free_vertices,
                              const FairRegionOptions& options = {},
                              const FlowObserver& observer = {});
