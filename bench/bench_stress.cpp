@@ -77,7 +77,7 @@ void add_options(CLI::App& app, Args& args) {
                  "Write each trial's input and output into DIR, to look at with fairsurf render or run again with "
                  "the CLI: fill MESH_seedS_cut.ply and _filled.ply; fair MESH_seedS[_noise]_region.ply (vertex "
                  "property region, for fairsurf fair --region-property region) and _faired.ply; blend "
-                 "MESH_vertexV_slab.ply and _blended.ply")
+                 "MESH_slabK_cut.ply (the mesh's K-th slab) and _blended.ply")
       ->type_name("DIR")
       ->check(CLI::ExistingDirectory);
 }
@@ -362,13 +362,14 @@ Mesh draw_slab(const ClosedMesh& m, std::mt19937_64& draw, int& vertex, Eigen::V
   return cut;
 }
 
-void blend_trial(const ClosedMesh& m, const Mesh& cut, int vertex, const Eigen::Vector3d& axis,
+// `slab`: the slab's place among the mesh's, from 1.
+void blend_trial(const ClosedMesh& m, const Mesh& cut, int slab, int vertex, const Eigen::Vector3d& axis,
                  const std::string& write_dir, BlendTally& tally) {
-  std::printf("blend %-26s vertex %5d axis (%.3f, %.3f, %.3f), loops %s: ", m.name.c_str(), vertex, axis(0),
-              axis(1), axis(2), bench::border_sizes(cut).c_str());
+  std::printf("blend %-26s slab %2d: vertex %5d axis (%.3f, %.3f, %.3f), loops %s: ", m.name.c_str(), slab, vertex,
+              axis(0), axis(1), axis(2), bench::border_sizes(cut).c_str());
   ++tally.blends;
-  const std::string trial = m.name + "_vertex" + std::to_string(vertex);
-  if (!write_dir.empty()) write_trial(write_dir, trial, "slab", cut);
+  const std::string trial = m.name + "_slab" + std::to_string(slab);  // two slabs may share a vertex
+  if (!write_dir.empty()) write_trial(write_dir, trial, "cut", cut);
   Mesh blended = cut;
   try {
     const BlendReport r = blend_loops(blended, BlendOptions{});
@@ -439,7 +440,7 @@ int main(int argc, char** argv) {
           const Mesh cut = draw_slab(m, draw, vertex, axis);
           if (cut.num_faces() == 0) continue;
           ++found;
-          blend_trial(m, cut, vertex, axis, args.write_dir, tally);
+          blend_trial(m, cut, found, vertex, axis, args.write_dir, tally);
         }
       }
       summaries.push_back(blend_summary(tally));
