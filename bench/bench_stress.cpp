@@ -213,7 +213,7 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, const s
   const std::vector<std::vector<int>> loops = bench::loops_of(cut);
   const bool disks = bench::removed_disks(m.mesh, cut);
   for (const HoleReport& r : report.holes) {
-    const bool unfaired = noted(r.note, "delivered unfaired");
+    const bool unfaired = r.unfaired;
     const bool refined = !unfaired && noted(r.note, "faired from the refined triangulation instead");
     tally.unfaired += unfaired;
     tally.refined += refined;

@@ -123,6 +123,7 @@ nlohmann::json hole_json(const HoleReport& r) {
                    {"held_out_refined_linear_error", r.held_out_refined_linear_error},
                    {"held_out_roughness", r.held_out_roughness},
                    {"refined_start", r.refined_start},
+                   {"unfaired", r.unfaired},
                    {"checks_chose_linear", r.checks_chose_linear},
                    {"flow_folded_back", r.flow_folded_back},
                    {"two_ring_boundary_fits", r.two_ring_boundary_fits},

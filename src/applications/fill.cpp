@@ -203,6 +203,11 @@ bool takes_in_a_lone_triangle(const std::vector<HoleReport>& reports, const std:
   return std::any_of(group.begin(), group.end(), [&](int h) { return reports[h].around_a_face; });
 }
 
+bool filled_alone_instead(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                          const std::vector<int>& group, const FillOptions& options, const FillObserver& observer,
+                          const std::vector<HoleReport>& unfilled, std::vector<HoleReport>& reports,
+                          std::optional<Topology>& filled, std::vector<CommittedFlows>& flows);
+
 // Fills `group` from the membrane and the refined triangulation (fill_from_membrane), triangulated
 // again where that fill folds back (retriangulate_if_folded_back) or fails (retriangulate_if_failed),
 // and all that again where it still fails or is delivered unfaired, with the earlier flows in its
@@ -246,6 +251,9 @@ void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector
     return;
   }
   if (!outcome.reason.empty()) return;
+  if (group.size() > 1 && outcome.start == PatchStart::unfaired &&
+      filled_alone_instead(mesh, topo, loops, group, options, observer, unfilled, reports, filled, flows))
+    return;
   const int first_face = mesh.num_faces();
   std::vector<HoleFloor> floors = std::move(outcome.filled.floors);
   commit(outcome.filled, mesh, filled);
@@ -279,19 +287,21 @@ bool beside_a_lone_triangle(const std::vector<std::vector<int>>& loops, const st
   return fill_detail::flagged_loop_at_a_pinch(loops, h, lone).first >= 0;
 }
 
-// A joint group that failed as a whole (fill_group_falling_back): each hole again alone, in order,
-// the others open or as filled before it, so that one hole no fairing can close (the outer border of
-// an open surface) does not keep the holes whose rings overlap its own open. A hole filled alone
-// says that the joint fill failed; one that fails alone keeps its own reason, with the joint one.
-void fill_failed_group_one_by_one(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
-                                  const std::vector<int>& group, const FillOptions& options,
-                                  const FillObserver& observer, std::vector<HoleReport>& reports,
-                                  std::optional<Topology>& filled, std::vector<CommittedFlows>& flows) {
-  const std::string joint_failure = reports[group.front()].reason;
+// A joint group that failed as a whole (fill_group_falling_back), or that only its refined
+// triangulation unfaired closed (filled_alone_instead): each hole again alone, in order, the others
+// open or as filled before it, so that one hole no fairing can close (the outer border of an open
+// surface) does not keep the holes whose rings overlap its own open or unfaired. A hole filled alone
+// says what the joint fill did (`joint_outcome`: "failed (...)"); one that fails alone keeps its own
+// reason with the joint one, which it does not repeat where it failed for the same (`joint_failure`).
+void fill_group_one_by_one(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                           const std::vector<int>& group, const std::string& joint_outcome,
+                           const std::string& joint_failure, const FillOptions& options, const FillObserver& observer,
+                           std::vector<HoleReport>& reports, std::optional<Topology>& filled,
+                           std::vector<CommittedFlows>& flows) {
   for (int h : group) {
     HoleReport& r = reports[h];
     const std::string joint_fill = "the joint fill with " + hole_list(r.filled_with);
-    const std::string joint = joint_fill + " failed (" + joint_failure + ")";
+    const std::string joint = joint_fill + " " + joint_outcome;
     r.filled_with.clear();
     // A lone triangle's loop alone, or a loop through its pinch alone, could only close a cone
     // there: they keep the joint failure (report_lone_triangles_not_taken_in says the rest).
@@ -308,6 +318,35 @@ void fill_failed_group_one_by_one(Mesh& mesh, const Topology& topo, const std::v
     else
       r.reason += r.reason == joint_failure ? "; " + joint_fill + " failed too, for the same reason" : "; " + joint;
   }
+}
+
+// A joint group that only its refined triangulation unfaired closed (C0: every fairing of the joint
+// patch failed or crossed the mesh), filled again hole by hole (fill_group_one_by_one) on a copy of
+// `mesh`, before the group's fill is committed. The copy replaces it where every hole of the group
+// closes and one at least is faired: one opening no fairing closes no longer leaves the openings
+// beside it unfaired (bench_stress on Demosthenes, seed 21005: a 43-edge hole beside a 146-edge
+// one closes C2 (linear) alone). `unfilled`: the group's reports before its fill. Returns whether
+// it replaced the group's fill.
+bool filled_alone_instead(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
+                          const std::vector<int>& group, const FillOptions& options, const FillObserver& observer,
+                          const std::vector<HoleReport>& unfilled, std::vector<HoleReport>& reports,
+                          std::optional<Topology>& filled, std::vector<CommittedFlows>& flows) {
+  Mesh alone = mesh;
+  std::optional<Topology> alone_topology = filled;
+  std::vector<CommittedFlows> alone_flows = flows;
+  std::vector<HoleReport> alone_reports = reports;
+  for (std::size_t k = 0; k < group.size(); ++k) alone_reports[group[k]] = unfilled[k];
+  fill_group_one_by_one(alone, topo, loops, group, "closed only as its refined triangulation, unfaired", "",
+                        options, observer, alone_reports, alone_topology, alone_flows);
+  const auto closed = [&](int h) { return alone_reports[h].status == HoleStatus::filled; };
+  const auto faired = [&](int h) { return closed(h) && !alone_reports[h].unfaired; };
+  if (!std::all_of(group.begin(), group.end(), closed) || !std::any_of(group.begin(), group.end(), faired))
+    return false;
+  mesh = std::move(alone);
+  filled = std::move(alone_topology);
+  flows = std::move(alone_flows);
+  reports = std::move(alone_reports);
+  return true;
 }
 
 // A failed hole's reason, told that its loop also runs round lone triangle `r.lone_triangle`, with
@@ -397,8 +436,11 @@ FillReport fill_holes(Mesh& mesh, const FillOptions& options, const FillObserver
         if (other != h) report.holes[h].filled_with.push_back(other);
     const auto group_start = Clock::now();
     fill_group_falling_back(mesh, topo, loops, group, *patch_loops, options, observer, report.holes, filled, flows);
-    if (group.size() > 1 && report.holes[group.front()].status == HoleStatus::failed)
-      fill_failed_group_one_by_one(mesh, topo, loops, group, options, observer, report.holes, filled, flows);
+    if (group.size() > 1 && report.holes[group.front()].status == HoleStatus::failed) {
+      const std::string joint_failure = report.holes[group.front()].reason;
+      fill_group_one_by_one(mesh, topo, loops, group, "failed (" + joint_failure + ")", joint_failure, options,
+                            observer, report.holes, filled, flows);
+    }
     for (int h : group) report.holes[h].seconds = seconds_since(group_start);
   }
   fill_detail::report_lone_triangles_not_taken_in(loops, report.holes);

@@ -114,6 +114,7 @@ ChainOutcome run_fallback_chain(const Mesh& mesh, const std::vector<std::vector<
     }
   }
   mark(reports, group, c.reason.empty() ? HoleStatus::filled : HoleStatus::failed, c.reason);
+  for (int h : group) reports[h].unfaired = c.reason.empty() && c.start == PatchStart::unfaired;
   if (c.reason.empty() && !c.first_failure.empty())
     for (int h : group)
       reports[h].note = fallback_note(options, c.first_failure, c.start, c.fairing, c.relaxed_retry,

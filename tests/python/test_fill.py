@@ -1,4 +1,5 @@
 import json
+import pathlib
 import subprocess
 
 import numpy as np
@@ -93,3 +94,15 @@ def test_keep_flow_delivers_g2_where_the_held_out_rings_chose_the_floor(data_dir
     assert fairsurf.info(V2, F2)["boundary_loops"] == []
     with pytest.raises(fairsurf.InvalidArgument, match="keep_flow"):
         fairsurf.fill_holes(V, F, keep_flow=True, method="harmonic")
+
+
+def test_a_joint_group_left_unfaired_reports_which_hole_was_filled_alone():
+    # tests/data/demosthenes_joint_holes_unfaired.ply (RealHoleJointGroup in test_fill_real.cpp): only
+    # the unfaired refined triangulation closes the 146-edge hole; the 43-edge hole beside it, filled
+    # jointly with it before, is filled alone and faired.
+    V, F = fairsurf.read_mesh(pathlib.Path(__file__).resolve().parents[1] / "data" / "demosthenes_joint_holes_unfaired.ply")
+    _, _, report = fairsurf.fill_holes(V, F, method="harmonic")
+    large, small = report["holes"]
+    assert large["unfaired"] and large["delivered"] == "C0 (linear)"
+    assert not small["unfaired"] and small["delivered"] == "C2 (linear)"
+    assert "closed only as its refined triangulation, unfaired; filled alone" in small["note"]

@@ -192,6 +192,9 @@ struct HoleReport {
   double held_out_roughness = std::numeric_limits<double>::quiet_NaN();
   /// The delivered linear solution is that one (FairRegionReport::refined_start).
   bool refined_start = false;
+  /// The patch is the refined triangulation delivered unfaired, continuous in position only (C0):
+  /// every fairing of it failed or crossed the mesh, and this is the fallback chain's last resort.
+  bool unfaired = false;
   /// The delivered flow read its boundary data from 2-ring fits (FlowOptions::two_ring_boundary_fits).
   bool two_ring_boundary_fits = false;
   /// The held-out rings chose the flow with FairRegionOptions::held_out_other_functions, and it ran
