@@ -212,8 +212,8 @@ bool filled_alone_instead(Mesh& mesh, const Topology& topo, const std::vector<st
 // again where that fill folds back (retriangulate_if_folded_back) or fails (retriangulate_if_failed),
 // and all that again where it still fails or is delivered unfaired, with the earlier flows in its
 // way at their floors (fill_again_with_earlier_floors, FillOptions::floor_earlier_flows); commits
-// the fill, unless it folds back against a lone triangle it takes in, and keeps its flows' floors
-// in `flows`.
+// the fill, unless it folds back against a lone triangle it takes in or, left unfaired, its holes
+// close better one by one (filled_alone_instead), and keeps its flows' floors in `flows`.
 void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                              const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
                              const FillOptions& options, const FillObserver& observer,
