@@ -185,8 +185,12 @@ void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, const s
   bool slit = false;
   const Balls balls = irregular ? draw_irregular(m, seed, slit) : draw_balls(m, seed, true);
   const Mesh& cut = balls.cut;
-  std::printf("fill  %-26s seed %3llu: %sloops %s", m.name.c_str(), static_cast<unsigned long long>(seed),
-              irregular ? (slit ? "slit, " : "blob, ") : "", bench::border_sizes(cut).c_str());
+  std::printf("fill  %-26s seed %3llu: ", m.name.c_str(), static_cast<unsigned long long>(seed));
+  if (cut.num_faces() == 0) {  // the balls took the whole mesh: nothing to fill (fill_holes refuses it)
+    std::printf("the cut left no face, not run\n");
+    return;
+  }
+  std::printf("%sloops %s", irregular ? (slit ? "slit, " : "blob, ") : "", bench::border_sizes(cut).c_str());
   ++tally.trials;
   if (!write_dir.empty()) write_trial(write_dir, seed_name(m, seed), "cut", cut);
   Mesh filled = cut;
