@@ -704,72 +704,19 @@ FairRegionReport fair_parts(Mesh& mesh, const Topology& topo, std::span<const in
   });
 }
 
-// What of a marked region can be faired: the free vertices whose connected component of the mesh
-// also has a fixed vertex. A vertex no face uses (scans list some: the Stanford bunny's OBJ has
-// 1113) is not on the surface, and a component marked whole has no ring to be faired against: both
-// stay where they are, counted for the note.
-struct AnchoredRegion {
-  std::vector<int> free;  ///< ascending
-  int loose_vertices = 0;
-  int whole_components = 0, in_whole_components = 0;
-  bool complete() const { return loose_vertices == 0 && whole_components == 0; }
-  std::string text() const {
-    std::string t;
-    if (loose_vertices > 0) t = std::to_string(loose_vertices) + (loose_vertices == 1 ? " vertex" : " vertices") + " on no face";
-    if (whole_components > 0)
-      t += (t.empty() ? "" : ", ") + std::to_string(whole_components) +
-           (whole_components == 1 ? " component" : " components") + " of the mesh marked whole (" +
-           std::to_string(in_whole_components) + " vertices)";
-    return t;
-  }
-};
-
-AnchoredRegion anchored_region(const Topology& topo, std::span<const int> free_vertices) {
-  AnchoredRegion a;
-  std::vector<char> state(topo.num_vertices, 0);  // 1: free, 2: reached
-  for (int v : free_vertices) state[v] = 1;
-  std::vector<int> component, stack;
-  for (int seed : free_vertices) {
-    if (state[seed] != 1) continue;
-    component.clear();
-    stack.assign(1, seed);
-    state[seed] = 2;
-    bool anchored = false;
-    while (!stack.empty()) {
-      const int v = stack.back();
-      stack.pop_back();
-      component.push_back(v);
-      for (int u : topo.vertex_vertices.row(v)) {
-        anchored = anchored || state[u] == 0;
-        if (state[u] == 1) state[u] = 2, stack.push_back(u);
-      }
-    }
-    if (anchored) {
-      a.free.insert(a.free.end(), component.begin(), component.end());
-    } else if (topo.vertex_faces.size(seed) == 0) {
-      ++a.loose_vertices;
-    } else {
-      ++a.whole_components;
-      a.in_whole_components += static_cast<int>(component.size());
-    }
-  }
-  std::sort(a.free.begin(), a.free.end());
-  return a;
-}
-
 // fair_parts on what of the region can be faired (anchored_region), the rest left in place and
 // named in the note.
 FairRegionReport fair_validated(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                                 const FairRegionOptions& options, const FlowObserver& observer) {
   for (int v : free_vertices)  // fair_valid reports it
     if (v < 0 || v >= topo.num_vertices) return fair_parts(mesh, topo, free_vertices, options, observer);
-  const AnchoredRegion anchored = anchored_region(topo, free_vertices);
+  const fair_detail::AnchoredRegion anchored = fair_detail::anchored_region(topo, free_vertices);
   if (anchored.complete()) return fair_parts(mesh, topo, free_vertices, options, observer);
   if (anchored.free.empty())
     throw InvalidArgument("fair_region: no vertex of the free region has a fixed vertex in its component of the "
-                          "mesh (" + anchored.text() + "), so there is nothing to fair it against");
+                          "mesh (" + anchored.left_out() + "), so there is nothing to fair it against");
   FairRegionReport report = fair_parts(mesh, topo, anchored.free, options, observer);
-  const std::string left = "left where they are, with no fixed vertex to fair them against: " + anchored.text();
+  const std::string left = "left where they are, with no fixed vertex to fair them against: " + anchored.left_out();
   report.note = report.note.empty() ? left : left + "; " + report.note;
   return report;
 }

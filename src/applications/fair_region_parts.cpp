@@ -107,6 +107,50 @@ FairRegionReport combined_report(std::vector<FairRegionReport> parts, const Fair
 
 }  // namespace
 
+std::string AnchoredRegion::left_out() const {
+  std::string t;
+  if (loose_vertices > 0) t = std::to_string(loose_vertices) + (loose_vertices == 1 ? " vertex" : " vertices") + " on no face";
+  if (whole_components > 0)
+    t += (t.empty() ? "" : ", ") + std::to_string(whole_components) +
+         (whole_components == 1 ? " component" : " components") + " of the mesh marked whole (" +
+         std::to_string(in_whole_components) + " vertices)";
+  return t;
+}
+
+// Each connected set of free vertices, anchored where it reaches a fixed one.
+AnchoredRegion anchored_region(const Topology& topo, std::span<const int> free_vertices) {
+  AnchoredRegion a;
+  std::vector<char> state(topo.num_vertices, 0);  // 1: free, 2: reached
+  for (int v : free_vertices) state[v] = 1;
+  std::vector<int> component, stack;
+  for (int seed : free_vertices) {
+    if (state[seed] != 1) continue;
+    component.clear();
+    stack.assign(1, seed);
+    state[seed] = 2;
+    bool anchored = false;
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      component.push_back(v);
+      for (int u : topo.vertex_vertices.row(v)) {
+        anchored = anchored || state[u] == 0;
+        if (state[u] == 1) state[u] = 2, stack.push_back(u);
+      }
+    }
+    if (anchored) {
+      a.free.insert(a.free.end(), component.begin(), component.end());
+    } else if (topo.vertex_faces.size(seed) == 0) {
+      ++a.loose_vertices;
+    } else {
+      ++a.whole_components;
+      a.in_whole_components += static_cast<int>(component.size());
+    }
+  }
+  std::sort(a.free.begin(), a.free.end());
+  return a;
+}
+
 FairRegionReport fair_in_parts(const Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                                const FairRegionOptions& options, const PartFairing& fair_part) {
   for (int v : free_vertices)
