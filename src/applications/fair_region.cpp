@@ -695,30 +695,13 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
 namespace {
 
 // fair_region on a validated mesh: part by part (fair_in_parts), each part with its crossing check.
-FairRegionReport fair_parts(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
-                            const FairRegionOptions& options, const FlowObserver& observer) {
+FairRegionReport fair_validated(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                const FairRegionOptions& options, const FlowObserver& observer) {
   return fair_detail::fair_in_parts(mesh, topo, free_vertices, options, [&](std::span<const int> part) {
     return fair_uncrossed(mesh, topo, part, options, [&](Mesh& faired, const FairRegionOptions& o) {
       return fair_detail::fair_valid_mesh(faired, topo, part, o, observer);
     });
   });
-}
-
-// fair_parts on what of the region can be faired (anchored_region), the rest left in place and
-// named in the note.
-FairRegionReport fair_validated(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
-                                const FairRegionOptions& options, const FlowObserver& observer) {
-  for (int v : free_vertices)  // fair_valid reports it
-    if (v < 0 || v >= topo.num_vertices) return fair_parts(mesh, topo, free_vertices, options, observer);
-  const fair_detail::AnchoredRegion anchored = fair_detail::anchored_region(topo, free_vertices);
-  if (anchored.complete()) return fair_parts(mesh, topo, free_vertices, options, observer);
-  if (anchored.free.empty())
-    throw InvalidArgument("fair_region: no vertex of the free region has a fixed vertex in its component of the "
-                          "mesh (" + anchored.left_out() + "), so there is nothing to fair it against");
-  FairRegionReport report = fair_parts(mesh, topo, anchored.free, options, observer);
-  const std::string left = "left where they are, with no fixed vertex to fair them against: " + anchored.left_out();
-  report.note = report.note.empty() ? left : left + "; " + report.note;
-  return report;
 }
 
 }  // namespace

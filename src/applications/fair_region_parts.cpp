@@ -3,6 +3,7 @@
 #include "stopwatch.h"
 
 #include <fairsurf/geometry/continuity_measure.h>
+#include <fairsurf/mesh/errors.h>
 
 #include <algorithm>
 #include <string>
@@ -105,7 +106,19 @@ FairRegionReport combined_report(std::vector<FairRegionReport> parts, const Fair
   return whole;
 }
 
-}  // namespace
+// What of a marked region can be faired: the free vertices whose connected component of the mesh
+// also has a fixed vertex. A vertex no face uses (scans list some: the Stanford bunny's OBJ has
+// 1113) is not on the surface, and a component marked whole has no ring to be faired against: both
+// stay where they are, counted for fair_region's note.
+struct AnchoredRegion {
+  std::vector<int> free;        // ascending
+  int loose_vertices = 0;       // free vertices no face uses
+  int whole_components = 0;     // components of the mesh whose every vertex is free
+  int in_whole_components = 0;  // their vertices
+  bool complete() const { return loose_vertices == 0 && whole_components == 0; }
+  // "1 vertex on no face, 2 components of the mesh marked whole (84 vertices)".
+  std::string left_out() const;
+};
 
 std::string AnchoredRegion::left_out() const {
   std::string t;
@@ -117,7 +130,8 @@ std::string AnchoredRegion::left_out() const {
   return t;
 }
 
-// Each connected set of free vertices, anchored where it reaches a fixed one.
+// The AnchoredRegion of `free_vertices` (in range): each connected set of free vertices, anchored
+// where it reaches a fixed one.
 AnchoredRegion anchored_region(const Topology& topo, std::span<const int> free_vertices) {
   AnchoredRegion a;
   std::vector<char> state(topo.num_vertices, 0);  // 1: free, 2: reached
@@ -151,10 +165,9 @@ AnchoredRegion anchored_region(const Topology& topo, std::span<const int> free_v
   return a;
 }
 
-FairRegionReport fair_in_parts(const Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
-                               const FairRegionOptions& options, const PartFairing& fair_part) {
-  for (int v : free_vertices)
-    if (v < 0 || v >= mesh.num_vertices()) return fair_part(free_vertices);
+// fair_in_parts on a region whose every vertex is in range and anchored.
+FairRegionReport fair_anchored_parts(const Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                                     const FairRegionOptions& options, const PartFairing& fair_part) {
   const std::vector<std::vector<int>> parts = region_parts(topo, free_vertices, rings_needed(options.continuity));
   if (parts.size() <= 1) return fair_part(free_vertices);
   const auto start = detail::Clock::now();
@@ -164,6 +177,23 @@ FairRegionReport fair_in_parts(const Mesh& mesh, const Topology& topo, std::span
   whole.continuity = measure_continuity(mesh.V, mesh.F, topo, free_vertices);
   whole.seconds = detail::seconds_since(start);
   return whole;
+}
+
+}  // namespace
+
+FairRegionReport fair_in_parts(const Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+                               const FairRegionOptions& options, const PartFairing& fair_part) {
+  for (int v : free_vertices)
+    if (v < 0 || v >= mesh.num_vertices()) return fair_part(free_vertices);
+  const AnchoredRegion anchored = anchored_region(topo, free_vertices);
+  if (anchored.complete()) return fair_anchored_parts(mesh, topo, free_vertices, options, fair_part);
+  if (anchored.free.empty())
+    throw InvalidArgument("fair_region: no vertex of the free region has a fixed vertex in its component of the "
+                          "mesh (" + anchored.left_out() + "), so there is nothing to fair it against");
+  FairRegionReport report = fair_anchored_parts(mesh, topo, anchored.free, options, fair_part);
+  const std::string left = "left where they are, with no fixed vertex to fair them against: " + anchored.left_out();
+  report.note = report.note.empty() ? left : left + "; " + report.note;
+  return report;
 }
 
 }  // namespace fair_detail
