@@ -19,6 +19,7 @@
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/face_intersection.h>
+#include <fairsurf/mesh/region.h>
 #include <fairsurf/mesh/region_selection.h>
 #include <fairsurf/mesh/topology.h>
 #include <fairsurf/mesh/validate.h>
@@ -319,11 +320,7 @@ void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, bool irregu
     if (!write_dir.empty()) write_trial(write_dir, trial, "faired", with_region_property(faired, region));
     const bool steady = settled(r);
     // More crossings than the given region had (a noisy scan's may cross already).
-    std::vector<char> free(mesh.num_vertices(), 0);
-    for (int v : region) free[v] = 1;
-    std::vector<int> faces;
-    for (int f = 0; f < mesh.num_faces(); ++f)
-      if (free[mesh.F(f, 0)] || free[mesh.F(f, 1)] || free[mesh.F(f, 2)]) faces.push_back(f);
+    const std::vector<int> faces = region_faces(mesh.F, mesh.num_vertices(), region);
     const bool crossing = find_face_intersections(faired.V, faired.F, faces, 0).size() >
                           find_face_intersections(mesh.V, mesh.F, faces, 0).size();
     tally.not_steady += !steady;

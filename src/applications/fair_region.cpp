@@ -11,6 +11,7 @@
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/face_intersection.h>
 #include <fairsurf/mesh/mesh_quality.h>
+#include <fairsurf/mesh/region.h>
 #include <fairsurf/mesh/submesh.h>
 #include <fairsurf/mesh/topology.h>
 #include <fairsurf/mesh/validate.h>
@@ -558,17 +559,6 @@ FairRegionReport fair_checked_mesh(Mesh& mesh, const Topology& topo, std::span<c
 
 namespace {
 
-// The faces with a vertex in `free_vertices`.
-std::vector<int> region_faces(const Mesh& mesh, std::span<const int> free_vertices) {
-  std::vector<char> free(mesh.num_vertices(), 0);
-  for (int v : free_vertices)
-    if (v >= 0 && v < mesh.num_vertices()) free[v] = 1;
-  std::vector<int> faces;
-  for (int f = 0; f < mesh.num_faces(); ++f)
-    if (free[mesh.F(f, 0)] || free[mesh.F(f, 1)] || free[mesh.F(f, 2)]) faces.push_back(f);
-  return faces;
-}
-
 // "face a crosses face b, N crossings" for the first of `crossings`.
 std::string crossing_text(const std::vector<FaceIntersection>& crossings) {
   const FaceIntersection& c = crossings.front();
@@ -651,7 +641,7 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
                                 const FairRegionOptions& options, Fair&& fair) {
   const bool floor = options.linear_floor && options.harmonic_start_iterations > 0;
   if (!floor) return fair(mesh, options);
-  const std::vector<int> faces = region_faces(mesh, free_vertices);
+  const std::vector<int> faces = region_faces(mesh.F, mesh.num_vertices(), free_vertices);
   const GivenCrossings given_crossed = given_crossings(mesh, faces);
   const auto start = detail::Clock::now();
   const Vertices given = mesh.V;

@@ -27,6 +27,16 @@ Region make_region(const Topology& topo, std::span<const int> free_vertices, Con
   return r;
 }
 
+std::vector<int> region_faces(const Faces& F, int num_vertices, std::span<const int> vertices) {
+  std::vector<char> in(static_cast<std::size_t>(num_vertices), 0);
+  for (int v : vertices)
+    if (v >= 0 && v < num_vertices) in[static_cast<std::size_t>(v)] = 1;
+  std::vector<int> faces;
+  for (int f = 0; f < F.rows(); ++f)
+    if (in[F(f, 0)] || in[F(f, 1)] || in[F(f, 2)]) faces.push_back(f);
+  return faces;
+}
+
 std::vector<int> interior_vertices(const Topology& topo, int fixed_rings) {
   const auto border = boundary_vertex_flags(topo);
   std::vector<int> seeds;

@@ -3,6 +3,7 @@
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
 #include <fairsurf/mesh/face_intersection.h>
+#include <fairsurf/mesh/region.h>
 #include <fairsurf/mesh/region_selection.h>
 #include <fairsurf/mesh/topology.h>
 
@@ -381,12 +382,7 @@ namespace {
 // The crossings of the faces of `m` with a vertex in `region` with faces of `m`: the first only
 // (enough to tell whether there is one), or all of them with `all`.
 std::vector<FaceIntersection> region_crossings(const Mesh& m, const std::vector<int>& region, bool all = false) {
-  std::vector<char> free(m.num_vertices(), 0);
-  for (int v : region) free[v] = 1;
-  std::vector<int> faces;
-  for (int f = 0; f < m.num_faces(); ++f)
-    if (free[m.F(f, 0)] || free[m.F(f, 1)] || free[m.F(f, 2)]) faces.push_back(f);
-  return find_face_intersections(m.V, m.F, faces, all ? 0 : 1);
+  return find_face_intersections(m.V, m.F, region_faces(m.F, m.num_vertices(), region), all ? 0 : 1);
 }
 
 // bench_real_holes' fair region airplane 1206 8h: the vertices within 8 h of kFinRoot.

@@ -80,3 +80,15 @@ TEST(Region, ParsesContinuityAndRejectsBadInput) {
   EXPECT_THROW(make_region(g.topo, std::vector<int>{}), InvalidArgument);
   EXPECT_THROW(make_region(g.topo, std::vector<int>{5000}), InvalidArgument);
 }
+
+TEST(Region, RegionFacesAreTheFacesWithAFreeVertexAscending) {
+  Faces F(4, 3);
+  F << 0, 1, 2,  //
+      2, 3, 4,   //
+      5, 6, 7,   //
+      4, 8, 2;
+  EXPECT_EQ(region_faces(F, 9, std::vector<int>{4}), (std::vector<int>{1, 3}));
+  EXPECT_EQ(region_faces(F, 9, std::vector<int>{2, 2, 7}), (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(region_faces(F, 9, std::vector<int>{-1, 9, 3}), (std::vector<int>{1}));  // out of range ignored
+  EXPECT_TRUE(region_faces(F, 9, std::vector<int>{}).empty());
+}

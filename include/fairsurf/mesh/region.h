@@ -38,6 +38,10 @@ struct Region {
 Region make_region(const Topology& topo, std::span<const int> free_vertices,
                    Continuity requested = Continuity::G2);
 
+/// The faces of F (over `num_vertices` vertices) with a vertex in `vertices`, ascending: the faces a
+/// free region moves. Indices outside [0, num_vertices) are ignored.
+std::vector<int> region_faces(const Faces& F, int num_vertices, std::span<const int> vertices);
+
 /// Every vertex except those within `fixed_rings` rings of the mesh border (border vertices are
 /// ring 1): the default free set for smoothing an open mesh with its border fixed. On a closed mesh
 /// every vertex is returned.
