@@ -18,7 +18,8 @@ struct RepairArgs {
   std::string input, output;
   bool json = false, force = false;
   bool no_merge = false, no_stitch = false, no_duplicate_faces = false, no_degenerate = false;
-  bool no_split_vertices = false, no_resolve_edges = false, no_orient = false, keep_unreferenced = false;
+  bool no_split_vertices = false, no_resolve_edges = false, no_orient = false, keep_fins = false;
+  bool keep_unreferenced = false;
   RepairOptions options;
 };
 
@@ -32,6 +33,7 @@ RepairOptions repair_options(const RepairArgs& args) {
   o.resolve_non_manifold_edges = !args.no_resolve_edges;
   o.orient = !args.no_orient;
   o.remove_small_components = o.min_component_faces > 0;
+  o.remove_loose_fins = !args.keep_fins;
   o.remove_unreferenced_vertices = !args.keep_unreferenced;
   return o;
 }
@@ -103,6 +105,8 @@ void setup_repair(CLI::App& app) {
   cmd->add_option("--min-component-faces", args->options.min_component_faces,
                   "Remove components with fewer faces (default 2: lone triangles; 0 keeps all)")
       ->check(whole_number_at_least(0));
+  cmd->add_flag("--keep-fins", args->keep_fins,
+                "Keep loose fins: pieces with no vertex inside that a split cut loose from a surface");
   cmd->add_flag("--keep-unreferenced", args->keep_unreferenced, "Keep vertices no face uses");
   cmd->callback([args] { run_repair(*args); });
 }

@@ -29,6 +29,7 @@ std::vector<Count> changes(const RepairReport& r) {
           {r.vertices_added, "vertex copy added", "vertex copies added"},
           {r.faces_flipped, "face flipped", "faces flipped"},
           {r.small_components_removed, "small component removed", "small components removed"},
+          {r.fins_removed, "loose fin removed", "loose fins removed"},
           {r.unreferenced_vertices_removed, "unreferenced vertex removed", "unreferenced vertices removed"},
           {r.degenerate_faces_left, "degenerate face left", "degenerate faces left"},
           {r.non_orientable_components, "non-orientable component (reported, not fixed)",

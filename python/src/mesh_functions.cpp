@@ -120,7 +120,8 @@ void register_mesh_functions(py::module_& m) {
       [](const py::handle& V, const py::handle& F, bool merge_duplicate_vertices, double merge_tolerance,
          bool stitch_borders, double stitch_tolerance, bool remove_duplicate_faces, bool fix_degenerate_faces,
          double needle_tolerance, bool split_non_manifold_vertices, bool keep_border_pinches,
-         bool resolve_non_manifold_edges, bool orient, int min_component_faces, bool remove_unreferenced_vertices) {
+         bool resolve_non_manifold_edges, bool orient, int min_component_faces, bool remove_loose_fins,
+         bool remove_unreferenced_vertices) {
         RepairOptions o;
         o.merge_duplicate_vertices = merge_duplicate_vertices;
         o.merge_tolerance = merge_tolerance;
@@ -135,6 +136,7 @@ void register_mesh_functions(py::module_& m) {
         o.orient = orient;
         o.remove_small_components = min_component_faces > 0;  // as --min-component-faces 0
         o.min_component_faces = min_component_faces;
+        o.remove_loose_fins = remove_loose_fins;
         o.remove_unreferenced_vertices = remove_unreferenced_vertices;
         require_repair_values(o);
         return repair_binding(V, F, o);
@@ -144,7 +146,7 @@ void register_mesh_functions(py::module_& m) {
       "fix_degenerate_faces"_a = true, "needle_tolerance"_a = RepairOptions{}.needle_tolerance,
       "split_non_manifold_vertices"_a = true, "keep_border_pinches"_a = false, "resolve_non_manifold_edges"_a = true,
       "orient"_a = true, "min_component_faces"_a = RepairOptions{}.min_component_faces,
-      "remove_unreferenced_vertices"_a = true,
+      "remove_loose_fins"_a = true, "remove_unreferenced_vertices"_a = true,
       "Repairs the mesh as `fairsurf repair` (keep_border_pinches=True: as `fairsurf fill --repair`); "
       "returns (V, F, report): the fields of `repair --json`, vertex_origin (each output vertex's input "
       "row) and vertex_destination (each input vertex's output row, -1 where removed).");

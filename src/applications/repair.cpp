@@ -67,7 +67,7 @@ int change_count(const RepairReport& r) {
   return r.invalid_faces_removed + r.vertices_merged + r.border_vertices_stitched + r.faces_collapsed +
          r.duplicate_faces_removed + r.needles_collapsed + r.caps_flipped + r.caps_removed +
          r.non_manifold_edges + r.vertices_split + r.vertices_added + r.faces_flipped +
-         r.small_components_removed + r.unreferenced_vertices_removed;
+         r.small_components_removed + r.fins_removed + r.unreferenced_vertices_removed;
 }
 
 // Merging, then removing what merging collapsed or doubled.
@@ -97,6 +97,7 @@ void repair_round(Work& work, const RepairOptions& options, RepairReport& report
   Adjacency unsplit;  // the adjacency split_non_manifold built, when it changed nothing
   split_non_manifold(work, options, report, &unsplit);
   if (options.remove_small_components) remove_small_components(work, options.min_component_faces, report);
+  if (options.remove_loose_fins) remove_loose_fins(work, report);
   const bool changed = change_count(report) > before;
   if (changed) merge_round(work, options, report);  // else merged already
   if (options.orient) orient_faces(work, report, changed || unsplit.vertex_offsets.empty() ? nullptr : &unsplit);
@@ -149,6 +150,8 @@ std::vector<NamedCount> named_counts(const RepairReport& r) {
           {"non_orientable_components", r.non_orientable_components},
           {"small_components_removed", r.small_components_removed},
           {"small_component_faces_removed", r.small_component_faces_removed},
+          {"fins_removed", r.fins_removed},
+          {"fin_faces_removed", r.fin_faces_removed},
           {"unreferenced_vertices_removed", r.unreferenced_vertices_removed}};
 }
 

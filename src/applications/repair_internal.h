@@ -75,6 +75,7 @@ void split_non_manifold(Work& work, const RepairOptions& options, RepairReport& 
 /// `adjacency`, if given, must describe work.faces (saves rebuilding it).
 void orient_faces(Work& work, RepairReport& report, const Adjacency* adjacency = nullptr);
 void remove_small_components(Work& work, int min_faces, RepairReport& report);
+void remove_loose_fins(Work& work, RepairReport& report);
 
 /// Whether face f of `work` is degenerate in validate's sense (zero or near-zero area).
 bool is_degenerate(const Work& work, const Tri& f, double tolerance);

@@ -1,10 +1,11 @@
-// Orientation and small components, both on the manifold mesh the splits leave.
+// Orientation, small components and loose fins, all on the manifold mesh the splits leave.
 #include "repair_internal.h"
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <numeric>
+#include <unordered_map>
 
 namespace fairsurf::repair_detail {
 namespace {
@@ -94,6 +95,56 @@ void remove_small_components(Work& work, int min_faces, RepairReport& report) {
   kept.reserve(work.faces.size());
   for (const Tri& f : work.faces)
     if (size[find(f[0])] >= min_faces) kept.push_back(f);
+  work.faces = std::move(kept);
+}
+
+
+// A fin is a component with no vertex inside (every vertex on a border edge) that shares an input
+// vertex with a component that has one: a strip of faces a split cut loose from a surface at a
+// non-manifold edge or vertex, as a scanner's zipper leaves them. Left in, it lies against the
+// surface it hung from, where a fill of its border or of a hole beside it runs into that surface.
+void remove_loose_fins(Work& work, RepairReport& report) {
+  const int n = work.num_vertices();
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const Tri& f : work.faces)
+    for (int k = 1; k < 3; ++k) {
+      const int a = find(f[0]), b = find(f[k]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  const Adjacency adj = build_adjacency(work.faces, n);
+  std::vector<char> on_border(n, 0), used(n, 0), has_inside(n, 0);
+  for (int e = 0; e < adj.num_edges(); ++e) {
+    const auto corners = adj.corners(e);
+    if (corners.size() != 1) continue;
+    const Tri& f = work.faces[corners[0] / 3];
+    on_border[f[corners[0] % 3]] = on_border[f[(corners[0] % 3 + 1) % 3]] = 1;
+  }
+  for (const Tri& f : work.faces)
+    for (int v : f) used[v] = 1;
+  for (int v = 0; v < n; ++v)
+    if (used[v] && !on_border[v]) has_inside[find(v)] = 1;
+  std::unordered_map<int, int> surface_at;  // input vertex -> a component with a vertex inside using it
+  for (int v = 0; v < n; ++v)
+    if (used[v] && has_inside[find(v)]) surface_at.emplace(work.origin[v], find(v));
+  std::vector<char> fin(n, 0);
+  for (int v = 0; v < n; ++v) {
+    if (!used[v] || has_inside[find(v)]) continue;
+    const auto it = surface_at.find(work.origin[v]);
+    if (it != surface_at.end()) fin[find(v)] = 1;
+  }
+  std::vector<int> fin_faces(n, 0);
+  std::vector<Tri> kept;
+  kept.reserve(work.faces.size());
+  for (const Tri& f : work.faces)
+    if (fin[find(f[0])]) ++fin_faces[find(f[0])];
+    else kept.push_back(f);
+  for (int v = 0; v < n; ++v)
+    if (fin_faces[v] > 0) ++report.fins_removed, report.fin_faces_removed += fin_faces[v];
   work.faces = std::move(kept);
 }
 

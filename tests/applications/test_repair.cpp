@@ -6,6 +6,7 @@
 #include <fairsurf/applications/smooth.h>
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
+#include <fairsurf/mesh/topology.h>
 #include <fairsurf/mesh/validate.h>
 
 #include <gtest/gtest.h>
@@ -29,6 +30,10 @@ Mesh make_mesh(const std::vector<Eigen::Vector3d>& points, const std::vector<std
   for (std::size_t f = 0; f < faces.size(); ++f)
     for (int k = 0; k < 3; ++k) m.F(static_cast<Eigen::Index>(f), k) = faces[f][k];
   return m;
+}
+
+int component_count(const Mesh& m) {
+  return connected_components(m.F, build_topology(m.F, m.num_vertices())).count;
 }
 
 // Same vertex and face arrays, bit for bit (Eigen's == needs equal sizes).
@@ -169,6 +174,55 @@ TEST(Repair, DetachesTheThirdPageOfABook) {
   EXPECT_EQ(r.non_manifold_vertices.count, 0);
   EXPECT_EQ(r.inconsistent_orientation_edges.count, 0);
   EXPECT_EQ(m.num_faces(), 3);
+}
+
+// A strip of two faces standing on an inner edge of a grid, as a zippered scan's overlaps hang
+// them: the split cuts it loose, and it is removed as a loose fin, leaving the grid as it was. A
+// square lying apart, which no split made, has no vertex inside either and stays.
+TEST(Repair, RemovesAFinTheSplitCutLooseAndKeepsAPieceThatTouchesNothing) {
+  const Mesh grid = test::regular_grid(4, 4);
+  const int n = grid.num_vertices();
+  const int a = 5 * 1 + 1, b = 5 * 1 + 2;  // vertices (1, 1) and (2, 1): an inner edge
+  ASSERT_EQ(grid.V.row(a), Eigen::RowVector3d(1, 1, 0));
+  ASSERT_EQ(grid.V.row(b), Eigen::RowVector3d(2, 1, 0));
+  Mesh m = grid;
+  m.V.conservativeResize(n + 6, 3);
+  m.V.row(n) << 1.5, 1, 1;  // the fin's two upper corners
+  m.V.row(n + 1) << 2.5, 1, 1;
+  m.V.row(n + 2) << 10, 0, 0;  // the square apart
+  m.V.row(n + 3) << 11, 0, 0;
+  m.V.row(n + 4) << 11, 1, 0;
+  m.V.row(n + 5) << 10, 1, 0;
+  const int grid_faces = grid.num_faces();
+  m.F.conservativeResize(grid_faces + 4, 3);
+  m.F.row(grid_faces) << a, b, n;
+  m.F.row(grid_faces + 1) << b, n + 1, n;
+  m.F.row(grid_faces + 2) << n + 2, n + 3, n + 4;
+  m.F.row(grid_faces + 3) << n + 2, n + 4, n + 5;
+
+  Mesh kept = m;
+  RepairOptions keep;
+  keep.remove_loose_fins = false;
+  const RepairReport kept_report = repair(kept, keep);
+  EXPECT_EQ(kept_report.non_manifold_edges, 1);
+  EXPECT_EQ(kept_report.fins_removed, 0);
+  EXPECT_EQ(kept.num_faces(), grid_faces + 4);
+  EXPECT_EQ(component_count(kept), 3);
+
+  const Mesh in = m;
+  const RepairReport report = repair(m);
+  EXPECT_EQ(report.non_manifold_edges, 1);
+  EXPECT_EQ(report.fins_removed, 1);
+  EXPECT_EQ(report.fin_faces_removed, 2);
+  EXPECT_EQ(m.num_faces(), grid_faces + 2);
+  EXPECT_EQ(component_count(m), 2);  // the grid, whole again, and the square
+  const ValidationReport r = validate(m);
+  EXPECT_EQ(r.duplicate_vertex_positions.count, 0);
+  EXPECT_EQ(r.non_manifold_edges.count, 0);
+  EXPECT_EQ(m.num_vertices(), n + 4);
+  expect_no_vertex_moved(in, m);
+  Mesh again = m;
+  EXPECT_FALSE(repair(again).changed());
 }
 
 TEST(Repair, OrientsAFlippedFaceAndRemovesDuplicatesAndBadFaces) {

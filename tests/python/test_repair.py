@@ -55,6 +55,19 @@ def test_operations_switch_off_and_bad_values_are_refused(data_dir):
         assert str(error.value) == f"repair: {name} must be at least 0, not -1"
 
 
+def test_loose_fins_are_removed_unless_kept_as_the_command_keeps_them(cli, tmp_path, data_dir):
+    # The raw Stanford zipper output: its splits cut three two-face fins loose from the surface.
+    mesh = data_dir / "stanford_bunny_zipper_res2.ply"
+    V, F = fairsurf.read_mesh(mesh)
+    _, F2, report = fairsurf.repair(V, F)
+    assert report["fins_removed"] == 3 and report["fin_faces_removed"] == 6
+    _, F3, kept = fairsurf.repair(V, F, remove_loose_fins=False)
+    assert kept["fins_removed"] == 0 and len(F3) == len(F2) + 6
+    printed = subprocess.run([str(cli), "repair", str(mesh), "-o", str(tmp_path / "out.ply"), "--json",
+                              "--keep-fins"], check=True, capture_output=True, text=True).stdout
+    assert json.loads(printed)["fin_faces_removed"] == 0
+
+
 def test_fill_holes_takes_the_mesh_once_repaired_as_fill_repair_does(cli, tmp_path, data_dir):
     # Fins on non-manifold edges: fill_holes refuses the mesh; repaired with the border's pinches kept
     # (what `fairsurf fill --repair` does), it fills what the command fills, to the bit.

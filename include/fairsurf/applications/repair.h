@@ -61,6 +61,10 @@ struct RepairOptions {
   /// lone triangles, the debris a split or a removed cap can leave.
   bool remove_small_components = true;
   int min_component_faces = 2;
+  /// Remove fins: components with no vertex inside (every vertex on the border) that a split cut
+  /// loose from a component with one, at a vertex the two still share a position at (a zippered
+  /// scan's overlaps hang such strips on its surface).
+  bool remove_loose_fins = true;
   /// Remove vertices no face uses (and those merged away).
   bool remove_unreferenced_vertices = true;
 };
@@ -87,6 +91,8 @@ struct RepairReport {
   int non_orientable_components = 0;   ///< reported, not fixed (a Möbius band stays one)
   int small_components_removed = 0;
   int small_component_faces_removed = 0;
+  int fins_removed = 0;                ///< components with no vertex inside cut loose from a surface
+  int fin_faces_removed = 0;
   int unreferenced_vertices_removed = 0;  ///< including the vertices merged away
 
   /// #V out: for each output vertex, the input vertex whose position and attributes it carries (the
