@@ -99,10 +99,49 @@ void remove_small_components(Work& work, int min_faces, RepairReport& report) {
 }
 
 
+// Faces that hang by one edge from the rest of their piece, at a vertex that is theirs alone and
+// a copy of a vertex inside the surface, along an edge that doubles an edge of the surface (the same
+// two input vertices): pages a split cut loose at a non-manifold edge. A hole through such a page
+// runs along that surface edge, where any patch touches the surface.
+std::vector<char> hanging_pages(const Work& work) {
+  const int n = work.num_vertices();
+  const auto key = [&](long long a, long long b) {
+    return std::min(a, b) * static_cast<long long>(work.V.rows() + n) + std::max(a, b);
+  };
+  std::vector<int> face_count(n, 0);
+  std::unordered_map<long long, int> edge_faces;  // working edge -> its faces
+  for (const Tri& f : work.faces)
+    for (int k = 0; k < 3; ++k) ++face_count[f[k]], ++edge_faces[key(f[k], f[(k + 1) % 3])];
+  std::vector<char> on_border(n, 0);
+  for (const Tri& f : work.faces)
+    for (int k = 0; k < 3; ++k)
+      if (edge_faces[key(f[k], f[(k + 1) % 3])] == 1) on_border[f[k]] = on_border[f[(k + 1) % 3]] = 1;
+  std::unordered_map<int, char> inside_at;  // input vertex -> a working copy inside the surface
+  for (int v = 0; v < n; ++v)
+    if (face_count[v] > 0 && !on_border[v]) inside_at[work.origin[v]] = 1;
+  std::unordered_map<long long, int> working_edges;  // input edge -> distinct working edges on it
+  for (const auto& [edge, faces] : edge_faces) {
+    const long long a = edge / (work.V.rows() + n), b = edge % (work.V.rows() + n);
+    ++working_edges[key(work.origin[a], work.origin[b])];
+  }
+  const auto doubled = [&](int a, int b) { return working_edges[key(work.origin[a], work.origin[b])] > 1; };
+  std::vector<char> page(work.faces.size(), 0);
+  for (std::size_t i = 0; i < work.faces.size(); ++i) {
+    const Tri& f = work.faces[i];
+    for (int k = 0; k < 3 && !page[i]; ++k) {
+      const int v = f[k];
+      if (face_count[v] != 1 || !inside_at.contains(work.origin[v])) continue;
+      page[i] = doubled(v, f[(k + 1) % 3]) || doubled(v, f[(k + 2) % 3]);
+    }
+  }
+  return page;
+}
+
 // A fin is a component with no vertex inside (every vertex on a border edge) that shares an input
 // vertex with a component that has one: a strip of faces a split cut loose from a surface at a
 // non-manifold edge or vertex, as a scanner's zipper leaves them. Left in, it lies against the
 // surface it hung from, where a fill of its border or of a hole beside it runs into that surface.
+// A page hanging by one edge (hanging_pages) is the fin of one face that is still joined to its piece.
 void remove_loose_fins(Work& work, RepairReport& report) {
   const int n = work.num_vertices();
   std::vector<int> parent(n);
@@ -137,12 +176,16 @@ void remove_loose_fins(Work& work, RepairReport& report) {
     const auto it = surface_at.find(work.origin[v]);
     if (it != surface_at.end()) fin[find(v)] = 1;
   }
+  const std::vector<char> page = hanging_pages(work);
   std::vector<int> fin_faces(n, 0);
   std::vector<Tri> kept;
   kept.reserve(work.faces.size());
-  for (const Tri& f : work.faces)
+  for (std::size_t i = 0; i < work.faces.size(); ++i) {
+    const Tri& f = work.faces[i];
     if (fin[find(f[0])]) ++fin_faces[find(f[0])];
+    else if (page[i]) ++report.fins_removed, ++report.fin_faces_removed;
     else kept.push_back(f);
+  }
   for (int v = 0; v < n; ++v)
     if (fin_faces[v] > 0) ++report.fins_removed, report.fin_faces_removed += fin_faces[v];
   work.faces = std::move(kept);

@@ -225,6 +225,58 @@ TEST(Repair, RemovesAFinTheSplitCutLooseAndKeepsAPieceThatTouchesNothing) {
   EXPECT_FALSE(repair(again).changed());
 }
 
+// A third page on an inner edge (a, b) of a grid that belongs to another sheet, a fan standing on
+// the grid at a: the split cuts the page loose at b, where it is the only face of b's copy, and it
+// hangs from the fan by its edge (a, c) along the grid's edge. It is removed; the fan, which has a
+// vertex inside, stays. So does a face that a third sheet rests on the grid by one corner (no edge
+// of the grid under it), and triple_vierbein's fins, where no surface has a vertex inside.
+TEST(Repair, RemovesAPageTheSplitCutLooseAlongAnEdgeOfTheSurface) {
+  const Mesh grid = test::regular_grid(4, 4);
+  const int n = grid.num_vertices();
+  const int a = 5 * 1 + 1, b = 5 * 1 + 2;  // vertices (1, 1) and (2, 1): an inner edge
+  Mesh m = grid;
+  const std::vector<Eigen::RowVector3d> sheet = {{1.5, 1, 1},   {2, 1, 0.5}, {2, 1, 1.5},
+                                                 {1.5, 1, 2}, {1, 1, 1.5}, {0.8, 1, 0.7}};
+  m.V.conservativeResize(n + 6, 3);
+  for (int i = 0; i < 6; ++i) m.V.row(n + i) = sheet[i];
+  const int s = n, c = n + 1;
+  const int ring[] = {a, c, n + 2, n + 3, n + 4, n + 5};
+  const int grid_faces = grid.num_faces();
+  m.F.conservativeResize(grid_faces + 7, 3);
+  for (int i = 0; i < 6; ++i) m.F.row(grid_faces + i) << s, ring[i], ring[(i + 1) % 6];
+  m.F.row(grid_faces + 6) << a, b, c;  // the page
+  // The third sheet: a fan in the plane x = 3 and a face below it touching the grid at (3, 3).
+  const int g = 5 * 3 + 3;
+  const std::vector<Eigen::RowVector3d> third = {{3, 3, 1.5},   {3, 2.5, 0.7}, {3, 3.5, 0.7}, {3, 4, 1.5},
+                                                 {3, 3.5, 2.3}, {3, 2.5, 2.3}, {3, 2, 1.5}};
+  const int t = n + 6;
+  m.V.conservativeResize(t + 7, 3);
+  for (int i = 0; i < 7; ++i) m.V.row(t + i) = third[i];
+  m.F.conservativeResize(grid_faces + 14, 3);
+  for (int i = 0; i < 6; ++i) m.F.row(grid_faces + 7 + i) << t, t + 1 + i, t + 1 + (i + 1) % 6;
+  m.F.row(grid_faces + 13) << t + 2, t + 1, g;
+
+  Mesh kept = m;
+  RepairOptions keep;
+  keep.remove_loose_fins = false;
+  EXPECT_EQ(repair(kept, keep).non_manifold_edges, 1);
+  EXPECT_EQ(kept.num_faces(), grid_faces + 14);
+
+  const Mesh in = m;
+  const RepairReport report = repair(m);
+  EXPECT_EQ(report.non_manifold_edges, 1);
+  EXPECT_EQ(report.fins_removed, 1);
+  EXPECT_EQ(report.fin_faces_removed, 1);
+  EXPECT_EQ(m.num_faces(), grid_faces + 13);
+  EXPECT_EQ(component_count(m), 3);  // the grid, the fan and the third sheet
+  expect_no_vertex_moved(in, m);
+  Mesh again = m;
+  EXPECT_FALSE(repair(again).changed());
+
+  Mesh fins = read_mesh(test::data_path("triple_vierbein.obj"));
+  EXPECT_EQ(repair(fins).fins_removed, 0);
+}
+
 TEST(Repair, OrientsAFlippedFaceAndRemovesDuplicatesAndBadFaces) {
   Mesh m = test::tetrahedron();
   const Mesh clean = m;
