@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <numeric>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace fairsurf::repair_detail {
 namespace {
@@ -72,10 +73,12 @@ void orient_faces(Work& work, RepairReport& report, const Adjacency* adjacency) 
     if (flip[f] == 1) std::swap(work.faces[f][1], work.faces[f][2]), ++report.faces_flipped;
 }
 
-// Components are faces connected through shared vertices (validate's and topology.h's notion).
-void remove_small_components(Work& work, int min_faces, RepairReport& report) {
-  const int n = work.num_vertices();
-  std::vector<int> parent(n);
+namespace {
+
+// Per vertex, the lowest vertex of its component: faces connected through shared vertices
+// (validate's and topology.h's notion).
+std::vector<int> component_roots(const Work& work) {
+  std::vector<int> parent(work.num_vertices());
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int v) {
     while (parent[v] != v) v = parent[v] = parent[parent[v]];
@@ -86,56 +89,72 @@ void remove_small_components(Work& work, int min_faces, RepairReport& report) {
       const int a = find(f[0]), b = find(f[k]);
       if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
-  std::vector<int> size(n, 0);
-  for (const Tri& f : work.faces) ++size[find(f[0])];
-  for (int v = 0; v < n; ++v)
-    if (find(v) == v && size[v] > 0 && size[v] < min_faces)
-      ++report.small_components_removed, report.small_component_faces_removed += size[v];
-  std::vector<Tri> kept;
-  kept.reserve(work.faces.size());
-  for (const Tri& f : work.faces)
-    if (size[find(f[0])] >= min_faces) kept.push_back(f);
-  work.faces = std::move(kept);
+  for (int v = 0; v < work.num_vertices(); ++v) parent[v] = find(v);
+  return parent;
 }
 
+// Whether each vertex is on a border edge (an edge of one face).
+std::vector<char> border_vertices(const Work& work, const Adjacency& adj) {
+  std::vector<char> on_border(work.num_vertices(), 0);
+  for (int e = 0; e < adj.num_edges(); ++e) {
+    const auto corners = adj.corners(e);
+    if (corners.size() != 1) continue;
+    const Tri& f = work.faces[corners[0] / 3];
+    on_border[f[corners[0] % 3]] = on_border[f[(corners[0] % 3 + 1) % 3]] = 1;
+  }
+  return on_border;
+}
 
 // Faces that hang by one edge from the rest of their piece, at a vertex that is theirs alone and
-// a copy of a vertex inside the surface, along an edge that doubles an edge of the surface (the same
+// a copy of a vertex inside a surface, along an edge that doubles an edge of the surface (the same
 // two input vertices): pages a split cut loose at a non-manifold edge. A hole through such a page
 // runs along that surface edge, where any patch touches the surface.
-std::vector<char> hanging_pages(const Work& work) {
-  const int n = work.num_vertices();
-  const auto key = [&](long long a, long long b) {
-    return std::min(a, b) * static_cast<long long>(work.V.rows() + n) + std::max(a, b);
+std::vector<char> hanging_pages(const Work& work, const Adjacency& adj, const std::vector<char>& on_border) {
+  const long long stride = work.V.rows();
+  const auto input_edge = [&](int a, int b) {
+    const long long x = work.origin[a], y = work.origin[b];
+    return std::min(x, y) * stride + std::max(x, y);
   };
-  std::vector<int> face_count(n, 0);
-  std::unordered_map<long long, int> edge_faces;  // working edge -> its faces
-  for (const Tri& f : work.faces)
-    for (int k = 0; k < 3; ++k) ++face_count[f[k]], ++edge_faces[key(f[k], f[(k + 1) % 3])];
-  std::vector<char> on_border(n, 0);
-  for (const Tri& f : work.faces)
-    for (int k = 0; k < 3; ++k)
-      if (edge_faces[key(f[k], f[(k + 1) % 3])] == 1) on_border[f[k]] = on_border[f[(k + 1) % 3]] = 1;
-  std::unordered_map<int, char> inside_at;  // input vertex -> a working copy inside the surface
-  for (int v = 0; v < n; ++v)
-    if (face_count[v] > 0 && !on_border[v]) inside_at[work.origin[v]] = 1;
-  std::unordered_map<long long, int> working_edges;  // input edge -> distinct working edges on it
-  for (const auto& [edge, faces] : edge_faces) {
-    const long long a = edge / (work.V.rows() + n), b = edge % (work.V.rows() + n);
-    ++working_edges[key(work.origin[a], work.origin[b])];
+  std::unordered_set<int> inside;  // input vertices with a working copy inside a surface
+  for (int v = 0; v < work.num_vertices(); ++v)
+    if (!adj.faces_of(v).empty() && !on_border[v]) inside.insert(work.origin[v]);
+  std::unordered_map<long long, int> working_edges;  // input edge -> the working edges on it
+  for (int e = 0; e < adj.num_edges(); ++e) {
+    const int c = adj.corners(e)[0];
+    const Tri& f = work.faces[c / 3];
+    ++working_edges[input_edge(f[c % 3], f[(c % 3 + 1) % 3])];
   }
-  const auto doubled = [&](int a, int b) { return working_edges[key(work.origin[a], work.origin[b])] > 1; };
+  const auto doubled = [&](int a, int b) { return working_edges[input_edge(a, b)] > 1; };
   std::vector<char> page(work.faces.size(), 0);
   for (std::size_t i = 0; i < work.faces.size(); ++i) {
     const Tri& f = work.faces[i];
     for (int k = 0; k < 3 && !page[i]; ++k) {
       const int v = f[k];
-      if (face_count[v] != 1 || !inside_at.contains(work.origin[v])) continue;
+      if (adj.faces_of(v).size() != 1 || !inside.contains(work.origin[v])) continue;
       page[i] = doubled(v, f[(k + 1) % 3]) || doubled(v, f[(k + 2) % 3]);
     }
   }
   return page;
 }
+
+}  // namespace
+
+// Components with fewer faces than min_faces.
+void remove_small_components(Work& work, int min_faces, RepairReport& report) {
+  const int n = work.num_vertices();
+  const std::vector<int> root = component_roots(work);
+  std::vector<int> size(n, 0);
+  for (const Tri& f : work.faces) ++size[root[f[0]]];
+  for (int v = 0; v < n; ++v)
+    if (root[v] == v && size[v] > 0 && size[v] < min_faces)
+      ++report.small_components_removed, report.small_component_faces_removed += size[v];
+  std::vector<Tri> kept;
+  kept.reserve(work.faces.size());
+  for (const Tri& f : work.faces)
+    if (size[root[f[0]]] >= min_faces) kept.push_back(f);
+  work.faces = std::move(kept);
+}
+
 
 // A fin is a component with no vertex inside (every vertex on a border edge) that shares an input
 // vertex with a component that has one: a strip of faces a split cut loose from a surface at a
@@ -144,45 +163,27 @@ std::vector<char> hanging_pages(const Work& work) {
 // A page hanging by one edge (hanging_pages) is the fin of one face that is still joined to its piece.
 void remove_loose_fins(Work& work, RepairReport& report) {
   const int n = work.num_vertices();
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  for (const Tri& f : work.faces)
-    for (int k = 1; k < 3; ++k) {
-      const int a = find(f[0]), b = find(f[k]);
-      if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
+  if (n == work.V.rows()) return;  // no split made a copy: nothing was cut loose
+  const std::vector<int> root = component_roots(work);
   const Adjacency adj = build_adjacency(work.faces, n);
-  std::vector<char> on_border(n, 0), used(n, 0), has_inside(n, 0);
-  for (int e = 0; e < adj.num_edges(); ++e) {
-    const auto corners = adj.corners(e);
-    if (corners.size() != 1) continue;
-    const Tri& f = work.faces[corners[0] / 3];
-    on_border[f[corners[0] % 3]] = on_border[f[(corners[0] % 3 + 1) % 3]] = 1;
-  }
-  for (const Tri& f : work.faces)
-    for (int v : f) used[v] = 1;
+  const std::vector<char> on_border = border_vertices(work, adj);
+  std::vector<char> has_inside(n, 0);
   for (int v = 0; v < n; ++v)
-    if (used[v] && !on_border[v]) has_inside[find(v)] = 1;
-  std::unordered_map<int, int> surface_at;  // input vertex -> a component with a vertex inside using it
+    if (!adj.faces_of(v).empty() && !on_border[v]) has_inside[root[v]] = 1;
+  std::unordered_set<int> on_a_surface;  // input vertices used by a component with a vertex inside
   for (int v = 0; v < n; ++v)
-    if (used[v] && has_inside[find(v)]) surface_at.emplace(work.origin[v], find(v));
+    if (!adj.faces_of(v).empty() && has_inside[root[v]]) on_a_surface.insert(work.origin[v]);
   std::vector<char> fin(n, 0);
-  for (int v = 0; v < n; ++v) {
-    if (!used[v] || has_inside[find(v)]) continue;
-    const auto it = surface_at.find(work.origin[v]);
-    if (it != surface_at.end()) fin[find(v)] = 1;
-  }
-  const std::vector<char> page = hanging_pages(work);
+  for (int v = 0; v < n; ++v)
+    if (!adj.faces_of(v).empty() && !has_inside[root[v]] && on_a_surface.contains(work.origin[v]))
+      fin[root[v]] = 1;
+  const std::vector<char> page = hanging_pages(work, adj, on_border);
   std::vector<int> fin_faces(n, 0);
   std::vector<Tri> kept;
   kept.reserve(work.faces.size());
   for (std::size_t i = 0; i < work.faces.size(); ++i) {
     const Tri& f = work.faces[i];
-    if (fin[find(f[0])]) ++fin_faces[find(f[0])];
+    if (fin[root[f[0]]]) ++fin_faces[root[f[0]]];
     else if (page[i]) ++report.fins_removed, ++report.fin_faces_removed;
     else kept.push_back(f);
   }
