@@ -48,11 +48,13 @@ Faces faces_from_int64(const py::array& a) {
 Mesh to_mesh(const py::handle& V_object, const py::handle& F_object) {
   const py::array V = as_array(V_object, "V");
   const py::array F = as_array(F_object, "F");
-  if (!V.dtype().is(py::dtype::of<double>()))
+  // NumPy's own equivalence, not the identity of the dtype object: an array that went through
+  // pickle (multiprocessing, a saved object) carries an equal float64 that is another object.
+  if (!py::isinstance<py::array_t<double>>(V))
     throw py::value_error("V must have dtype float64, got " + std::string(py::str(V.dtype())));
   check_n_by_3(V, "V");
-  const bool int32 = F.dtype().is(py::dtype::of<std::int32_t>());
-  if (!int32 && !F.dtype().is(py::dtype::of<std::int64_t>()))
+  const bool int32 = py::isinstance<py::array_t<std::int32_t>>(F);
+  if (!int32 && !py::isinstance<py::array_t<std::int64_t>>(F))
     throw py::value_error("F must have dtype int32 or int64, got " + std::string(py::str(F.dtype())));
   check_n_by_3(F, "F");
   Mesh mesh;

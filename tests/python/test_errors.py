@@ -1,6 +1,8 @@
 """Bad input: ValueError naming the argument for arrays of the wrong dtype or shape, the library's
 exception type and message otherwise."""
 
+import pickle
+
 import numpy as np
 import pytest
 
@@ -46,6 +48,17 @@ def test_wrong_dtype_or_shape_raises_value_error(hand, make, message):
         with pytest.raises(ValueError) as error:
             function(V, F)
         assert str(error.value) == message
+
+
+def test_arrays_that_went_through_pickle_are_accepted(hand):
+    # multiprocessing pickles arrays: their dtypes come back equal to float64 and int32/int64 but as
+    # other objects, which a check of the dtype's identity refused ("got float64").
+    V, F = hand
+    expected = fairsurf.info(V, F)
+    for faces in (F.astype(np.int32), F.astype(np.int64)):
+        V2, F2 = pickle.loads(pickle.dumps((V, faces)))
+        assert V2.dtype == np.float64 and V2.dtype is not np.dtype(np.float64)
+        assert fairsurf.info(V2, F2) == expected
 
 
 def test_nan_coordinates(hand):
