@@ -165,14 +165,41 @@ AnchoredRegion anchored_region(const Topology& topo, std::span<const int> free_v
   return a;
 }
 
-// fair_in_parts on a region whose every vertex is in range and anchored.
-FairRegionReport fair_anchored_parts(const Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+// "part 2 (1279 free vertices): <what>", as the summary numbers parts.
+std::string part_text(std::size_t index, std::size_t size, const std::string& what) {
+  return "part " + std::to_string(index + 1) + " (" + std::to_string(size) + " free vertices): " + what;
+}
+
+// fair_in_parts on a region whose every vertex is in range and anchored. A part whose fairing fails
+// is put back where it was given and the others are faired all the same (as fill leaves a hole that
+// failed open and fills the rest); then NumericalError names the parts that failed.
+FairRegionReport fair_anchored_parts(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                                      const FairRegionOptions& options, const PartFairing& fair_part) {
   const std::vector<std::vector<int>> parts = region_parts(topo, free_vertices, rings_needed(options.continuity));
   if (parts.size() <= 1) return fair_part(free_vertices);
   const auto start = detail::Clock::now();
   std::vector<FairRegionReport> reports;
-  for (const std::vector<int>& part : parts) reports.push_back(fair_part(part));
+  std::string failed, faired;
+  int failures = 0;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    Vertices given(static_cast<Eigen::Index>(parts[i].size()), 3);
+    for (std::size_t k = 0; k < parts[i].size(); ++k) given.row(static_cast<Eigen::Index>(k)) = mesh.V.row(parts[i][k]);
+    try {
+      reports.push_back(fair_part(parts[i]));
+      faired += (faired.empty() ? "" : ", ") +
+                part_text(i, parts[i].size(), delivered_label(reports.back().supported, reports.back().linear));
+    } catch (const NumericalError& e) {
+      for (std::size_t k = 0; k < parts[i].size(); ++k) mesh.V.row(parts[i][k]) = given.row(static_cast<Eigen::Index>(k));
+      std::string what = e.what();
+      if (what.starts_with("fair_region: ")) what.erase(0, std::string("fair_region: ").size());
+      failed += (failed.empty() ? "" : "; ") + part_text(i, parts[i].size(), what);
+      ++failures;
+    }
+  }
+  if (failures > 0)
+    throw NumericalError("fair_region: " + std::to_string(failures) + " of " + std::to_string(parts.size()) +
+                         " parts whose fixed rings do not meet could not be faired and stay as given (" + failed +
+                         (faired.empty() ? ")" : "); the others were faired: " + faired));
   FairRegionReport whole = combined_report(std::move(reports), options);
   whole.continuity = measure_continuity(mesh.V, mesh.F, topo, free_vertices);
   whole.seconds = detail::seconds_since(start);
@@ -181,7 +208,7 @@ FairRegionReport fair_anchored_parts(const Mesh& mesh, const Topology& topo, std
 
 }  // namespace
 
-FairRegionReport fair_in_parts(const Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
+FairRegionReport fair_in_parts(Mesh& mesh, const Topology& topo, std::span<const int> free_vertices,
                                const FairRegionOptions& options, const PartFairing& fair_part) {
   for (int v : free_vertices)
     if (v < 0 || v >= mesh.num_vertices()) return fair_part(free_vertices);

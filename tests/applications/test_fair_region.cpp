@@ -1,4 +1,6 @@
 #include <fairsurf/applications/fair_region.h>
+#include <fairsurf/applications/repair.h>
+#include <fairsurf/applications/fill.h>
 #include <fairsurf/geometry/continuity_measure.h>
 #include <fairsurf/io/io.h>
 #include <fairsurf/mesh/errors.h>
@@ -599,4 +601,47 @@ TEST(FairRegionReal, ARegionInPartsGetsItsOwnFairingForEachPart) {
     EXPECT_TRUE(one.parts.empty());
   }
   EXPECT_TRUE(alone.V == whole.V);
+}
+
+// The raw Stanford zipper output repaired and filled, as `fairsurf fill --repair` closes it: a ball
+// under the bunny, between its paws, where every fairing (the flow, ∆3, ∆2, ∆1) crosses the body,
+// and a small ball at the tip of an ear, a part of its own. The ear is faired as if alone; the
+// ball under the bunny is put back where it was, and the error names it (as fill leaves a hole that
+// failed open and fills the others).
+TEST(FairRegionReal, APartWhoseEveryFairingCrossesTheMeshStaysAsGivenAndTheOthersAreFaired) {
+  Mesh input = read_mesh(test::data_path("stanford_bunny_zipper_res2.ply"));
+  RepairOptions as_fill;
+  as_fill.keep_border_pinches = true;
+  repair(input, as_fill);
+  fill_holes(input, FillOptions{});
+  ASSERT_EQ(boundary_loops(input.F, build_topology(input.F, input.num_vertices())).size(), 0u);
+  Eigen::Index ear_tip = 0;
+  input.V.col(1).maxCoeff(&ear_tip);
+  std::vector<int> region = test::ball_vertices(input, Eigen::Vector3d(-0.0025964, 0.04690726, 0.03296175), 0.0504);
+  const std::vector<int> ear = test::ball_vertices(input, input.V.row(ear_tip).transpose(), 0.015);
+  region.insert(region.end(), ear.begin(), ear.end());
+  const auto parts = region_parts(build_topology(input.F, input.num_vertices()), region, 3);
+  ASSERT_EQ(parts.size(), 2u);
+  const std::vector<int>& under = parts[0].size() > parts[1].size() ? parts[0] : parts[1];
+  const std::vector<int>& tip = parts[0].size() > parts[1].size() ? parts[1] : parts[0];
+  const FairRegionOptions options = FairRegionOptions::harmonic_started();
+
+  Mesh faired = input;
+  try {
+    fair_region(faired, region, options);
+    ADD_FAILURE() << "the region under the bunny was faired";
+  } catch (const NumericalError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("1 of 2 parts whose fixed rings do not meet could not be faired and stay as given"),
+              std::string::npos) << what;
+    EXPECT_NE(what.find("(" + std::to_string(under.size()) + " free vertices): the faired region crosses the mesh"),
+              std::string::npos) << what;
+    EXPECT_NE(what.find("every linear solution down to ∆1"), std::string::npos) << what;
+    EXPECT_NE(what.find("the others were faired: part"), std::string::npos) << what;
+  }
+  for (int v : under) EXPECT_TRUE(faired.V.row(v) == input.V.row(v)) << "vertex " << v;
+  Mesh alone = input;
+  fair_region(alone, tip, options);
+  EXPECT_TRUE(alone.V == faired.V);  // the ear as if faired alone, and nothing else moved
+  EXPECT_GT((alone.V - input.V).norm(), 0);
 }

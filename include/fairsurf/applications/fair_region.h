@@ -269,7 +269,9 @@ std::vector<std::vector<int>> region_parts(const Topology& topo, std::span<const
 /// the first linear ∆^k solution from the given positions,
 /// k from the continuity reached down to 1, that does not (reported `linear`, the reason in
 /// `note`); NumericalError if every one crosses, with mesh.V at the result. A region in parts is
-/// faired part by part (FairRegionReport::parts); a throw leaves the parts before as they ended.
+/// faired part by part (FairRegionReport::parts); a part whose fairing throws NumericalError is put
+/// back where it was given, the others are faired all the same, and then NumericalError names the
+/// parts that failed and what the others got (mesh.V holds the faired parts).
 /// Free vertices with no fixed vertex in their connected component of the mesh (a vertex no face
 /// uses, a component marked whole) have nothing to be faired against: they stay where they are, the
 /// others are faired as if they were not free (`free_vertices` does not count them), and `note`
