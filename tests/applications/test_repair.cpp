@@ -176,6 +176,24 @@ TEST(Repair, DetachesTheThirdPageOfABook) {
   EXPECT_EQ(m.num_faces(), 3);
 }
 
+// Repairs `m` twice: a copy with the loose fins kept, which must keep its `faces` and is returned,
+// and `m` itself, which must lose one fin of `fin_faces` faces; each resolves one non-manifold edge.
+Mesh repaired_keeping_fins(Mesh& m, int faces, int fin_faces) {
+  Mesh kept = m;
+  RepairOptions keep;
+  keep.remove_loose_fins = false;
+  const RepairReport kept_report = repair(kept, keep);
+  EXPECT_EQ(kept_report.non_manifold_edges, 1);
+  EXPECT_EQ(kept_report.fins_removed, 0);
+  EXPECT_EQ(kept.num_faces(), faces);
+  const RepairReport report = repair(m);
+  EXPECT_EQ(report.non_manifold_edges, 1);
+  EXPECT_EQ(report.fins_removed, 1);
+  EXPECT_EQ(report.fin_faces_removed, fin_faces);
+  EXPECT_EQ(m.num_faces(), faces - fin_faces);
+  return kept;
+}
+
 // A strip of two faces standing on an inner edge of a grid, as a zippered scan's overlaps hang
 // them: the split cuts it loose, and it is removed as a loose fin, leaving the grid as it was. A
 // square lying apart, which no split made, has no vertex inside either and stays.
@@ -200,21 +218,8 @@ TEST(Repair, RemovesAFinTheSplitCutLooseAndKeepsAPieceThatTouchesNothing) {
   m.F.row(grid_faces + 2) << n + 2, n + 3, n + 4;
   m.F.row(grid_faces + 3) << n + 2, n + 4, n + 5;
 
-  Mesh kept = m;
-  RepairOptions keep;
-  keep.remove_loose_fins = false;
-  const RepairReport kept_report = repair(kept, keep);
-  EXPECT_EQ(kept_report.non_manifold_edges, 1);
-  EXPECT_EQ(kept_report.fins_removed, 0);
-  EXPECT_EQ(kept.num_faces(), grid_faces + 4);
-  EXPECT_EQ(component_count(kept), 3);
-
   const Mesh in = m;
-  const RepairReport report = repair(m);
-  EXPECT_EQ(report.non_manifold_edges, 1);
-  EXPECT_EQ(report.fins_removed, 1);
-  EXPECT_EQ(report.fin_faces_removed, 2);
-  EXPECT_EQ(m.num_faces(), grid_faces + 2);
+  EXPECT_EQ(component_count(repaired_keeping_fins(m, grid_faces + 4, 2)), 3);
   EXPECT_EQ(component_count(m), 2);  // the grid, whole again, and the square
   const ValidationReport r = validate(m);
   EXPECT_EQ(r.duplicate_vertex_positions.count, 0);
@@ -256,18 +261,8 @@ TEST(Repair, RemovesAPageTheSplitCutLooseAlongAnEdgeOfTheSurface) {
   for (int i = 0; i < 6; ++i) m.F.row(grid_faces + 7 + i) << t, t + 1 + i, t + 1 + (i + 1) % 6;
   m.F.row(grid_faces + 13) << t + 2, t + 1, g;
 
-  Mesh kept = m;
-  RepairOptions keep;
-  keep.remove_loose_fins = false;
-  EXPECT_EQ(repair(kept, keep).non_manifold_edges, 1);
-  EXPECT_EQ(kept.num_faces(), grid_faces + 14);
-
   const Mesh in = m;
-  const RepairReport report = repair(m);
-  EXPECT_EQ(report.non_manifold_edges, 1);
-  EXPECT_EQ(report.fins_removed, 1);
-  EXPECT_EQ(report.fin_faces_removed, 1);
-  EXPECT_EQ(m.num_faces(), grid_faces + 13);
+  repaired_keeping_fins(m, grid_faces + 14, 1);
   EXPECT_EQ(component_count(m), 3);  // the grid, the fan and the third sheet
   expect_no_vertex_moved(in, m);
   Mesh again = m;
