@@ -25,6 +25,7 @@ struct BlendArgs {
   bool no_relax = false;
   bool no_descent_fallback = false;
   bool keep_flow = false;
+  bool all = false;
   RegionFairingArgs fairing;
 };
 
@@ -82,6 +83,33 @@ nlohmann::json loop_json(const BlendLoop& loop) {
           {"continuity_reference", to_json(loop.reference)}};
 }
 
+nlohmann::json report_json(const BlendReport& report) {
+  return {{"loops_found", report.loops_found},
+          {"automatic", report.automatic},
+          {"loop_distance", report.loop_distance},
+          {"loop_a", loop_json(report.a)},
+          {"loop_b", loop_json(report.b)},
+          {"tube_vertices", report.tube_vertices},
+          {"tube_faces", report.tube_faces},
+          {"tube_rings", report.tube_rings},
+          {"hermite_quality", report.hermite_quality},
+          {"membrane_quality", report.membrane_quality},
+          {"relaxed", report.relaxed},
+          {"straight_rings", report.straight_rings},
+          {"rebuilt_without_membrane", report.rebuilt_without_membrane},
+          {"fair", to_json(report.fair)},
+          {"seconds", report.seconds}};
+}
+
+// The three lines of one blend's summary: the pair, the tube and its fairing, each loop's border.
+void print_blend(const BlendReport& report, bool no_relax) {
+  const std::string start = tube_start(report, no_relax);
+  std::printf("blended loops %d and %d of %d%s: tube of %d vertices, %d faces, %s; %s\n  %s\n  %s\n", report.a.index,
+              report.b.index, report.loops_found, report.automatic ? " (closest pair)" : "", report.tube_vertices,
+              report.tube_faces, start.c_str(), summary(report.fair).c_str(), border_text("a", report.a).c_str(),
+              border_text("b", report.b).c_str());
+}
+
 void run_blend(const BlendArgs& args) {
   const RegionFairingArgs& f = args.fairing;
   const std::vector<std::filesystem::path> inputs(args.inputs.begin(), args.inputs.end());
@@ -100,39 +128,38 @@ void run_blend(const BlendArgs& args) {
                       {"inputs", args.inputs},
                       {"functions", f.functions},
                       {"keep_flow", args.keep_flow},
+                      {"all", args.all},
                       {"repair", repair_json(repaired)}},
                      options.flow.step_kind);
-  const BlendReport report =
-      run.run([&] { return blend_loops(mesh, options, run.observer()); }, mesh, args.output);
-  if (report.fair.method == FairMethod::flow) warn_if_not_parabolic(report.fair.flow);
-  warn_if_folded_back("a", report.a);
-  warn_if_folded_back("b", report.b);
-  if (report.fair.checks_chose_linear)
-    note_keep_flow("the tube is the linear one, which the angle or crease rule preferred to the settled G2 tube");
+  const std::vector<BlendReport> reports = run.run(
+      [&] {
+        return args.all ? blend_all_loops(mesh, options, run.observer())
+                        : std::vector<BlendReport>{blend_loops(mesh, options, run.observer())};
+      },
+      mesh, args.output);
+  double seconds = 0;
+  for (const BlendReport& report : reports) {
+    if (report.fair.method == FairMethod::flow) warn_if_not_parabolic(report.fair.flow);
+    warn_if_folded_back("a", report.a);
+    warn_if_folded_back("b", report.b);
+    if (report.fair.checks_chose_linear)
+      note_keep_flow("the tube is the linear one, which the angle or crease rule preferred to the settled G2 tube");
+    seconds += report.seconds;
+  }
   note_vertex_data_dropped(had_vertex_data, mesh, input_name, "blend");
   note_new_faces(mesh, input_faces, input_name, "blend");
   write_mesh_output(args.output, mesh);
-  run.finish(nlohmann::json{{"loops_found", report.loops_found},
-              {"automatic", report.automatic},
-              {"loop_distance", report.loop_distance},
-              {"loop_a", loop_json(report.a)},
-              {"loop_b", loop_json(report.b)},
-              {"tube_vertices", report.tube_vertices},
-              {"tube_faces", report.tube_faces},
-              {"tube_rings", report.tube_rings},
-              {"hermite_quality", report.hermite_quality},
-              {"membrane_quality", report.membrane_quality},
-              {"relaxed", report.relaxed},
-              {"straight_rings", report.straight_rings},
-              {"rebuilt_without_membrane", report.rebuilt_without_membrane},
-              {"fair", to_json(report.fair)},
-              {"seconds", report.seconds}});
-  const std::string start = tube_start(report, args.no_relax);
-  std::printf("blended loops %d and %d of %d%s: tube of %d vertices, %d faces, %s; %s\n  %s\n  %s\n%.2f s; wrote %s\n",
-              report.a.index, report.b.index, report.loops_found, report.automatic ? " (closest pair)" : "",
-              report.tube_vertices, report.tube_faces, start.c_str(), summary(report.fair).c_str(),
-              border_text("a", report.a).c_str(), border_text("b", report.b).c_str(), report.seconds,
-              args.output.c_str());
+  if (args.all) {
+    nlohmann::json blends = nlohmann::json::array();
+    for (const BlendReport& report : reports) blends.push_back(report_json(report));
+    run.finish(nlohmann::json{{"blends", blends}, {"seconds", seconds}});
+  } else {
+    run.finish(report_json(reports.front()));
+  }
+  for (const BlendReport& report : reports) print_blend(report, args.no_relax);
+  const int left = reports.back().loops_found - 2;
+  if (args.all && left > 0) std::printf("%d loop left open: no other loop to join it to\n", left);
+  std::printf("%.2f s; wrote %s\n", seconds, args.output.c_str());
 }
 
 void setup_blend(CLI::App& app) {
@@ -151,7 +178,7 @@ void setup_blend(CLI::App& app) {
       ->required()
       ->expected(1, 2);
   cmd->add_option("-o,--output", args->output, "Output mesh")->required();
-  cmd->add_option("--loops", args->loops,
+  CLI::Option* loops = cmd->add_option("--loops", args->loops,
                   "i,j: the boundary loops to join (default: the closest pair); loops are numbered by "
                   "their smallest vertex index, over the concatenated meshes")
       ->expected(2)
@@ -163,6 +190,10 @@ void setup_blend(CLI::App& app) {
   cmd->add_flag("--no-descent-fallback", args->no_descent_fallback,
                 "Keep the time-stepped flow's last state when it does not settle, instead of continuing "
                 "with the energy descent (BlendOptions::descent_fallback; docs/blend.md)");
+  cmd->add_flag("--all", args->all,
+                "Join the closest pair of loops, then the closest pair of those left, until fewer than two "
+                "are left (pieces cut apart at several places)")
+      ->excludes(loops);
   add_region_fairing_options(cmd, args->fairing);
   add_keep_flow_flag(cmd, args->keep_flow);
   cmd->callback([args] { run_blend(*args); });

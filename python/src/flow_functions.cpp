@@ -214,21 +214,34 @@ py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handl
   return py::make_tuple(to_numpy(std::move(mesh.V)), d);
 }
 
+// `all_pairs`: blend_all_loops, each blend's report in the list "blends" (the `--log` of `blend --all`).
 py::tuple blend_binding(const py::handle& V, const py::handle& F, const std::optional<std::pair<int, int>>& loops,
-                        const FairingArgs& args, bool relax, bool keep_flow, py::object callback) {
+                        const FairingArgs& args, bool relax, bool keep_flow, bool all_pairs, py::object callback) {
   Mesh mesh = to_mesh(V, F);
   BlendOptions options;
   set_fairing(args, options);
   options.patch.relax = relax;
   apply_keep_flow(keep_flow, "blend", options);
+  if (loops && all_pairs) throw InvalidArgument("blend: all_pairs chooses each pair itself; leave loops None");
   if (loops) std::tie(options.loop_a, options.loop_b) = *loops;
   Progress progress(std::move(callback));
   progress.attach(options.flow);
-  const BlendReport report =
-      keeping_last_state(mesh, [&] { return blend_loops(mesh, options, progress.flow_observer()); });
-  progress.rethrow();
-  py::dict d("functions"_a = args.functions, "keep_flow"_a = keep_flow);
-  for (const auto item : to_dict(report)) d[item.first] = item.second;
+  py::dict d("functions"_a = args.functions, "keep_flow"_a = keep_flow, "all"_a = all_pairs);
+  if (all_pairs) {
+    const std::vector<BlendReport> reports =
+        keeping_last_state(mesh, [&] { return blend_all_loops(mesh, options, progress.flow_observer()); });
+    progress.rethrow();
+    py::list blends;
+    double seconds = 0;
+    for (const BlendReport& report : reports) blends.append(to_dict(report)), seconds += report.seconds;
+    d["blends"] = blends;
+    d["seconds"] = seconds;
+  } else {
+    const BlendReport report =
+        keeping_last_state(mesh, [&] { return blend_loops(mesh, options, progress.flow_observer()); });
+    progress.rethrow();
+    for (const auto item : to_dict(report)) d[item.first] = item.second;
+  }
   return py::make_tuple(to_numpy(std::move(mesh.V)), to_numpy(std::move(mesh.F)), d);
 }
 
@@ -283,14 +296,15 @@ void register_flow_functions(py::module_& m) {
       "blend",
       [](const py::handle& V, const py::handle& F, std::optional<std::pair<int, int>> loops, std::string continuity,
          std::optional<Functions> functions, std::optional<Functions> f, std::string method,
-         std::optional<int> max_steps, bool relax, bool keep_flow, py::object progress) {
+         std::optional<int> max_steps, bool relax, bool keep_flow, bool all_pairs, py::object progress) {
         return blend_binding(V, F, loops, {continuity, functions_kwarg("blend", functions, f), method, max_steps},
-                             relax, keep_flow, std::move(progress));
+                             relax, keep_flow, all_pairs, std::move(progress));
       },
       "V"_a, "F"_a, py::kw_only(), "loops"_a = py::none(), "continuity"_a = "G2", "functions"_a = py::none(),
       "f"_a = py::none(), "method"_a = "flow", "max_steps"_a = py::none(), "relax"_a = true,
-      "keep_flow"_a = false, "progress"_a = py::none(),
-      "Joins two boundary loops by a fair tube, as `fairsurf blend`; returns (V, F, report).");
+      "keep_flow"_a = false, "all_pairs"_a = false, "progress"_a = py::none(),
+      "Joins two boundary loops by a fair tube, as `fairsurf blend`; returns (V, F, report). all_pairs=True "
+      "joins the closest pair, then the closest pair left, ..., as `fairsurf blend --all` (report['blends']).");
 }
 
 }  // namespace fairsurf::python

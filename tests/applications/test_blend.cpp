@@ -204,6 +204,29 @@ TEST(Blend, BlobbyPiecesJoinIntoOneClosedSurface) {
   EXPECT_GT(m0.a.border.mean_normal_angle, 2.0 * m0.a.reference.mean_normal_angle);
 }
 
+// blend_all_loops joins the blobby's two gaps in one call, exactly as two blend_loops calls do, and
+// refuses a named pair (it chooses each pair itself).
+TEST(Blend, AllLoopsAreJoinedPairByPairAsSuccessiveBlendsJoinThem) {
+  const Mesh input = read_mesh(test::data_path("cgal_blobby_3cc.off"));
+  Mesh one_by_one = input;
+  blend_loops(one_by_one);
+  blend_loops(one_by_one);
+  Mesh all = input;
+  const std::vector<BlendReport> reports = blend_all_loops(all);
+  ASSERT_EQ(reports.size(), 2u);
+  EXPECT_EQ(reports[0].loops_found, 4);
+  EXPECT_EQ(reports[1].loops_found, 2);
+  EXPECT_EQ(loop_count(all), 0);
+  EXPECT_TRUE(all.V == one_by_one.V);
+  EXPECT_TRUE(all.F == one_by_one.F);
+  BlendOptions named;
+  named.loop_a = 0;
+  named.loop_b = 3;
+  Mesh refused = input;
+  EXPECT_THROW(blend_all_loops(refused, named), InvalidArgument);
+  EXPECT_TRUE(refused.V == input.V);
+}
+
 // Real data: two adjacent ends of fairing_cross.off face away from each other, so the tube turns
 // by 3π/2 (a handle around the corner). The Hermite tube follows concentric arcs about the corner
 // instead of folding flat, the membrane (no minimal surface spans ends 3.5 apart of radius 0.68)

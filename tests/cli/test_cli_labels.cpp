@@ -2,6 +2,8 @@
 // (issue #16): no fill that only duplicates a face, no curvature of the old shape on a moved mesh, no
 // "steady" that was not, no region property dropped by the output format, true STL counts.
 #include <fairsurf/io/io.h>
+#include <fairsurf/mesh/validate.h>
+#include <fairsurf/mesh/topology.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -176,6 +178,26 @@ TEST_F(CliLabels, BlendKeepFlowIsLoggedAndNeedsTheFlow) {
   EXPECT_NE(run.out.find("blend: --keep-flow keeps the flow's result; --method harmonic runs no flow"),
             std::string::npos)
       << run.out;
+}
+
+// blend --all joins the blobby's three pieces with two tubes, one summary each, into one closed
+// surface, and logs both blends; with --loops, which names one pair, it is refused.
+TEST_F(CliLabels, BlendAllJoinsEveryPairOneAfterTheOther) {
+  const std::string blobby = std::string("'").append(test::data_path("cgal_blobby_3cc.off")).append("'");
+  auto run = test::run_cli("blend " + blobby + " --all -o " + path("b.ply") + " --quiet --log " + path("b.json"));
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("blended loops 0 and 3 of 4 (closest pair)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("blended loops 0 and 1 of 2 (closest pair)"), std::string::npos) << run.out;
+  const Mesh joined = read_mesh(file("b.ply"));
+  EXPECT_EQ(validate(joined).is_valid(), true);
+  EXPECT_EQ(boundary_loops(joined.F, build_topology(joined.F, joined.num_vertices())).size(), 0u);
+  std::ifstream log_file(file("b.json"));
+  const nlohmann::json log = nlohmann::json::parse(log_file);
+  EXPECT_EQ(log["all"], true);
+  EXPECT_EQ(log["blends"].size(), 2u);
+  run = test::run_cli("blend " + blobby + " --all --loops 0,3 -o " + path("c.ply"));
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_FALSE(fs::exists(file("c.ply")));
 }
 
 // A band cut across spot's neck where a fin of the cut juts out (bench_real_holes --all-slabs' spot

@@ -4,6 +4,7 @@ import json
 import subprocess
 
 import numpy as np
+import pytest
 
 import fairsurf
 
@@ -92,6 +93,21 @@ def test_blend_report_fields_and_result(cli, tmp_path):
     assert fairsurf.info(V2, F2)["boundary_loops"] == []  # two caps joined into a closed surface
     V_cli, F_cli = fairsurf.read_mesh(tmp_path / "out.ply")
     assert np.array_equal(F2, F_cli) and np.abs(V2 - V_cli).max() <= 1e-12
+
+
+def test_blend_all_pairs_is_blend_all(cli, tmp_path, data_dir):
+    # The blobby's three pieces: two blends, as `fairsurf blend --all` makes them and logs them.
+    path = data_dir / "cgal_blobby_3cc.off"
+    V, F = fairsurf.read_mesh(path)
+    V2, F2, report = fairsurf.blend(V, F, all_pairs=True)
+    log = cli_log(cli, tmp_path, "blend", path, "--all")
+    assert keys(report) == keys(log)
+    assert [b["loops_found"] for b in report["blends"]] == [4, 2]
+    assert fairsurf.info(V2, F2)["boundary_loops"] == []
+    V_cli, F_cli = fairsurf.read_mesh(tmp_path / "out.ply")
+    assert np.array_equal(F2, F_cli) and np.abs(V2 - V_cli).max() <= 1e-12
+    with pytest.raises(fairsurf.InvalidArgument):
+        fairsurf.blend(V, F, loops=(0, 3), all_pairs=True)
 
 
 def test_info_fields_and_values(cli, data_dir):

@@ -162,6 +162,15 @@ struct BlendReport {
 /// names the first crossings (`mesh` then holds the last tube tried).
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options = {}, const FlowObserver& observer = {});
 
+/// Joins the closest pair of boundary loops, then the closest pair of the loops left, and so on
+/// until fewer than two are left: blend_loops with the pair chosen each time, for a part cut apart
+/// at several places (data/cgal_blobby_3cc.off: three pieces, two gaps). Returns each blend's report
+/// in order (each loop index is the mesh's as that blend found it). Throws InvalidArgument where
+/// `options` name a pair (loop_a, loop_b), and whatever blend_loops throws, `mesh` then holding the
+/// pairs joined before.
+std::vector<BlendReport> blend_all_loops(Mesh& mesh, const BlendOptions& options = {},
+                                         const FlowObserver& observer = {});
+
 /// Measures continuity at the vertices of `loop` only: on the faces within `rings` rings of it,
 /// with the free vertices among them (continuity_measure.h's measure_continuity).
 ContinuityMeasure measure_continuity_at_loop(const Mesh& mesh, const std::vector<int>& loop,
