@@ -1,6 +1,6 @@
 """fairsurf: fair surfaces on triangle meshes with sixth-order geometric flows.
 
-NumPy in and out: V is a float64 array of shape (n, 3), F an int32 or int64 array of shape (m, 3).
+NumPy in and out: V is a float64 array of shape (n, 3), F an int32, int64, uint32 or uint64 array of shape (m, 3).
 Reports are dicts with the fields of the CLI's JSON logs. See docs/python.md.
 """
 

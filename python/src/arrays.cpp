@@ -1,6 +1,7 @@
 #include "arrays.h"
 
 #include <limits>
+#include <utility>
 #include <string>
 
 namespace fairsurf::python {
@@ -33,14 +34,16 @@ Matrix copy_rows(const py::array& a) {
       .template cast<typename Matrix::Scalar>();
 }
 
-Faces faces_from_int64(const py::array& a) {
-  const auto c = py::array_t<std::int64_t, py::array::c_style>::ensure(a);
-  const std::int64_t* data = c.data();
+// Faces from a wider or unsigned index type, each index checked against the library's int.
+template <class Index>
+Faces faces_checked(const py::array& a) {
+  const auto c = py::array_t<Index, py::array::c_style>::ensure(a);
+  const Index* data = c.data();
   for (py::ssize_t i = 0; i < c.size(); ++i)
-    if (data[i] < std::numeric_limits<int>::min() || data[i] > std::numeric_limits<int>::max())
+    if (!std::in_range<int>(data[i]))
       throw py::value_error("F: index " + std::to_string(data[i]) + " at face " + std::to_string(i / 3) +
                             " does not fit a 32-bit int");
-  return copy_rows<Faces, std::int64_t>(c);
+  return copy_rows<Faces, Index>(c);
 }
 
 }  // namespace
@@ -53,13 +56,20 @@ Mesh to_mesh(const py::handle& V_object, const py::handle& F_object) {
   if (!py::isinstance<py::array_t<double>>(V))
     throw py::value_error("V must have dtype float64, got " + std::string(py::str(V.dtype())));
   check_n_by_3(V, "V");
+  // Unsigned indices too: PLY readers and VTK hand out uint32 faces.
   const bool int32 = py::isinstance<py::array_t<std::int32_t>>(F);
-  if (!int32 && !py::isinstance<py::array_t<std::int64_t>>(F))
-    throw py::value_error("F must have dtype int32 or int64, got " + std::string(py::str(F.dtype())));
+  const bool int64 = py::isinstance<py::array_t<std::int64_t>>(F);
+  const bool uint32 = py::isinstance<py::array_t<std::uint32_t>>(F);
+  const bool uint64 = py::isinstance<py::array_t<std::uint64_t>>(F);
+  if (!int32 && !int64 && !uint32 && !uint64)
+    throw py::value_error("F must have dtype int32, int64, uint32 or uint64, got " + std::string(py::str(F.dtype())));
   check_n_by_3(F, "F");
   Mesh mesh;
   mesh.V = copy_rows<Vertices, double>(V);
-  mesh.F = int32 ? copy_rows<Faces, std::int32_t>(F) : faces_from_int64(F);
+  mesh.F = int32    ? copy_rows<Faces, std::int32_t>(F)
+           : int64  ? faces_checked<std::int64_t>(F)
+           : uint32 ? faces_checked<std::uint32_t>(F)
+                    : faces_checked<std::uint64_t>(F);
   return mesh;
 }
 

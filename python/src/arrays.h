@@ -12,8 +12,8 @@ namespace fairsurf::python {
 
 namespace py = pybind11;
 
-/// V (float64, #V×3) and F (int32 or int64, #F×3) as a Mesh. Throws ValueError naming `V` or `F`
-/// for any other dtype or shape, or an int64 index that does not fit the library's int.
+/// V (float64, #V×3) and F (int32, int64, uint32 or uint64, #F×3) as a Mesh. Throws ValueError
+/// naming `V` or `F` for any other dtype or shape, or an index that does not fit the library's int.
 Mesh to_mesh(const py::handle& V, const py::handle& F);
 
 /// A 1-D integer array or sequence of vertex indices (values are checked by the library).

@@ -35,8 +35,10 @@ def with_index(F, index):
         (lambda V, F: (V[:, :2].copy(), F), "V must have shape (n, 3), got (810, 2)"),
         (lambda V, F: (V.ravel(), F), "V must have shape (n, 3), got (2430,)"),
         (lambda V, F: (V.tolist(), F), "V must be a NumPy array, got list"),
-        (lambda V, F: (V, F.astype(np.float64)), "F must have dtype int32 or int64, got float64"),
-        (lambda V, F: (V, F.astype(np.uint32)), "F must have dtype int32 or int64, got uint32"),
+        (lambda V, F: (V, F.astype(np.float64)), "F must have dtype int32, int64, uint32 or uint64, got float64"),
+        (lambda V, F: (V, F.astype(np.int16)), "F must have dtype int32, int64, uint32 or uint64, got int16"),
+        (lambda V, F: (V, with_index(F.astype(np.uint64), 2**63 + 5)),
+         "F: index 9223372036854775813 at face 3 does not fit a 32-bit int"),
         (lambda V, F: (V, F[:, :2].copy()), "F must have shape (n, 3), got (1602, 2)"),
         (lambda V, F: (V, with_index(F.astype(np.int64), 2**40)),
          "F: index 1099511627776 at face 3 does not fit a 32-bit int"),
@@ -48,6 +50,14 @@ def test_wrong_dtype_or_shape_raises_value_error(hand, make, message):
         with pytest.raises(ValueError) as error:
             function(V, F)
         assert str(error.value) == message
+
+
+def test_unsigned_faces_are_accepted(hand):
+    # PLY readers and VTK hand out uint32 faces; the result is the one int32 faces give.
+    V, F = hand
+    expected = fairsurf.info(V, F)
+    for dtype in (np.uint32, np.uint64):
+        assert fairsurf.info(V, F.astype(dtype)) == expected
 
 
 def test_arrays_that_went_through_pickle_are_accepted(hand):
