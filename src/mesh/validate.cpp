@@ -369,6 +369,9 @@ void require_valid(const ValidationReport& report, const Requirements& requireme
   for (std::size_t i = 0; i < violations.size(); ++i)
     message += (i > 0 ? ", " : "") + violations[i];
   if (repairable) throw RepairableMeshError(message);
+  if (requirements.oriented && report.non_orientable_components.count > 0)
+    message += " (a one-sided surface, such as a Möbius band, has no consistent orientation, and no repair gives "
+               "it one)";
   throw InvalidMeshError(message);
 }
 

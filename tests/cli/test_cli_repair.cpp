@@ -63,10 +63,14 @@ TEST_F(CliRepair, RefusalsOfRepairableMeshesEndWithTheHintAndRepairMakesThemPass
   auto r = test::run_cli("smooth " + data("hourglass_ico.obj") + " -o " + quoted(path("s.obj")) + " --steps 1");
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_NE(r.out.find("smooth: mesh has 1 non-manifold vertex (first: 22) " + hint), std::string::npos) << r.out;
-  // Non-orientable: repair cannot help, so no hint.
+  // Non-orientable: repair cannot help, so no hint, and the message says why.
   r = test::run_cli("smooth " + data("moebius_160_10.ply") + " -o " + quoted(path("m.obj")) + " --steps 1");
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_EQ(r.out.find(hint), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1 non-orientable component (first: 9) (a one-sided surface, such as a Möbius band, has no "
+                       "consistent orientation, and no repair gives it one)"),
+            std::string::npos)
+      << r.out;
 
   r = test::run_cli("smooth --repair " + data("hourglass_ico.obj") + " -o " + quoted(path("s.obj")) +
                     " --steps 1 --fixed-rings 0 --quiet --log " + quoted(path("s.json")));
