@@ -1,8 +1,8 @@
 #include "arrays.h"
 
 #include <limits>
-#include <utility>
 #include <string>
+#include <utility>
 
 namespace fairsurf::python {
 namespace {

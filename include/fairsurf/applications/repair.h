@@ -61,9 +61,11 @@ struct RepairOptions {
   /// lone triangles, the debris a split or a removed cap can leave.
   bool remove_small_components = true;
   int min_component_faces = 2;
-  /// Remove fins: components with no vertex inside (every vertex on the border) that a split cut
-  /// loose from a component with one, at a vertex the two still share a position at (a zippered
-  /// scan's overlaps hang such strips on its surface).
+  /// Remove loose fins, what a split cut loose from a surface and left lying against it: components
+  /// with no vertex inside (every vertex on the border) that share an input vertex with a component
+  /// that has one, and pages, faces cut loose at a non-manifold edge that hang from their piece by
+  /// one edge at a vertex that is theirs alone and a copy of a vertex inside a surface, along an edge
+  /// that doubles one of that surface (a zippered scan's overlaps leave both; docs/repair.md).
   bool remove_loose_fins = true;
   /// Remove vertices no face uses (and those merged away).
   bool remove_unreferenced_vertices = true;
@@ -91,7 +93,7 @@ struct RepairReport {
   int non_orientable_components = 0;   ///< reported, not fixed (a Möbius band stays one)
   int small_components_removed = 0;
   int small_component_faces_removed = 0;
-  int fins_removed = 0;                ///< components with no vertex inside cut loose from a surface
+  int fins_removed = 0;                ///< loose fins: such components and pages, one count each
   int fin_faces_removed = 0;
   int unreferenced_vertices_removed = 0;  ///< including the vertices merged away
 
