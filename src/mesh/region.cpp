@@ -20,8 +20,16 @@ Region make_region(const Topology& topo, std::span<const int> free_vertices, Con
   // The first ring (0 = the free set itself) that reaches the mesh border bounds the rings of data.
   const auto border = boundary_vertex_flags(topo);
   r.complete_rings = 3;
-  for (int v = 0; v < topo.num_vertices; ++v)
+  int in_ring[4] = {0, 0, 0, 0};
+  for (int v = 0; v < topo.num_vertices; ++v) {
+    if (r.ring[v] >= 0) ++in_ring[r.ring[v]];
     if (border[v] && r.ring[v] >= 0) r.complete_rings = std::min(r.complete_rings, r.ring[v]);
+  }
+  // So does a ring left empty after the first: a region that takes nearly all of a closed mesh
+  // leaves its few fixed vertices all next to it, with no second or third ring to carry tangent
+  // planes or curvatures. (No fixed vertex at all, a closed mesh smoothed whole, needs no data.)
+  for (int k = 2; k <= 3; ++k)
+    if (in_ring[1] > 0 && in_ring[k] == 0) r.complete_rings = std::min(r.complete_rings, k - 1);
   const int supported = std::max(0, r.complete_rings - 1);
   r.supported = static_cast<Continuity>(std::min(static_cast<int>(requested), supported));
   return r;

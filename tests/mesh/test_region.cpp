@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "analytic_meshes.h"
 #include "test_support.h"
 
 using namespace fairsurf;
@@ -53,6 +54,30 @@ TEST(Region, ContinuityFallsBackNearTheBorder) {
   }
   // A lower request is never raised.
   EXPECT_EQ(make_region(g.topo, g.block(10, 10), Continuity::G1).supported, Continuity::G1);
+}
+
+// On a closed mesh: a cap leaves three rings; a region that takes all but three vertices far apart
+// leaves them all next to it, with no second ring, so only positions (G0) are given; the sphere
+// smoothed whole has no fixed vertex and needs no data.
+TEST(Region, AnEmptyRingBoundsTheRingsOfData) {
+  const Mesh sphere = test::icosphere(3);
+  const Topology topo = build_topology(sphere.F, sphere.num_vertices());
+  std::vector<int> cap, all_but_three, all;
+  Eigen::Index far[3];
+  for (int axis = 0; axis < 3; ++axis) sphere.V.col(axis).maxCoeff(&far[axis]);
+  for (int v = 0; v < sphere.num_vertices(); ++v) {
+    if (sphere.V(v, 2) > 0.5) cap.push_back(v);
+    if (v != far[0] && v != far[1] && v != far[2]) all_but_three.push_back(v);
+    all.push_back(v);
+  }
+  EXPECT_EQ(make_region(topo, cap).complete_rings, 3);
+  const Region most = make_region(topo, all_but_three);
+  EXPECT_EQ(most.num_free(), sphere.num_vertices() - 3);
+  EXPECT_EQ(most.complete_rings, 1);
+  EXPECT_EQ(most.supported, Continuity::G0);
+  const Region whole = make_region(topo, all);
+  EXPECT_EQ(whole.complete_rings, 3);
+  EXPECT_EQ(whole.supported, Continuity::G2);
 }
 
 TEST(Region, InteriorVerticesLeaveFixedRingsAlongTheBorder) {

@@ -24,7 +24,9 @@ struct Region {
   std::vector<int> ring;           ///< #V: 0 free, k = 1..3 fixed ring number, -1 farther away
   /// Complete fixed rings (0-3): the rings before the first one that contains a mesh-border
   /// vertex, or 3. A border vertex in ring k still holds position data but the band around the
-  /// region is cut there, so rings k and beyond are not a complete boundary condition.
+  /// region is cut there, so rings k and beyond are not a complete boundary condition. Where ring 1
+  /// has vertices and ring k (2 or 3) has none, at most k − 1 (a region that takes nearly all of a
+  /// closed mesh); with no fixed vertex at all (a closed mesh smoothed whole), 3.
   int complete_rings = 0;
   Continuity requested = Continuity::G2;
   Continuity supported = Continuity::G2;  ///< min(requested, complete_rings - 1); G0 at least
