@@ -676,8 +676,15 @@ FairRegionReport fair_uncrossed(Mesh& mesh, const Topology& topo, std::span<cons
     } catch (const NumericalError&) {  // no linear solution at this continuity
     }
   }
+  // Too few fixed rings are the likely cause where they support less than was asked.
+  const std::string rings = report.supported < report.requested
+                                ? "; its fixed rings support only " + std::string(to_string(report.supported)) +
+                                      ", not the " + to_string(report.requested) +
+                                      " requested: too few fixed rings around it (the region takes nearly all "
+                                      "of the mesh, or comes close to its border)"
+                                : "";
   throw NumericalError("fair_region: the faired region crosses the mesh where the given one did not (" +
-                       crossing_text(crossings) + "), and so does every linear solution down to ∆1");
+                       crossing_text(crossings) + "), and so does every linear solution down to ∆1" + rings);
 }
 
 }  // namespace

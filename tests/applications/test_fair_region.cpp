@@ -645,3 +645,24 @@ TEST(FairRegionReal, APartWhoseEveryFairingCrossesTheMeshStaysAsGivenAndTheOther
   EXPECT_TRUE(alone.V == faired.V);  // the ear as if faired alone, and nothing else moved
   EXPECT_GT((alone.V - input.V).norm(), 0);
 }
+
+// The hand closed with fill, every vertex marked but ten that all touch the region: there is no second
+// or third fixed ring, so the G2 flow has no tangent planes or curvatures to continue. It used to run
+// all the same and deliver a collapsed sheet as "G2, steady" (max|V| 4.65e32); now the region falls
+// back to G0, every fairing of it crosses the mesh, and the error says that the rings are too few.
+TEST(FairRegionReal, ARegionLeavingNoSecondFixedRingIsNotFairedAsG2) {
+  Mesh hand = read_mesh(test::data_path("hand_lowres.obj"));
+  fill_holes(hand, FillOptions{});
+  ASSERT_EQ(boundary_loops(hand.F, build_topology(hand.F, hand.num_vertices())).size(), 0u);
+  std::vector<int> region;
+  for (int v = 10; v < hand.num_vertices(); ++v) region.push_back(v);
+  const Region rings = make_region(build_topology(hand.F, hand.num_vertices()), region);
+  EXPECT_EQ(rings.complete_rings, 1);
+  try {
+    const FairRegionReport report = fair_region(hand, region, FairRegionOptions::harmonic_started());
+    EXPECT_NE(report.supported, Continuity::G2) << report.note;
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("its fixed rings support only G0, not the G2 requested"), std::string::npos)
+        << e.what();
+  }
+}
