@@ -95,6 +95,16 @@ std::vector<int> fan_numbers(const std::vector<Tri>& faces, const Adjacency& adj
   return fan;
 }
 
+std::vector<char> border_vertices(const Work& work, const Adjacency& adj) {
+  std::vector<char> on_border(work.num_vertices(), 0);
+  for (int e = 0; e < adj.num_edges(); ++e) {
+    if (adj.corners(e).size() != 1) continue;
+    const int c = adj.corners(e)[0];
+    on_border[work.faces[c / 3][c % 3]] = on_border[work.faces[c / 3][(c % 3 + 1) % 3]] = 1;
+  }
+  return on_border;
+}
+
 double mean_edge_length(const Work& work) {
   double total = 0;
   for (const Tri& f : work.faces)

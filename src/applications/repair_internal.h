@@ -52,6 +52,9 @@ struct Adjacency {
 };
 Adjacency build_adjacency(const std::vector<Tri>& faces, int num_vertices);
 
+/// Per working vertex, whether it is on a border edge (an edge `adj` gives one face).
+std::vector<char> border_vertices(const Work& work, const Adjacency& adj);
+
 /// Mean length of the faces' edges (each face counts its three edges); 0 without faces.
 double mean_edge_length(const Work& work);
 

@@ -144,13 +144,7 @@ void merge_vertices(Work& work, const RepairOptions& options, RepairReport& repo
 }
 
 void stitch_borders(Work& work, const RepairOptions& options, RepairReport& report) {
-  const Adjacency adj = build_adjacency(work.faces, work.num_vertices());
-  std::vector<char> border(work.num_vertices(), 0);
-  for (int e = 0; e < adj.num_edges(); ++e) {
-    if (adj.corners(e).size() != 1) continue;
-    const int c = adj.corners(e)[0];
-    border[work.faces[c / 3][c % 3]] = border[work.faces[c / 3][(c % 3 + 1) % 3]] = 1;
-  }
+  const std::vector<char> border = border_vertices(work, build_adjacency(work.faces, work.num_vertices()));
   std::vector<int> candidates;
   for (int v = 0; v < work.num_vertices(); ++v)
     if (border[v]) candidates.push_back(v);

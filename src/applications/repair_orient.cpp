@@ -93,31 +93,20 @@ std::vector<int> component_roots(const Work& work) {
   return parent;
 }
 
-// Whether each vertex is on a border edge (an edge of one face).
-std::vector<char> border_vertices(const Work& work, const Adjacency& adj) {
-  std::vector<char> on_border(work.num_vertices(), 0);
-  for (int e = 0; e < adj.num_edges(); ++e) {
-    const auto corners = adj.corners(e);
-    if (corners.size() != 1) continue;
-    const Tri& f = work.faces[corners[0] / 3];
-    on_border[f[corners[0] % 3]] = on_border[f[(corners[0] % 3 + 1) % 3]] = 1;
-  }
-  return on_border;
-}
-
 // Faces that hang by one edge from the rest of their piece, at a vertex that is theirs alone and
 // a copy of a vertex inside a surface, along an edge that doubles an edge of the surface (the same
 // two input vertices): pages a split cut loose at a non-manifold edge. A hole through such a page
 // runs along that surface edge, where any patch touches the surface.
-std::vector<char> hanging_pages(const Work& work, const Adjacency& adj, const std::vector<char>& on_border) {
+// `inside`: per working vertex, whether it has faces and is on no border edge.
+std::vector<char> hanging_pages(const Work& work, const Adjacency& adj, const std::vector<char>& inside) {
   const long long stride = work.V.rows();
   const auto input_edge = [&](int a, int b) {
     const long long x = work.origin[a], y = work.origin[b];
     return std::min(x, y) * stride + std::max(x, y);
   };
-  std::unordered_set<int> inside;  // input vertices with a working copy inside a surface
+  std::unordered_set<int> inside_at;  // input vertices with a working copy inside a surface
   for (int v = 0; v < work.num_vertices(); ++v)
-    if (!adj.faces_of(v).empty() && !on_border[v]) inside.insert(work.origin[v]);
+    if (inside[v]) inside_at.insert(work.origin[v]);
   std::unordered_map<long long, int> working_edges;  // input edge -> the working edges on it
   for (int e = 0; e < adj.num_edges(); ++e) {
     const int c = adj.corners(e)[0];
@@ -130,7 +119,7 @@ std::vector<char> hanging_pages(const Work& work, const Adjacency& adj, const st
     const Tri& f = work.faces[i];
     for (int k = 0; k < 3 && !page[i]; ++k) {
       const int v = f[k];
-      if (adj.faces_of(v).size() != 1 || !inside.contains(work.origin[v])) continue;
+      if (adj.faces_of(v).size() != 1 || !inside_at.contains(work.origin[v])) continue;
       page[i] = doubled(v, f[(k + 1) % 3]) || doubled(v, f[(k + 2) % 3]);
     }
   }
@@ -155,7 +144,6 @@ void remove_small_components(Work& work, int min_faces, RepairReport& report) {
   work.faces = std::move(kept);
 }
 
-
 // A fin is a component with no vertex inside (every vertex on a border edge) that shares an input
 // vertex with a component that has one: a strip of faces a split cut loose from a surface at a
 // non-manifold edge or vertex, as a scanner's zipper leaves them. Left in, it lies against the
@@ -167,9 +155,9 @@ void remove_loose_fins(Work& work, RepairReport& report) {
   const std::vector<int> root = component_roots(work);
   const Adjacency adj = build_adjacency(work.faces, n);
   const std::vector<char> on_border = border_vertices(work, adj);
-  std::vector<char> has_inside(n, 0);
+  std::vector<char> inside(n, 0), has_inside(n, 0);  // per vertex; per component root
   for (int v = 0; v < n; ++v)
-    if (!adj.faces_of(v).empty() && !on_border[v]) has_inside[root[v]] = 1;
+    if (!adj.faces_of(v).empty() && !on_border[v]) inside[v] = has_inside[root[v]] = 1;
   std::unordered_set<int> on_a_surface;  // input vertices used by a component with a vertex inside
   for (int v = 0; v < n; ++v)
     if (!adj.faces_of(v).empty() && has_inside[root[v]]) on_a_surface.insert(work.origin[v]);
@@ -177,7 +165,7 @@ void remove_loose_fins(Work& work, RepairReport& report) {
   for (int v = 0; v < n; ++v)
     if (!adj.faces_of(v).empty() && !has_inside[root[v]] && on_a_surface.contains(work.origin[v]))
       fin[root[v]] = 1;
-  const std::vector<char> page = hanging_pages(work, adj, on_border);
+  const std::vector<char> page = hanging_pages(work, adj, inside);
   std::vector<int> fin_faces(n, 0);
   std::vector<Tri> kept;
   kept.reserve(work.faces.size());
