@@ -106,7 +106,8 @@ void setup_repair(CLI::App& app) {
                   "Remove components with fewer faces (default 2: lone triangles; 0 keeps all)")
       ->check(whole_number_at_least(0));
   cmd->add_flag("--keep-fins", args->keep_fins,
-                "Keep loose fins: pieces with no vertex inside that a split cut loose from a surface");
+                "Keep loose fins: pieces with no vertex inside, and faces hanging by one edge, that a split "
+                "cut loose from a surface");
   cmd->add_flag("--keep-unreferenced", args->keep_unreferenced, "Keep vertices no face uses");
   cmd->callback([args] { run_repair(*args); });
 }
