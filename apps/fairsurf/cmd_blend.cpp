@@ -101,6 +101,29 @@ nlohmann::json report_json(const BlendReport& report) {
           {"seconds", report.seconds}};
 }
 
+nlohmann::json unjoined_json(const UnjoinedLoops& pair) {
+  return {{"loop_a", pair.loop_a}, {"loop_b", pair.loop_b}, {"length_a", pair.length_a},
+          {"length_b", pair.length_b}, {"why", pair.why}};
+}
+
+// A single blend's report as blend --all's.
+BlendAllReport one_blend(BlendReport blend) {
+  BlendAllReport all;
+  all.loops_left = blend.loops_found - 2;
+  all.seconds = blend.seconds;
+  all.blends.push_back(std::move(blend));
+  return all;
+}
+
+// blend --all: the pairs that could not be joined, and the loops no other loop was left to join.
+void print_left_open(const BlendAllReport& all) {
+  for (const UnjoinedLoops& pair : all.unjoined)
+    std::printf("loops %d and %d of the output (%d and %d vertices) stay open: %s\n", pair.loop_a, pair.loop_b,
+                pair.length_a, pair.length_b, pair.why.c_str());
+  const int alone = all.loops_left - 2 * static_cast<int>(all.unjoined.size());
+  if (alone > 0) std::printf("%d loop left open: no other loop to join it to\n", alone);
+}
+
 // The three lines of one blend's summary: the pair, the tube and its fairing, each loop's border.
 void print_blend(const BlendReport& report, bool no_relax) {
   const std::string start = tube_start(report, no_relax);
@@ -131,35 +154,42 @@ void run_blend(const BlendArgs& args) {
                       {"all", args.all},
                       {"repair", repair_json(repaired)}},
                      options.flow.step_kind);
-  const std::vector<BlendReport> reports = run.run(
+  const BlendAllReport all = run.run(
       [&] {
         return args.all ? blend_all_loops(mesh, options, run.observer())
-                        : std::vector<BlendReport>{blend_loops(mesh, options, run.observer())};
+                        : one_blend(blend_loops(mesh, options, run.observer()));
       },
       mesh, args.output);
-  double seconds = 0;
-  for (const BlendReport& report : reports) {
+  const double seconds = all.seconds;
+  for (const BlendReport& report : all.blends) {
     if (report.fair.method == FairMethod::flow) warn_if_not_parabolic(report.fair.flow);
     warn_if_folded_back("a", report.a);
     warn_if_folded_back("b", report.b);
     if (report.fair.checks_chose_linear)
       note_keep_flow("the tube is the linear one, which the angle or crease rule preferred to the settled G2 tube");
-    seconds += report.seconds;
   }
   note_vertex_data_dropped(had_vertex_data, mesh, input_name, "blend");
   note_new_faces(mesh, input_faces, input_name, "blend");
   write_mesh_output(args.output, mesh);
   if (args.all) {
-    nlohmann::json blends = nlohmann::json::array();
-    for (const BlendReport& report : reports) blends.push_back(report_json(report));
-    run.finish(nlohmann::json{{"blends", blends}, {"seconds", seconds}});
+    nlohmann::json blends = nlohmann::json::array(), unjoined = nlohmann::json::array();
+    for (const BlendReport& report : all.blends) blends.push_back(report_json(report));
+    for (const UnjoinedLoops& pair : all.unjoined) unjoined.push_back(unjoined_json(pair));
+    run.finish(nlohmann::json{
+        {"blends", blends}, {"unjoined", unjoined}, {"loops_left", all.loops_left}, {"seconds", seconds}});
   } else {
-    run.finish(report_json(reports.front()));
+    run.finish(report_json(all.blends.front()));
   }
-  for (const BlendReport& report : reports) print_blend(report, args.no_relax);
-  const int left = reports.back().loops_found - 2;
-  if (args.all && left > 0) std::printf("%d loop left open: no other loop to join it to\n", left);
+  for (const BlendReport& report : all.blends) print_blend(report, args.no_relax);
+  if (args.all) print_left_open(all);
   std::printf("%.2f s; wrote %s\n", seconds, args.output.c_str());
+  std::fflush(stdout);
+  const int unjoined = static_cast<int>(all.unjoined.size()), tried = unjoined + static_cast<int>(all.blends.size());
+  if (unjoined > 0)
+    throw CliError(kNumerical, "blend: " + std::to_string(unjoined) + " of " + std::to_string(tried) +
+                                   " pairs of loops could not be joined and stay open; " + args.output +
+                                   " still holds the " + std::to_string(all.blends.size()) +
+                                   (all.blends.size() == 1 ? " pair that was joined" : " pairs that were joined"));
 }
 
 void setup_blend(CLI::App& app) {
@@ -192,7 +222,8 @@ void setup_blend(CLI::App& app) {
                 "with the energy descent (BlendOptions::descent_fallback; docs/blend.md)");
   cmd->add_flag("--all", args->all,
                 "Join the closest pair of loops, then the closest pair of those left, until fewer than two "
-                "are left (pieces cut apart at several places)")
+                "are left (pieces cut apart at several places); a pair that cannot be joined stays open, its loops "
+                "paired with no other, and the others are joined and written (exit 4)")
       ->excludes(loops);
   add_region_fairing_options(cmd, args->fairing);
   add_keep_flow_flag(cmd, args->keep_flow);

@@ -214,7 +214,8 @@ py::tuple fair_binding(const py::handle& V, const py::handle& F, const py::handl
   return py::make_tuple(to_numpy(std::move(mesh.V)), d);
 }
 
-// `all_pairs`: blend_all_loops, each blend's report in the list "blends" (the `--log` of `blend --all`).
+// `all_pairs`: blend_all_loops, each blend's report in the list "blends", the pairs that could not be
+// joined in "unjoined" (the `--log` of `blend --all`).
 py::tuple blend_binding(const py::handle& V, const py::handle& F, const std::optional<std::pair<int, int>>& loops,
                         const FairingArgs& args, bool relax, bool keep_flow, bool all_pairs, py::object callback) {
   Mesh mesh = to_mesh(V, F);
@@ -228,14 +229,18 @@ py::tuple blend_binding(const py::handle& V, const py::handle& F, const std::opt
   progress.attach(options.flow);
   py::dict d("functions"_a = args.functions, "keep_flow"_a = keep_flow, "all"_a = all_pairs);
   if (all_pairs) {
-    const std::vector<BlendReport> reports =
+    const BlendAllReport all =
         keeping_last_state(mesh, [&] { return blend_all_loops(mesh, options, progress.flow_observer()); });
     progress.rethrow();
-    py::list blends;
-    double seconds = 0;
-    for (const BlendReport& report : reports) blends.append(to_dict(report)), seconds += report.seconds;
+    py::list blends, unjoined;
+    for (const BlendReport& report : all.blends) blends.append(to_dict(report));
+    for (const UnjoinedLoops& pair : all.unjoined)
+      unjoined.append(py::dict("loop_a"_a = pair.loop_a, "loop_b"_a = pair.loop_b, "length_a"_a = pair.length_a,
+                               "length_b"_a = pair.length_b, "why"_a = pair.why));
     d["blends"] = blends;
-    d["seconds"] = seconds;
+    d["unjoined"] = unjoined;
+    d["loops_left"] = all.loops_left;
+    d["seconds"] = all.seconds;
   } else {
     const BlendReport report =
         keeping_last_state(mesh, [&] { return blend_loops(mesh, options, progress.flow_observer()); });

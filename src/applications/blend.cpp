@@ -753,14 +753,6 @@ BlendReport blend_loops(Mesh& mesh, const BlendOptions& options, const FlowObser
   return report;
 }
 
-std::vector<BlendReport> blend_all_loops(Mesh& mesh, const BlendOptions& options, const FlowObserver& observer) {
-  if (options.loop_a >= 0 || options.loop_b >= 0)
-    throw InvalidArgument("blend_all_loops: the pairs are chosen one after the other; loop_a and loop_b must be -1");
-  std::vector<BlendReport> reports{blend_loops(mesh, options, observer)};
-  while (reports.back().loops_found - 2 >= 2) reports.push_back(blend_loops(mesh, options, observer));
-  return reports;
-}
-
 void keep_settled_flow(BlendOptions& options) {
   keep_settled_flow(static_cast<FairRegionOptions&>(options));
   options.weigh_against_linear_tube = false;

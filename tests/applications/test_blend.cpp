@@ -212,10 +212,14 @@ TEST(Blend, AllLoopsAreJoinedPairByPairAsSuccessiveBlendsJoinThem) {
   blend_loops(one_by_one);
   blend_loops(one_by_one);
   Mesh all = input;
-  const std::vector<BlendReport> reports = blend_all_loops(all);
-  ASSERT_EQ(reports.size(), 2u);
-  EXPECT_EQ(reports[0].loops_found, 4);
-  EXPECT_EQ(reports[1].loops_found, 2);
+  const BlendAllReport report = blend_all_loops(all);
+  ASSERT_EQ(report.blends.size(), 2u);
+  EXPECT_EQ(report.blends[0].loops_found, 4);
+  EXPECT_EQ(report.blends[1].loops_found, 2);
+  EXPECT_TRUE(report.blends[0].automatic);
+  EXPECT_GT(report.blends[0].loop_distance, 0.0);
+  EXPECT_TRUE(report.unjoined.empty());
+  EXPECT_EQ(report.loops_left, 0);
   EXPECT_EQ(loop_count(all), 0);
   EXPECT_TRUE(all.V == one_by_one.V);
   EXPECT_TRUE(all.F == one_by_one.F);
@@ -225,6 +229,45 @@ TEST(Blend, AllLoopsAreJoinedPairByPairAsSuccessiveBlendsJoinThem) {
   Mesh refused = input;
   EXPECT_THROW(blend_all_loops(refused, named), InvalidArgument);
   EXPECT_TRUE(refused.V == input.V);
+}
+
+// Two capsules, each cut across by a slab; a thin closed disk lies in the narrower gap
+// (test::capsules_one_gap_blocked), so that pair, the closest, cannot be joined: every tube through it crosses the disk. blend_all_loops
+// leaves that pair as it was, joins the other, and pairs neither loop of the first with a loop of
+// the second capsule, far away.
+TEST(Blend, AllLoopsLeavesAPairThatCannotBeJoinedOpenAndJoinsTheOthers) {
+  const Mesh input = test::capsules_one_gap_blocked();
+  ASSERT_EQ(loop_count(input), 4);
+
+  Mesh all = input;
+  const BlendAllReport report = blend_all_loops(all);
+  ASSERT_EQ(report.unjoined.size(), 1u);
+  ASSERT_EQ(report.blends.size(), 1u);
+  EXPECT_EQ(report.loops_left, 2);
+  const UnjoinedLoops& unjoined = report.unjoined.front();
+  EXPECT_NE(unjoined.why.find("crosses the mesh"), std::string::npos) << unjoined.why;
+  const std::vector<std::vector<int>> left = boundary_loops(all.F, build_topology(all.F, all.num_vertices()));
+  ASSERT_EQ(left.size(), 2u);
+  for (int index : {unjoined.loop_a, unjoined.loop_b})
+    for (int v : left[index]) EXPECT_GT(all.V(v, 0), 3.0);  // both on the blocked capsule
+  EXPECT_EQ(unjoined.length_a, static_cast<int>(left[unjoined.loop_a].size()));
+
+  // The mesh is the input with the open capsule's pair joined, as blend_loops joins it alone.
+  const BlendReport& joined = report.blends.front();
+  EXPECT_TRUE(joined.automatic);
+  BlendOptions that_pair;
+  that_pair.loop_a = joined.a.index;
+  that_pair.loop_b = joined.b.index;
+  Mesh alone = input;
+  blend_loops(alone, that_pair);
+  EXPECT_TRUE(all.V == alone.V);
+  EXPECT_TRUE(all.F == alone.F);
+  EXPECT_TRUE(all.V.topRows(input.num_vertices()) == input.V);
+  EXPECT_TRUE(new_face_crossings(all, input.num_faces()).empty());
+  expect_clean(all);
+
+  Mesh closed = test::ellipsoid(2, 1, 1, 1);
+  EXPECT_THROW(blend_all_loops(closed), InvalidMeshError);
 }
 
 // Real data: two adjacent ends of fairing_cross.off face away from each other, so the tube turns

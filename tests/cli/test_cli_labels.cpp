@@ -200,6 +200,31 @@ TEST_F(CliLabels, BlendAllJoinsEveryPairOneAfterTheOther) {
   EXPECT_FALSE(fs::exists(file("c.ply")));
 }
 
+// blend --all where the closest pair cannot be joined (test::capsules_one_gap_blocked: a disk in
+// the gap): the other pair is joined and written, the pair that could not be says why, exit 4.
+TEST_F(CliLabels, BlendAllWritesThePairsItJoinedAndNamesThoseItCouldNot) {
+  write_mesh(file("capsules.ply"), test::capsules_one_gap_blocked());
+  const auto run = test::run_cli("blend " + path("capsules.ply") + " --all -o " + path("b.ply") + " --quiet --log " +
+                                 path("b.json"));
+  ASSERT_EQ(run.exit_code, 4) << run.out;
+  EXPECT_NE(run.out.find("blended loops 2 and 3 of 4 (closest pair)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("loops 0 and 1 of the output ("), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find(") stay open: blend_loops: the faired tube crosses the mesh"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("fairsurf: error: blend: 1 of 2 pairs of loops could not be joined and stay open; " +
+                         file("b.ply") + " still holds the 1 pair that was joined"),
+            std::string::npos)
+      << run.out;
+  const Mesh written = read_mesh(file("b.ply"));
+  EXPECT_TRUE(validate(written).manifold());
+  EXPECT_EQ(boundary_loops(written.F, build_topology(written.F, written.num_vertices())).size(), 2u);
+  std::ifstream log_file(file("b.json"));
+  const nlohmann::json log = nlohmann::json::parse(log_file);
+  EXPECT_EQ(log["blends"].size(), 1u);
+  ASSERT_EQ(log["unjoined"].size(), 1u);
+  EXPECT_EQ(log["unjoined"][0]["loop_a"], 0);
+  EXPECT_EQ(log["loops_left"], 2);
+}
+
 // A band cut across spot's neck where a fin of the cut juts out (bench_real_holes --all-slabs' spot
 // 1519 z): the loops do not face each other, and every tube folds back at one of them, the one
 // delivered by 147° where the uncut neck reads 13°. blend writes it and says so; a tube between

@@ -103,11 +103,31 @@ def test_blend_all_pairs_is_blend_all(cli, tmp_path, data_dir):
     log = cli_log(cli, tmp_path, "blend", path, "--all")
     assert keys(report) == keys(log)
     assert [b["loops_found"] for b in report["blends"]] == [4, 2]
+    assert report["unjoined"] == [] and report["loops_left"] == 0
     assert fairsurf.info(V2, F2)["boundary_loops"] == []
     V_cli, F_cli = fairsurf.read_mesh(tmp_path / "out.ply")
     assert np.array_equal(F2, F_cli) and np.abs(V2 - V_cli).max() <= 1e-12
     with pytest.raises(fairsurf.InvalidArgument):
         fairsurf.blend(V, F, loops=(0, 3), all_pairs=True)
+
+
+def test_blend_all_pairs_leaves_a_pair_it_cannot_join_open(tmp_path):
+    # Two copies of the fig4 caps side by side, a thin closed octahedron (a disk) in the gap of the
+    # first: its pair cannot be joined, the other pair is, and the report says which stayed open.
+    V, F = fairsurf.scene("fig4")[:2]
+    disk = np.array([[1.5, 0, 0], [-1.5, 0, 0], [0, 1.5, 0], [0, -1.5, 0], [0, 0, 0.02], [0, 0, -0.02]])
+    disk_faces = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
+    shifted = V + np.array([5.0, 0, 0])
+    V2 = np.vstack([V, disk, shifted])
+    F2 = np.vstack([F, disk_faces + len(V), F + len(V) + len(disk)])
+    V3, F3, report = fairsurf.blend(V2, F2, all_pairs=True, max_steps=20)
+    assert len(report["blends"]) == 1 and report["loops_left"] == 2
+    (unjoined,) = report["unjoined"]
+    assert "crosses the mesh" in unjoined["why"]
+    assert (unjoined["loop_a"], unjoined["loop_b"]) == (0, 1)  # the first copy's loops
+    assert unjoined["length_a"] == unjoined["length_b"] == 54
+    assert fairsurf.info(V3, F3)["boundary_loops"] == [54, 54]
+    assert np.array_equal(V3[: len(V2)], V2)
 
 
 def test_info_fields_and_values(cli, data_dir):

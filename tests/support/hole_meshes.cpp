@@ -4,6 +4,7 @@
 #include "test_support.h"
 
 #include <fairsurf/mesh/face_intersection.h>
+#include <fairsurf/mesh/mesh_operations.h>
 #include <fairsurf/mesh/topology.h>
 
 #include <Eigen/Geometry>
@@ -148,6 +149,14 @@ Mesh cut_slab(const Mesh& mesh, const Vec3& point, const Vec3& axis, double half
         if (!removed[g] && in_slab(g)) removed[g] = 1, stack.push_back(g);
   }
   return keep_faces(mesh, [&](int f) { return !removed[f]; });
+}
+
+Mesh capsules_one_gap_blocked() {
+  const Mesh capsule = ellipsoid(4, 0.5, 0.5, 1.2);
+  Mesh blocked = cut_slab(capsule, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.2);
+  blocked = concatenate_meshes(blocked, ellipsoid(3, 0.8, 0.8, 0.03));
+  blocked.V.col(0).array() += 4.0;
+  return concatenate_meshes(blocked, cut_slab(capsule, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.3));
 }
 
 void add_normal_noise(Mesh& mesh, double sigma, unsigned seed) {

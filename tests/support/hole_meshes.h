@@ -48,6 +48,12 @@ Mesh sphere_hole_with_lone_triangle(int* pinch = nullptr);
 /// pinches: B cannot be filled, A can alone (its patch joins the corner's two fans).
 Mesh grid_with_chained_pinches();
 
+/// Two capsules (test::ellipsoid(4, 0.5, 0.5, 1.2)), each cut across its middle by a slab (cut_slab):
+/// first the blocked one, shifted to x = 4, whose gap (0.4 wide, the narrower) holds a thin closed
+/// disk (ellipsoid(3, 0.8, 0.8, 0.03)) that every tube between its loops crosses, then the open one
+/// at the origin, gap 0.6 wide. Four boundary loops; the blocked pair is the closest.
+Mesh capsules_one_gap_blocked();
+
 /// Moves every vertex of `mesh` along its area-weighted normal by a normal deviate of standard
 /// deviation `sigma` (a scan's noise; the same `seed` gives the same draw).
 void add_normal_noise(Mesh& mesh, double sigma, unsigned seed);

@@ -19,6 +19,7 @@
 #include <fairsurf/mesh/mesh_operations.h>
 #include <fairsurf/patch/patch.h>
 
+#include <string>
 #include <vector>
 
 namespace fairsurf {
@@ -162,14 +163,32 @@ struct BlendReport {
 /// names the first crossings (`mesh` then holds the last tube tried).
 BlendReport blend_loops(Mesh& mesh, const BlendOptions& options = {}, const FlowObserver& observer = {});
 
+/// A pair of loops blend_all_loops chose and could not join: both stay open, and neither is joined
+/// to another loop.
+struct UnjoinedLoops {
+  /// Indices of the two loops into boundary_loops of the mesh blend_all_loops returns.
+  int loop_a = -1, loop_b = -1;
+  int length_a = 0, length_b = 0;  ///< their vertices
+  std::string why;                 ///< what blend_loops threw for them
+};
+
+struct BlendAllReport {
+  std::vector<BlendReport> blends;    ///< each pair joined, in order (loop indices as that blend found them)
+  std::vector<UnjoinedLoops> unjoined;  ///< each pair that could not be joined, in the order tried
+  int loops_left = 0;                 ///< boundary loops of the result
+  double seconds = 0;                 ///< wall time of the whole call
+};
+
 /// Joins the closest pair of boundary loops, then the closest pair of the loops left, and so on
 /// until fewer than two are left: blend_loops with the pair chosen each time, for a part cut apart
-/// at several places (data/cgal_blobby_3cc.off: three pieces, two gaps). Returns each blend's report
-/// in order (each loop index is the mesh's as that blend found it). Throws InvalidArgument where
-/// `options` name a pair (loop_a, loop_b), and whatever blend_loops throws, `mesh` then holding the
-/// pairs joined before.
-std::vector<BlendReport> blend_all_loops(Mesh& mesh, const BlendOptions& options = {},
-                                         const FlowObserver& observer = {});
+/// at several places (data/cgal_blobby_3cc.off: three pieces, two gaps). A pair blend_loops cannot
+/// join (NumericalError: every tube crosses the mesh; RepairableMeshError: the loops touch) is left
+/// as it was and listed in `unjoined`, and its two loops are paired with no other: the closest loop
+/// to each of them was the other, and a tube to a farther loop would join what the cut did not
+/// separate. The mesh then holds every other pair joined. Throws InvalidArgument where `options`
+/// name a pair (loop_a, loop_b), InvalidMeshError where the mesh has fewer than two loops, and what
+/// blend_loops throws otherwise (`mesh` then holding the pairs joined before).
+BlendAllReport blend_all_loops(Mesh& mesh, const BlendOptions& options = {}, const FlowObserver& observer = {});
 
 /// Measures continuity at the vertices of `loop` only: on the faces within `rings` rings of it,
 /// with the free vertices among them (continuity_measure.h's measure_continuity).
