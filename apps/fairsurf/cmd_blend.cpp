@@ -103,7 +103,7 @@ nlohmann::json report_json(const BlendReport& report) {
 
 nlohmann::json unjoined_json(const UnjoinedLoops& pair) {
   return {{"loop_a", pair.loop_a}, {"loop_b", pair.loop_b}, {"length_a", pair.length_a},
-          {"length_b", pair.length_b}, {"why", pair.why}};
+          {"length_b", pair.length_b}, {"why", pair.why}, {"repairable", pair.repairable}};
 }
 
 // A single blend's report as blend --all's.
@@ -122,6 +122,13 @@ void print_left_open(const BlendAllReport& all) {
                 pair.length_a, pair.length_b, pair.why.c_str());
   const int alone = all.loops_left - 2 * static_cast<int>(all.unjoined.size());
   if (alone > 0) std::printf("%d loop left open: no other loop to join it to\n", alone);
+}
+
+// Where a pair could not be joined because its loops touch or pinch at a vertex: what repairs it.
+std::string repair_hint(const BlendAllReport& all) {
+  for (const UnjoinedLoops& pair : all.unjoined)
+    if (pair.repairable) return "; loops that touch at a vertex: run with --repair, or `fairsurf repair`";
+  return "";
 }
 
 // The three lines of one blend's summary: the pair, the tube and its fairing, each loop's border.
@@ -189,7 +196,8 @@ void run_blend(const BlendArgs& args) {
     throw CliError(kNumerical, "blend: " + std::to_string(unjoined) + " of " + std::to_string(tried) +
                                    " pairs of loops could not be joined and stay open; " + args.output +
                                    " still holds the " + std::to_string(all.blends.size()) +
-                                   (all.blends.size() == 1 ? " pair that was joined" : " pairs that were joined"));
+                                   (all.blends.size() == 1 ? " pair that was joined" : " pairs that were joined") +
+                                   repair_hint(all));
 }
 
 void setup_blend(CLI::App& app) {

@@ -236,7 +236,7 @@ py::tuple blend_binding(const py::handle& V, const py::handle& F, const std::opt
     for (const BlendReport& report : all.blends) blends.append(to_dict(report));
     for (const UnjoinedLoops& pair : all.unjoined)
       unjoined.append(py::dict("loop_a"_a = pair.loop_a, "loop_b"_a = pair.loop_b, "length_a"_a = pair.length_a,
-                               "length_b"_a = pair.length_b, "why"_a = pair.why));
+                               "length_b"_a = pair.length_b, "why"_a = pair.why, "repairable"_a = pair.repairable));
     d["blends"] = blends;
     d["unjoined"] = unjoined;
     d["loops_left"] = all.loops_left;

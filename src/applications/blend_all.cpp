@@ -55,7 +55,7 @@ BlendAllReport blend_all_loops(Mesh& mesh, const BlendOptions& options, const Fl
                            (found == 1 ? " boundary loop" : " boundary loops") + "; blending needs two");
   BlendAllReport report;
   std::vector<int> set_aside;  // names of the loops of pairs that could not be joined
-  std::vector<std::pair<std::string, std::pair<int, int>>> failures;  // why, and the two names
+  std::vector<UnjoinedLoops> failures;  // loop_a and loop_b hold the loops' names until the end
   for (;;) {
     const std::vector<std::vector<int>> loops = loops_of(mesh);
     const std::vector<int> open = open_loops(loops, set_aside);
@@ -65,11 +65,11 @@ BlendAllReport blend_all_loops(Mesh& mesh, const BlendOptions& options, const Fl
     chosen.loop_a = pair.first;
     chosen.loop_b = pair.second;
     const Mesh before = mesh;
-    const auto set_pair_aside = [&](const Error& e) {
+    const auto set_pair_aside = [&](const Error& e, bool repairable) {
       mesh = before;
       const int a = loop_name(loops[pair.first]), b = loop_name(loops[pair.second]);
       set_aside.insert(set_aside.end(), {a, b});
-      failures.push_back({e.what(), {a, b}});
+      failures.push_back({a, b, 0, 0, e.what(), repairable});
     };
     try {
       BlendReport blend = blend_loops(mesh, chosen, observer);
@@ -77,18 +77,19 @@ BlendAllReport blend_all_loops(Mesh& mesh, const BlendOptions& options, const Fl
       blend.loop_distance = pair.distance;
       report.blends.push_back(std::move(blend));
     } catch (const NumericalError& e) {
-      set_pair_aside(e);
+      set_pair_aside(e, false);
     } catch (const RepairableMeshError& e) {
-      set_pair_aside(e);
+      set_pair_aside(e, true);
     }
   }
   const std::vector<std::vector<int>> left = loops_of(mesh);
-  for (const auto& [why, names] : failures) {
-    UnjoinedLoops pair{index_of(left, names.first), index_of(left, names.second), 0, 0, why};
+  for (UnjoinedLoops& pair : failures) {
+    pair.loop_a = index_of(left, pair.loop_a);
+    pair.loop_b = index_of(left, pair.loop_b);
     pair.length_a = static_cast<int>(left[pair.loop_a].size());
     pair.length_b = static_cast<int>(left[pair.loop_b].size());
-    report.unjoined.push_back(std::move(pair));
   }
+  report.unjoined = std::move(failures);
   report.loops_left = static_cast<int>(left.size());
   report.seconds = detail::seconds_since(start);
   return report;

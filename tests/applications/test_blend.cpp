@@ -246,6 +246,7 @@ TEST(Blend, AllLoopsLeavesAPairThatCannotBeJoinedOpenAndJoinsTheOthers) {
   EXPECT_EQ(report.loops_left, 2);
   const UnjoinedLoops& unjoined = report.unjoined.front();
   EXPECT_NE(unjoined.why.find("crosses the mesh"), std::string::npos) << unjoined.why;
+  EXPECT_FALSE(unjoined.repairable);
   const std::vector<std::vector<int>> left = boundary_loops(all.F, build_topology(all.F, all.num_vertices()));
   ASSERT_EQ(left.size(), 2u);
   for (int index : {unjoined.loop_a, unjoined.loop_b})
@@ -268,6 +269,22 @@ TEST(Blend, AllLoopsLeavesAPairThatCannotBeJoinedOpenAndJoinsTheOthers) {
 
   Mesh closed = test::ellipsoid(2, 1, 1, 1);
   EXPECT_THROW(blend_all_loops(closed), InvalidMeshError);
+}
+
+// Two holes of a sphere that touch at a vertex (test::sphere_with_two_holes_touching): no tube starts
+// from both. blend_all_loops leaves them open, says repair mends them, and changes nothing.
+TEST(Blend, AllLoopsLeavesLoopsThatTouchOpenAndSaysRepairSplitsThem) {
+  const Mesh input = test::sphere_with_two_holes_touching();
+  ASSERT_EQ(loop_count(input), 2);
+  Mesh all = input;
+  const BlendAllReport report = blend_all_loops(all);
+  EXPECT_TRUE(report.blends.empty());
+  ASSERT_EQ(report.unjoined.size(), 1u);
+  EXPECT_TRUE(report.unjoined.front().repairable);
+  EXPECT_NE(report.unjoined.front().why.find("share vertex"), std::string::npos) << report.unjoined.front().why;
+  EXPECT_EQ(report.loops_left, 2);
+  EXPECT_TRUE(all.V == input.V);
+  EXPECT_TRUE(all.F == input.F);
 }
 
 // Real data: two adjacent ends of fairing_cross.off face away from each other, so the tube turns

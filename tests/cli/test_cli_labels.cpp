@@ -222,7 +222,18 @@ TEST_F(CliLabels, BlendAllWritesThePairsItJoinedAndNamesThoseItCouldNot) {
   EXPECT_EQ(log["blends"].size(), 1u);
   ASSERT_EQ(log["unjoined"].size(), 1u);
   EXPECT_EQ(log["unjoined"][0]["loop_a"], 0);
+  EXPECT_EQ(log["unjoined"][0]["repairable"], false);
   EXPECT_EQ(log["loops_left"], 2);
+
+  // Loops that touch at a vertex: the same exit, and the hint that repair splits the vertex.
+  write_mesh(file("touching.ply"), test::sphere_with_two_holes_touching());
+  const auto touching = test::run_cli("blend " + path("touching.ply") + " --all -o " + path("t.ply") + " --quiet");
+  EXPECT_EQ(touching.exit_code, 4) << touching.out;
+  EXPECT_NE(touching.out.find("could not be joined and stay open; " + file("t.ply") +
+                              " still holds the 0 pairs that were joined; loops that touch at a vertex: run with "
+                              "--repair, or `fairsurf repair`"),
+            std::string::npos)
+      << touching.out;
 }
 
 // A band cut across spot's neck where a fin of the cut juts out (bench_real_holes --all-slabs' spot

@@ -159,6 +159,24 @@ Mesh capsules_one_gap_blocked() {
   return concatenate_meshes(blocked, cut_slab(capsule, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 0.3));
 }
 
+Mesh sphere_with_two_holes_touching() {
+  const Mesh sphere = icosphere(3);
+  std::vector<int> fan;
+  for (int f = 0; f < sphere.num_faces(); ++f)
+    if ((sphere.F.row(f).array() == 0).any()) fan.push_back(f);
+  const auto shared = [&](int f, int g) {
+    int count = 0;
+    for (int i = 0; i < 3; ++i) count += (sphere.F.row(g).array() == sphere.F(f, i)).any() ? 1 : 0;
+    return count;
+  };
+  for (int g : fan)
+    if (shared(fan.front(), g) == 1) {
+      const int cut[] = {fan.front(), g};
+      return cut_faces(sphere, cut);
+    }
+  return sphere;  // not reached: a fan of five or more faces has two that share only its centre
+}
+
 void add_normal_noise(Mesh& mesh, double sigma, unsigned seed) {
   Vertices normal = Vertices::Zero(mesh.num_vertices(), 3);
   for (int f = 0; f < mesh.num_faces(); ++f) {

@@ -54,6 +54,10 @@ Mesh grid_with_chained_pinches();
 /// at the origin, gap 0.6 wide. Four boundary loops; the blocked pair is the closest.
 Mesh capsules_one_gap_blocked();
 
+/// A unit icosphere (level 3) without two faces of vertex 0's fan that share no edge: two triangular
+/// holes whose loops touch at vertex 0, a non-manifold vertex that repair splits.
+Mesh sphere_with_two_holes_touching();
+
 /// Moves every vertex of `mesh` along its area-weighted normal by a normal deviate of standard
 /// deviation `sigma` (a scan's noise; the same `seed` gives the same draw).
 void add_normal_noise(Mesh& mesh, double sigma, unsigned seed);

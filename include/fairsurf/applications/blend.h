@@ -170,6 +170,9 @@ struct UnjoinedLoops {
   int loop_a = -1, loop_b = -1;
   int length_a = 0, length_b = 0;  ///< their vertices
   std::string why;                 ///< what blend_loops threw for them
+  /// It threw RepairableMeshError: the loops touch, or one passes through a vertex twice, at a
+  /// non-manifold vertex that repair (repair.h) splits.
+  bool repairable = false;
 };
 
 struct BlendAllReport {
