@@ -347,7 +347,23 @@ std::string fair_summary(const FairTally& t) {
 
 struct BlendTally {
   int blends = 0, errors = 0, not_steady = 0, g2 = 0, lower = 0, folds_back = 0, crossing = 0;
+  /// Errors that were refusals naming repair (RepairableMeshError: two loops that touch), and of
+  /// those, the slabs still not blended once the cut is repaired (as `fairsurf blend --repair` does).
+  int repairable = 0, errors_after_repair = 0;
 };
+
+// Blends `cut` again after repairing it, as `fairsurf blend --repair` does: the label delivered, or
+// the error.
+std::string blend_after_repair(Mesh cut, BlendTally& tally) {
+  repair(cut, RepairOptions{});
+  try {
+    const BlendReport r = blend_loops(cut, BlendOptions{});
+    return delivered_label(r.fair.supported, r.fair.linear);
+  } catch (const std::exception& e) {
+    ++tally.errors_after_repair;
+    return std::string("error: ") + e.what();
+  }
+}
 
 // The cut of slab `draw`'s next draws leave, if it has exactly two loops of at most kMaxBlendLoop
 // edges; an empty mesh otherwise.
@@ -385,6 +401,10 @@ void blend_trial(const ClosedMesh& m, const Mesh& cut, int slab, int vertex, con
     tally.crossing += crossing;
     std::printf("%s%s%s, %.2f s%s\n", delivered_label(r.fair.supported, r.fair.linear).c_str(),
                 steady ? "" : ", NOT STEADY", back ? ", folds back" : "", r.seconds, crossing ? ", OUTPUT CROSSES" : "");
+  } catch (const RepairableMeshError& e) {
+    ++tally.errors;
+    ++tally.repairable;
+    std::printf("error: %s\n    repaired and blended again: %s\n", e.what(), blend_after_repair(cut, tally).c_str());
   } catch (const std::exception& e) {
     ++tally.errors;
     std::printf("error: %s\n", e.what());
@@ -392,11 +412,12 @@ void blend_trial(const ClosedMesh& m, const Mesh& cut, int slab, int vertex, con
 }
 
 std::string blend_summary(const BlendTally& t) {
-  char text[300];
+  char text[400];
   std::snprintf(text, sizeof text,
-                "blend: %d slabs, errors %d, not steady %d, steady G2 %d, below the continuity asked for %d, folding "
-                "back at a loop %d, crossing outputs %d",
-                t.blends, t.errors, t.not_steady, t.g2, t.lower, t.folds_back, t.crossing);
+                "blend: %d slabs, errors %d (%d refused for repair; after repair, %d), not steady %d, steady G2 %d, "
+                "below the continuity asked for %d, folding back at a loop %d, crossing outputs %d",
+                t.blends, t.errors, t.repairable, t.errors_after_repair, t.not_steady, t.g2, t.lower, t.folds_back,
+                t.crossing);
   return text;
 }
 
