@@ -78,10 +78,11 @@ struct FairRegionOptions {
   /// does not parse (parse_energy_functions) is refused, InvalidArgument, before any fairing.
   std::vector<std::string> held_out_other_functions;
   /// With held_out_rings: the linear solution is delivered only where its held-out error times this
-  /// stays below the flow's (the better of the two flows'). 1 (here, and for `fairsurf fair`): the
-  /// plain comparison. FillOptions uses 1.05: within a few percent the held-out rings cannot tell a
-  /// hole's two fills apart, and such a tie goes to the G2 that was asked for; on marked regions it
-  /// does not pay (docs/real-holes.md, "Ties go to the flow"). At least 1.
+  /// stays below the flow's (the better of the two flows'). 1 here: the plain comparison.
+  /// harmonic_started() (`fairsurf fair`) uses 1.015 and FillOptions 1.05: within so little the
+  /// held-out rings cannot tell the two fairings apart, and such a tie goes to the G2 that was asked
+  /// for; on marked regions fill's 1.05 costs distance (docs/real-holes.md, "Ties go to the flow" and
+  /// "Ties go to the flow, for regions too"). At least 1.
   double held_out_margin = 1.0;
   /// With held_out_rings: whether they may choose a linear solution (the ∆^k floor, or fill's solve
   /// from the patch before its membrane). false (keep_settled_flow): they only choose the flow's
