@@ -390,6 +390,21 @@ std::vector<FaceIntersection> region_crossings(const Mesh& m, const std::vector<
 // bench_real_holes' fair region airplane 1206 8h: the vertices within 8 h of kFinRoot.
 const Eigen::RowVector3d kFinRoot(-7.10032, 0.122909, 3.11757);
 
+// The vertices of `mesh` strictly within `radius` of `centre` (bench_real_holes' fair regions).
+std::vector<int> ball_region(const Mesh& mesh, const Eigen::RowVector3d& centre, double radius) {
+  std::vector<int> region;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if ((mesh.V.row(v) - centre).norm() < radius) region.push_back(v);
+  return region;
+}
+
+// How far the vertices of `region` moved from `from` to `to`, summed.
+double moved(const Mesh& from, const Mesh& to, const std::vector<int>& region) {
+  double sum = 0;
+  for (int v : region) sum += (to.V.row(v) - from.V.row(v)).norm();
+  return sum;
+}
+
 std::vector<int> fin_root_region(const Mesh& airplane) {
   const double h = test::mean_edge_length(airplane);
   std::vector<int> region;
@@ -502,10 +517,7 @@ TEST(FairRegionReal, AFaceThatAlreadyCrossesMayNotCrossMoreOften) {
 TEST(FairRegionReal, ANearTieOfTheHeldOutRingsGoesToTheFlow) {
   const Mesh airplane = read_mesh(test::data_path("airplane.obj"));
   const double h = test::mean_edge_length(airplane);
-  const Eigen::RowVector3d centre = airplane.V.row(8482);
-  std::vector<int> region;
-  for (int v = 0; v < airplane.num_vertices(); ++v)
-    if ((airplane.V.row(v) - centre).norm() < 4 * h) region.push_back(v);
+  const std::vector<int> region = ball_region(airplane, airplane.V.row(8482), 4 * h);
   const FairRegionOptions options = FairRegionOptions::harmonic_started();
   EXPECT_EQ(options.held_out_margin, 1.015);
 
@@ -522,11 +534,7 @@ TEST(FairRegionReal, ANearTieOfTheHeldOutRingsGoesToTheFlow) {
   EXPECT_NE(lost.note.find("the linear ∆3 solution re-predicts the 2 rings around the region better"),
             std::string::npos)
       << lost.note;
-  double moved_flow = 0, moved_linear = 0;
-  for (int v : region) {
-    moved_flow += (flowed.V.row(v) - airplane.V.row(v)).norm();
-    moved_linear += (linear.V.row(v) - airplane.V.row(v)).norm();
-  }
+  const double moved_flow = moved(airplane, flowed, region), moved_linear = moved(airplane, linear, region);
   std::printf("[fair] airplane 8482 4h (%zu vertices): flow moved %.4f h, linear %.4f h; %s\n", region.size(),
               moved_flow / region.size() / h, moved_linear / region.size() / h, lost.note.c_str());
   EXPECT_LT(moved_flow, 1.05 * moved_linear);
@@ -540,10 +548,7 @@ TEST(FairRegionReal, ANearTieOfTheHeldOutRingsGoesToTheFlow) {
 TEST(FairRegionReal, AFlowThatCrossesTheMeshIsFlowedAgainStoppingShortOfTheContact) {
   const Mesh airplane = read_mesh(test::data_path("airplane.obj"));
   const double h = test::mean_edge_length(airplane);
-  const Eigen::RowVector3d centre = airplane.V.row(8295);
-  std::vector<int> region;
-  for (int v = 0; v < airplane.num_vertices(); ++v)
-    if ((airplane.V.row(v) - centre).norm() < 8 * h) region.push_back(v);
+  const std::vector<int> region = ball_region(airplane, airplane.V.row(8295), 8 * h);
   ASSERT_EQ(region.size(), 125u);
   ASSERT_TRUE(region_crossings(airplane, region).empty());
   FairRegionOptions options = FairRegionOptions::harmonic_started();
@@ -566,11 +571,7 @@ TEST(FairRegionReal, AFlowThatCrossesTheMeshIsFlowedAgainStoppingShortOfTheConta
   EXPECT_TRUE(plain.crossing_fallback);
   EXPECT_NE(plain.note.find("crosses the mesh"), std::string::npos) << plain.note;
   // The retried flow moves the region from the input no farther than the ∆³ solution does.
-  double moved_flow = 0, moved_linear = 0;
-  for (int v : region) {
-    moved_flow += (retried.V.row(v) - airplane.V.row(v)).norm();
-    moved_linear += (linear.V.row(v) - airplane.V.row(v)).norm();
-  }
+  const double moved_flow = moved(airplane, retried, region), moved_linear = moved(airplane, linear, region);
   EXPECT_LT(moved_flow, 1.05 * moved_linear) << moved_flow / region.size() / h << " h against "
                                              << moved_linear / region.size() / h << " h";
 }
