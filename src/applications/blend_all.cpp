@@ -49,15 +49,14 @@ BlendAllReport blend_all_loops(Mesh& mesh, const BlendOptions& options, const Fl
   const auto start = detail::Clock::now();
   if (options.loop_a >= 0 || options.loop_b >= 0)
     throw InvalidArgument("blend_all_loops: the pairs are chosen one after the other; loop_a and loop_b must be -1");
-  const std::size_t found = loops_of(mesh).size();
-  if (found < 2)
-    throw InvalidMeshError("blend_all_loops: the mesh has " + std::to_string(found) +
-                           (found == 1 ? " boundary loop" : " boundary loops") + "; blending needs two");
+  std::vector<std::vector<int>> loops = loops_of(mesh);  // the mesh's as it stands
+  if (loops.size() < 2)
+    throw InvalidMeshError("blend_all_loops: the mesh has " + std::to_string(loops.size()) +
+                           (loops.size() == 1 ? " boundary loop" : " boundary loops") + "; blending needs two");
   BlendAllReport report;
   std::vector<int> set_aside;  // names of the loops of pairs that could not be joined
   std::vector<UnjoinedLoops> failures;  // loop_a and loop_b hold the loops' names until the end
-  for (;;) {
-    const std::vector<std::vector<int>> loops = loops_of(mesh);
+  for (;; loops = loops_of(mesh)) {
     const std::vector<int> open = open_loops(loops, set_aside);
     if (open.size() < 2) break;
     const LoopPair pair = closest_open_pair(mesh.V, loops, open);
@@ -82,15 +81,14 @@ BlendAllReport blend_all_loops(Mesh& mesh, const BlendOptions& options, const Fl
       set_pair_aside(e, true);
     }
   }
-  const std::vector<std::vector<int>> left = loops_of(mesh);
   for (UnjoinedLoops& pair : failures) {
-    pair.loop_a = index_of(left, pair.loop_a);
-    pair.loop_b = index_of(left, pair.loop_b);
-    pair.length_a = static_cast<int>(left[pair.loop_a].size());
-    pair.length_b = static_cast<int>(left[pair.loop_b].size());
+    pair.loop_a = index_of(loops, pair.loop_a);
+    pair.loop_b = index_of(loops, pair.loop_b);
+    pair.length_a = static_cast<int>(loops[pair.loop_a].size());
+    pair.length_b = static_cast<int>(loops[pair.loop_b].size());
   }
   report.unjoined = std::move(failures);
-  report.loops_left = static_cast<int>(left.size());
+  report.loops_left = static_cast<int>(loops.size());
   report.seconds = detail::seconds_since(start);
   return report;
 }
