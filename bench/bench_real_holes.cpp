@@ -57,6 +57,7 @@ struct Args {
   std::vector<std::string> functions;  // fairsurf's rows with these f instead of H (--functions)
   std::vector<std::string> other_functions;  // and weighing these on the held-out rings (--other-functions)
   std::string cut = "ball";  // fill: the holes' shape round each centre (ball, blob or slit)
+  std::vector<int> radii{4, 8};  // fill and fair: the balls' radii, in h
 };
 
 // What fairsurf's own rows run: the commands' defaults, or with `--keep-flow` their settled flows
@@ -172,6 +173,7 @@ FillReport run_fill(const Mesh& cut, const FillOptions& options, const Truth& tr
   Mesh mesh = cut;
   FillReport report = fill_holes(mesh, options);
   stats = measure(truth, mesh.V, rows_from(cut.num_vertices(), mesh.num_vertices()), h);
+  stats.removed_mean = bench::removed_mean(truth, mesh, h);
   return report;
 }
 
@@ -226,8 +228,16 @@ void fill_cgal([[maybe_unused]] const Mesh& cut, [[maybe_unused]] const Truth& t
   const bench::CgalResult result = bench::cgal_fill_holes(cut);
   row.has_cgal = !result.moved.empty();
   row.cgal_ok = result.ok && row.has_cgal;
+  if (result.ok) {
+    Mesh filled;
+    filled.V = result.V;
+    filled.F = result.F;
+    row.cgal.removed_mean = bench::removed_mean(truth, filled, h);
+  }
   if (row.has_cgal) {
+    const double removed = row.cgal.removed_mean;
     row.cgal = measure(truth, result.V, result.moved, h);
+    row.cgal.removed_mean = removed;
     const ContinuityMeasure border = measure_continuity(result.V, result.F, result.moved);
     if (border.border_vertices > 0) row.cgal_angle = border.max_normal_angle;
   }
@@ -277,13 +287,18 @@ Row fill_case(const Loaded& m, int centre, int radius_h, bool noisy, const std::
   row.size = border_sizes(cut.mesh);
   row.disks = removed_disks(m.mesh, cut.mesh);
   if (!row.disks) add_note(row, "not disk holes (excluded from the summary)");
-  const Truth truth(m, c);
+  Truth truth(m, c);
+  truth.removed.resize(static_cast<Eigen::Index>(cut.dropped.size()), 3);
+  for (std::size_t i = 0; i < cut.dropped.size(); ++i)
+    truth.removed.row(static_cast<Eigen::Index>(i)) = m.mesh.V.row(cut.dropped[i]);
   fill_ours(cut.mesh, ours.fill, truth, m.h, row);
   fill_baseline(cut.mesh, truth, m.h, row);
   if (cgal) fill_cgal(cut.mesh, truth, m.h, row);
   if (!cut.dropped.empty())
     row.uncut_angle = measure_continuity(m.mesh.V, m.mesh.F, cut.dropped).max_normal_angle;
-  if (row.cgal_ok && row.ours.count > 0 && row.status == "ok" && row.cgal.mean > 0) set_ratios(row);
+  // Each ratio where CGAL's fill succeeded and has that measure (a fill with no new vertex has only
+  // the removed vertices' distance).
+  if (row.status == "ok" && (row.cgal_ok || !std::isnan(row.cgal.removed_mean))) set_ratios(row);
   flag_fold(row);
   return row;
 }
@@ -306,7 +321,8 @@ bool all_g2(const std::string& continuity) {
   return true;
 }
 
-std::string fill_section(const std::vector<Loaded>& meshes, const Ours& ours, bool cgal, const std::string& shape) {
+std::string fill_section(const std::vector<Loaded>& meshes, const Ours& ours, bool cgal, const std::string& shape,
+                         const std::vector<int>& radii) {
   if (shape == "ball")
     std::printf("== fill: holes cut by a ball of radius r·h around vertex `centre`; distances in h ==\n");
   else
@@ -318,7 +334,7 @@ std::string fill_section(const std::vector<Loaded>& meshes, const Ours& ours, bo
   for (int noisy = 0; noisy < 2; ++noisy)
     for (const Loaded& m : meshes)
       for (int centre : m.centres)
-        for (int radius_h : {4, 8}) {
+        for (int radius_h : radii) {
           const Row row = fill_case(m, centre, radius_h, noisy, shape, ours, cgal);
           print_fill_row(row);
           add_csv(row);
@@ -496,7 +512,7 @@ void print_fair_row(const Row& r) {
   std::fflush(stdout);
 }
 
-std::string fair_section(const std::vector<Loaded>& meshes, const Ours& ours, bool cgal) {
+std::string fair_section(const std::vector<Loaded>& meshes, const Ours& ours, bool cgal, const std::vector<int>& radii) {
   std::printf("== fair: the vertices strictly inside the ball freed on the uncut mesh; distances in h ==\n");
   print_fair_header();
   Tally tally;
@@ -505,7 +521,7 @@ std::string fair_section(const std::vector<Loaded>& meshes, const Ours& ours, bo
   for (int noisy = 0; noisy < 2; ++noisy)
     for (const Loaded& m : meshes)
       for (int centre : m.centres)
-        for (int radius_h : {4, 8}) {
+        for (int radius_h : radii) {
           const Row row = fair_case(m, centre, radius_h, noisy, ours, cgal);
           print_fair_row(row);
           energies.add(row);
@@ -657,6 +673,11 @@ void add_options(CLI::App& app, Args& args) {
                  "Fill: cut a ball round each centre, or an irregular blob or slit of faces of about its size")
       ->check(CLI::IsMember({"ball", "blob", "slit"}))
       ->capture_default_str();
+  app.add_option("--radii", args.radii, "Fill and fair: the balls' radii in h, one or more (small holes: 1 2)")
+      ->type_name("R")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 1000).description(">= 1"))
+      ->capture_default_str();
   app.add_flag("--all-slabs", args.all_slabs, "Blend every plane that qualifies instead of the fixed cases");
   app.add_option("--csv", args.csv, "Write every row of every section to FILE")->type_name("FILE");
   app.add_flag("--keep-flow", args.keep_flow,
@@ -706,8 +727,8 @@ int main(int argc, char** argv) {
       std::printf("fairsurf's rows with --other-functions %s\n", f.c_str());
     std::vector<std::string> summaries;
     const auto wanted = [&](const char* section) { return args.section == section || args.section == "all"; };
-    if (wanted("fill")) summaries.push_back(fill_section(meshes, ours, args.cgal, args.cut));
-    if (wanted("fair")) summaries.push_back(fair_section(meshes, ours, args.cgal));
+    if (wanted("fill")) summaries.push_back(fill_section(meshes, ours, args.cgal, args.cut, args.radii));
+    if (wanted("fair")) summaries.push_back(fair_section(meshes, ours, args.cgal, args.radii));
     if (wanted("blend")) summaries.push_back(blend_section(meshes, ours.blend, args.quick, args.all_slabs));
     std::string overall;
     for (const auto& s : summaries) overall += (overall.empty() ? "" : " | ") + s;

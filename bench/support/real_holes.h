@@ -83,6 +83,9 @@ struct DistanceStats {
   double mean = 0, max = 0;  ///< in the units the caller divides by (h)
   /// Mean distance to a smooth stand-in of the surface (smooth_reference.h), when measured.
   double smooth_mean = std::numeric_limits<double>::quiet_NaN();
+  /// Fill: mean distance of the uncut mesh's vertices that the cut removed to the filled surface,
+  /// in the same unit; it measures a fill with no new vertex too (a flat patch over a one-ring hole).
+  double removed_mean = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Distances of rows `rows` of V to the surface, divided by `unit`.

@@ -130,6 +130,14 @@ DistanceStats measure(const Truth& truth, const Vertices& V, const std::vector<i
   return stats;
 }
 
+double removed_mean(const Truth& truth, const Mesh& filled, double h) {
+  if (truth.removed.rows() == 0) return std::numeric_limits<double>::quiet_NaN();
+  const SurfaceDistance distance(filled, truth.centre);
+  double sum = 0;
+  for (int i = 0; i < truth.removed.rows(); ++i) sum += distance(truth.removed.row(i).transpose());
+  return sum / static_cast<double>(truth.removed.rows()) / h;
+}
+
 namespace {
 
 // The vertices of m sorted by their coordinate `axis`.

@@ -57,11 +57,15 @@ ClosedMesh read_closed_mesh(const std::filesystem::path& path);
 struct Truth {
   SurfaceDistance faceted;
   const GridSurfaceDistance& smooth;
-  Truth(const Loaded& m, const Eigen::Vector3d& centre) : faceted(m.mesh, centre), smooth(m.smooth) {}
+  Eigen::Vector3d centre;
+  Vertices removed;  ///< fill: the uncut mesh's vertices that the cut removed (rows)
+  Truth(const Loaded& m, const Eigen::Vector3d& centre) : faceted(m.mesh, centre), smooth(m.smooth), centre(centre) {}
 };
 
 /// Distances of rows `rows` of V to both surfaces of `truth`, in h.
 DistanceStats measure(const Truth& truth, const Vertices& V, const std::vector<int>& rows, double h);
+/// Mean distance of truth.removed to the surface of `filled`, in h; NaN where the cut removed no vertex.
+double removed_mean(const Truth& truth, const Mesh& filled, double h);
 
 /// A blend case: the plane through `vertex` normal to coordinate axis `axis` (0 x, 1 y, 2 z).
 struct Slab {

@@ -14,7 +14,8 @@ std::string csv_header() {
   return "section,mesh,centre,radius_h,noise_h,size,status,continuity,steps,seconds,mean_h,max_h,"
          "baseline_mean_h,baseline_max_h,cgal_mean_h,cgal_max_h,ratio,angle_deg,uncut_angle_deg,fold,"
          "cgal_angle_deg,cgal_fold,smooth_mean_h,baseline_smooth_mean_h,cgal_smooth_mean_h,smooth_ratio,disks,new_vertices,cgal_new_vertices,choice,held_out,"
-         "truth_energy,energy,baseline_energy,cgal_energy,flow_mean_h,flow_energy,baseline_angle_deg,note\n";
+         "truth_energy,energy,baseline_energy,cgal_energy,flow_mean_h,flow_energy,baseline_angle_deg,"
+         "removed_mean_h,baseline_removed_mean_h,cgal_removed_mean_h,removed_ratio,note\n";
 }
 
 std::string number(double x, const char* format) {
@@ -34,8 +35,11 @@ void flag_fold(Row& row) {
 }
 
 void set_ratios(Row& row) {
-  row.ratio = row.ours.mean / row.cgal.mean;
-  row.smooth_ratio = row.ours.smooth_mean / row.cgal.smooth_mean;
+  if (row.ours.count > 0 && row.cgal.count > 0 && row.cgal.mean > 0) {
+    row.ratio = row.ours.mean / row.cgal.mean;
+    row.smooth_ratio = row.ours.smooth_mean / row.cgal.smooth_mean;
+  }
+  if (row.cgal.removed_mean > 0) row.removed_ratio = row.ours.removed_mean / row.cgal.removed_mean;
 }
 
 void add_note(Row& row, const std::string& note) { row.note += (row.note.empty() ? "" : "; ") + note; }
@@ -56,7 +60,8 @@ std::string csv_line(const Row& r) {
               "," + csv_escape(r.choice) + "," + csv_escape(r.held_out) + "," + number(r.truth_energy) + "," +
               number(r.energy) + "," + number(r.baseline_energy) + "," + number(r.cgal_energy) + "," +
               stat(r.has_flow, r.flow.mean) + "," + number(r.flow_energy) + "," + number(r.baseline_angle * kDegrees) + "," +
-              csv_escape(r.note) + "\n";
+              number(r.ours.removed_mean) + "," + stat(r.has_baseline, r.baseline.removed_mean) + "," +
+              number(r.cgal.removed_mean) + "," + number(r.removed_ratio) + "," + csv_escape(r.note) + "\n";
 }
 
 std::string cgal_angle_text(const Row& r) {

@@ -24,7 +24,7 @@ struct Row {
   DistanceStats ours, baseline, cgal;
   bool has_baseline = false, has_cgal = false, cgal_ok = false, fold = false, cgal_fold = false;
   bool disks = true;  // fill: the cut removed disks only (a ball across a thin tube removes an annulus)
-  double ratio = NAN, smooth_ratio = NAN, angle = NAN, uncut_angle = NAN, cgal_angle = NAN;
+  double ratio = NAN, smooth_ratio = NAN, removed_ratio = NAN, angle = NAN, uncut_angle = NAN, cgal_angle = NAN;
   double baseline_angle = NAN;  // the ∆³ fill's or fairing's border angle, as `angle`
   // fair: region_energy of the uncut (clean) mesh, of fairsurf's result, the ∆³ baseline's and CGAL's,
   // and the sixth-order flow's steady state delivered whatever the held-out rings and fold check
@@ -69,16 +69,22 @@ struct Comparison {
 // Counts over the rows of one section and noise level.
 struct Tally {
   int rows = 0, failed = 0, g2 = 0, folds = 0, cgal_folds = 0, steady = 0, excluded = 0;
-  Comparison faceted, smooth;
-  // The ratios to CGAL and the comparison with the ∆³ baseline on the same input, by both measures.
+  Comparison faceted, smooth, removed;
+  // The ratios to CGAL and the comparison with the ∆³ baseline on the same input, by each measure.
   void compare(const Row& row) {
     faceted.ratio(row.ratio);
     smooth.ratio(row.smooth_ratio);
+    removed.ratio(row.removed_ratio);
+    if (row.has_baseline && !std::isnan(row.ours.removed_mean) && !std::isnan(row.baseline.removed_mean))
+      removed.baseline(row.ours.removed_mean, row.baseline.removed_mean);
     if (row.ours.count == 0 || !row.has_baseline) return;
     faceted.baseline(row.ours.mean, row.baseline.mean);
     smooth.baseline(row.ours.smooth_mean, row.baseline.smooth_mean);
   }
-  std::string comparison_text() const { return faceted.text() + "; to the smooth surface: " + smooth.text(); }
+  std::string comparison_text() const {
+    return faceted.text() + "; to the smooth surface: " + smooth.text() +
+           (removed.baseline_compared > 0 ? "; the removed vertices to the fill: " + removed.text() : "");
+  }
 };
 
 /// The CSV's header line and one row's line (all sections share the columns).
@@ -94,7 +100,7 @@ std::string number(double x, const char* format = "%.4g");
 bool folds(double angle, double uncut_angle);
 /// Sets row.fold and row.cgal_fold by that rule.
 void flag_fold(Row& row);
-/// fairsurf's mean distance over CGAL's, by both measures.
+/// fairsurf's mean distance over CGAL's, by each measure both have.
 void set_ratios(Row& row);
 void add_note(Row& row, const std::string& note);
 /// Appends one hole's (or region's) held-out decision to row.choice and row.held_out (its four
