@@ -64,11 +64,13 @@ class Refiner {
   }
 
   void refine(RefinedPatch& report) {
-    for (report.rounds = 0; report.rounds < options_.max_rounds; ++report.rounds) {
-      const int splits = split_round();
-      if (splits == 0) break;
-      report.splits += splits;
+    split_rounds(report);
+    // Counted as a round: max_rounds = 0 leaves the triangulation as it is.
+    if (const int added = report.rounds < options_.max_rounds ? add_vertices_where_they_fit() : 0; added > 0) {
+      report.splits += added;
+      ++report.rounds;
       flip_until_delaunay();
+      split_rounds(report);
     }
     for (int sweep = 0; sweep < options_.relaxation_sweeps; ++sweep) {
       relax_tangentially();
@@ -184,6 +186,100 @@ class Refiner {
           sum += mesh_.calc_edge_length(heh), ++count;
       scale_[vh.idx()] = sum / std::max(1, count);
     }
+  }
+
+  void split_rounds(RefinedPatch& report) {
+    for (; report.rounds < options_.max_rounds; ++report.rounds) {
+      const int splits = split_round();
+      if (splits == 0) break;
+      report.splits += splits;
+      flip_until_delaunay();
+    }
+  }
+
+  struct BareDisk {
+    std::vector<std::pair<int, int>> border;  // (from, to) halfedges in face order
+    PatchMesh::EdgeHandle longest;            // its longest inner edge
+    double area = 0.0;
+  };
+
+  // A hole that Liepa's rounds left without an interior vertex where the surrounding mesh would have
+  // one (a one-ring hole: the vertex in its middle is missing) gets one at the midpoint of its longest
+  // inner edge. Liepa's split test misses such a vertex where the triangulation is a fan of long thin
+  // triangles, whose centroids lie near a corner, and a patch without an interior vertex stays flat:
+  // no fairing can bend it. A disk of n border and i interior vertices has n − 2 + 2i triangles; the
+  // disk's area A over the mean area ā of the mesh faces across its border counts the triangles the
+  // mesh would put there, and the vertex goes in when that count is nearer n than n − 2:
+  // A ≥ (n − 1) ā. A missing face or two stays flat, and so does a thin slit. Each disk of the patch
+  // (holes filled jointly) is weighed on its own; the split rounds that follow may add more.
+  int add_vertices_where_they_fit() {
+    int added = 0;
+    for (const BareDisk& disk : disks_without_interior_vertices()) {
+      if (!vertex_fits(disk)) continue;
+      const auto h = mesh_.halfedge_handle(disk.longest, 0);
+      const int a = mesh_.from_vertex_handle(h).idx(), b = mesh_.to_vertex_handle(h).idx();
+      const auto middle =
+          mesh_.add_vertex((mesh_.point(PatchMesh::VertexHandle(a)) + mesh_.point(PatchMesh::VertexHandle(b))) / 2);
+      scale_.push_back((scale_[a] + scale_[b]) / 2);
+      mesh_.split(disk.longest, middle);
+      ++added;
+    }
+    return added;
+  }
+
+  // Every connected piece of the patch that is a disk with no interior vertex: n border edges,
+  // n vertices, n − 2 triangles.
+  std::vector<BareDisk> disks_without_interior_vertices() const {
+    std::vector<char> seen(mesh_.n_faces(), 0);
+    std::vector<BareDisk> disks;
+    for (const auto start : mesh_.faces()) {
+      if (seen[start.idx()]) continue;
+      BareDisk disk;
+      std::unordered_set<int> vertices;
+      int faces = 0;
+      bool interior_vertex = false;
+      double longest = 0.0;
+      std::vector<PatchMesh::FaceHandle> stack{start};
+      seen[start.idx()] = 1;
+      while (!stack.empty()) {
+        const auto fh = stack.back();
+        stack.pop_back();
+        ++faces;
+        auto fv = mesh_.cfv_iter(fh);
+        const Vec p0 = mesh_.point(*fv), p1 = mesh_.point(*++fv), p2 = mesh_.point(*++fv);
+        disk.area += OpenMesh::cross(p1 - p0, p2 - p0).norm() / 2;
+        for (const auto heh : mesh_.fh_range(fh)) {
+          const auto from = mesh_.from_vertex_handle(heh);
+          vertices.insert(from.idx());
+          interior_vertex = interior_vertex || !mesh_.is_boundary(from);
+          const auto across = mesh_.opposite_halfedge_handle(heh);
+          if (mesh_.is_boundary(across)) {
+            disk.border.emplace_back(from.idx(), mesh_.to_vertex_handle(heh).idx());
+            continue;
+          }
+          if (const double length = mesh_.calc_edge_length(heh); length > longest)
+            longest = length, disk.longest = mesh_.edge_handle(heh);
+          const auto nb = mesh_.face_handle(across);
+          if (!seen[nb.idx()]) seen[nb.idx()] = 1, stack.push_back(nb);
+        }
+      }
+      const int n = static_cast<int>(disk.border.size());
+      if (!interior_vertex && n >= 4 && static_cast<int>(vertices.size()) == n && faces == n - 2)
+        disks.push_back(std::move(disk));
+    }
+    return disks;
+  }
+
+  // Whether the disk holds the area of the triangles a vertex in it would make.
+  bool vertex_fits(const BareDisk& disk) const {
+    const int n = static_cast<int>(disk.border.size());
+    double mesh_area = 0.0;
+    for (const auto& [a, b] : disk.border) {
+      const auto across = outside_normals_.find(directed_key(b, a));
+      if (across == outside_normals_.end()) return false;
+      mesh_area += across->second.norm() / 2 / n;
+    }
+    return disk.area >= (n - 1) * mesh_area;
   }
 
   int split_round() {

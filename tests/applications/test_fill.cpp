@@ -1172,6 +1172,36 @@ TEST(FaceIntersection, FindsExactlyTheCrossingPairsOfTwoSheets) {
 
 // A loop small enough that its patch has no interior vertex is closed by its triangulation alone:
 // nothing is faired, so it is labelled C0 (linear), not the continuity that was asked for.
+// The faces of one vertex removed: the fill puts a vertex back (patch_refinement.h) and fairs it
+// onto the sphere, where the loop's triangulation alone would lie flat, a sagitta below it.
+TEST(FillOneRing, AOneRingHoleIsFilledWithAVertexOnTheSurfaceNotFlat) {
+  const Mesh sphere = test::jittered_sphere(3, 1.0, 0.02);
+  const int centre = 37;
+  Mesh holed = sphere;
+  std::vector<int> kept;
+  for (int f = 0; f < sphere.num_faces(); ++f)
+    if (!(sphere.F.row(f).array() == centre).any()) kept.push_back(f);
+  holed.F = sphere.F(kept, Eigen::all);
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, FillOptions{});
+  ASSERT_EQ(r.filled, 1) << r.holes.front().reason;
+  const HoleReport& hole = r.holes.front();
+  ASSERT_EQ(hole.vertices_added, 1);
+  EXPECT_NE(delivered_label(hole.supported, hole.linear), "C0 (linear)");
+  // How far inside the sphere the flat triangulation lies: the depth of its ring's centroid.
+  std::set<int> ring;
+  for (int f = 0; f < sphere.num_faces(); ++f)
+    if ((sphere.F.row(f).array() == centre).any())
+      for (int k = 0; k < 3; ++k)
+        if (sphere.F(f, k) != centre) ring.insert(sphere.F(f, k));
+  Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
+  for (const int v : ring) centroid += sphere.V.row(v) / static_cast<double>(ring.size());
+  const double sagitta = 1.0 - centroid.norm();
+  ASSERT_GT(sagitta, 0.0);
+  const double off_sphere = std::abs(filled.V.row(filled.num_vertices() - 1).norm() - 1.0);
+  EXPECT_LT(off_sphere, 0.1 * sagitta) << "sagitta " << sagitta;
+}
+
 TEST(FillLabels, APatchWithoutInteriorVertexIsLabelledC0Linear) {
   const Mesh sphere = test::icosphere(2);
   Mesh holed = sphere;

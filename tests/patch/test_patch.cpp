@@ -694,6 +694,45 @@ TEST(PatchRefinement, TargetLengthSetsTheDensityAndBorderNeverMoves) {
   }
 }
 
+// A one-ring hole (the faces of one vertex removed) is triangulated without an interior vertex;
+// Liepa's split test can miss the vertex that is missing, leaving a flat patch no fairing can bend.
+// Refinement puts one back where the hole holds the area of the triangles round it; two missing
+// faces (a 4-edge hole of two triangles' area) stay as they are.
+TEST(PatchRefinement, AOneRingHoleGetsItsVertexBackAndTwoMissingFacesStayFlat) {
+  const Mesh sphere = test::jittered_sphere(3, 1.0, 0.02);  // the jitter makes Liepa's fans thin
+  for (int centre = 0; centre < sphere.num_vertices(); centre += 37) {
+    const Mesh holed = without_faces(sphere, [&](int f) { return (sphere.F.row(f).array() == centre).any(); });
+    const Topology topo = build_topology(holed.F, holed.num_vertices());
+    const auto loops = boundary_loops(holed.F, topo);
+    ASSERT_EQ(loops.size(), 1u);
+    const HoleTriangulation t = triangulate_hole(holed.V, holed.F, topo, loops.front());
+    ASSERT_EQ(t.faces.rows(), static_cast<int>(loops.front().size()) - 2);
+    const RefinedPatch r = refine_patch(holed.V, holed.F, t.faces);
+    Mesh out;
+    out.V = r.V;
+    out.F = r.F;
+    expect_closed_manifold(out, 0);
+    EXPECT_EQ(r.free_vertices.size(), 1u) << "centre " << centre;
+  }
+
+  // Two faces that share an edge: a 4-edge hole.
+  const int first = 0;
+  int second = -1;
+  for (int f = 1; f < sphere.num_faces() && second < 0; ++f) {
+    int shared = 0;
+    for (int k = 0; k < 3; ++k) shared += (sphere.F.row(first).array() == sphere.F(f, k)).any();
+    if (shared == 2) second = f;
+  }
+  ASSERT_GE(second, 0);
+  const Mesh holed = without_faces(sphere, [&](int f) { return f == first || f == second; });
+  const Topology topo = build_topology(holed.F, holed.num_vertices());
+  const auto loops = boundary_loops(holed.F, topo);
+  ASSERT_EQ(loops.size(), 1u);
+  ASSERT_EQ(loops.front().size(), 4u);
+  const HoleTriangulation t = triangulate_hole(holed.V, holed.F, topo, loops.front());
+  EXPECT_TRUE(refine_patch(holed.V, holed.F, t.faces).free_vertices.empty());
+}
+
 TEST(PatchRefinement, RejectsNonManifoldPatches) {
   const Mesh m = irregular_annulus(6, 1, 0.2);
   Faces twice(2, 3);

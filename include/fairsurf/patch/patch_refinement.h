@@ -15,6 +15,10 @@
 //      edge of the patch or of the mesh around it, or turn a border triangle against the mesh face
 //      across the border more than π/2 and more than before (2π/3 when the flip removes a sliver,
 //      a triangle with an angle above 160°), until no edge flips.
+// A disk of the patch that the rounds leave without an interior vertex gets one, at the midpoint of
+// its longest inner edge, where its area A is at least (n − 1) times the mean area of the n mesh
+// faces across its border (the count of triangles the mesh would put there is nearer n, one vertex,
+// than n − 2, none: a one-ring hole); then the rounds run again (docs/patch.md §2).
 // Finally interior vertices are relaxed tangentially: moved towards the centroid of their
 // neighbours within the plane of their vertex normal, a few times, each followed by a flip pass.
 // α = √2 gives edges whose mean is within a few percent of σ (measured in tests/patch/test_patch.cpp).
@@ -52,7 +56,7 @@ struct RefinedPatch {
   /// Ascending indices of the interior patch vertices (the ones a flow may move): the input's
   /// interior patch vertices, then every vertex added by refinement (indices >= #V).
   std::vector<int> free_vertices;
-  int splits = 0;  ///< triangles split
+  int splits = 0;  ///< triangles split (and inner edges split to put back a missing vertex)
   int flips = 0;   ///< edges flipped
   int rounds = 0;  ///< split rounds run
 };
