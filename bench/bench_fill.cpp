@@ -10,7 +10,9 @@
 // continuity fell back. Arguments: "large" adds the ~100k case, "harmonic" runs the baseline only.
 // "small-holes" instead cuts ten balls of four mean edge lengths out of icospheres of 10k to 655k
 // vertices and fills them: the time a small hole costs as the mesh around it grows (it should not
-// grow with it).
+// grow with it). "one-ring-holes" removes the faces of 100, 400 and 1600 vertices spread over an
+// icosphere of 41k vertices, the holes a scan has most: the time a hole costs as they crowd (fill
+// joins holes whose rings overlap into groups; a hole should not cost in proportion to its group).
 #include <fairsurf/applications/fill.h>
 #include <fairsurf/mesh/errors.h>
 
@@ -138,6 +140,48 @@ int run_small_holes(int subdivisions) {
   return report.filled == holes ? 0 : 1;
 }
 
+// The icosphere of `subdivisions` without the faces of the `count` vertices nearest to points spread
+// over it (a Fibonacci lattice): one-ring holes.
+Mesh sphere_with_one_ring_holes(int subdivisions, int count) {
+  const Mesh sphere = bench::icosphere(subdivisions);
+  std::vector<char> removed(sphere.num_vertices(), 0);
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < count; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / count, r = std::sqrt(1.0 - z * z);
+    const Eigen::RowVector3d p(r * std::cos(golden * i), r * std::sin(golden * i), z);
+    Eigen::Index nearest = 0;
+    (sphere.V.rowwise() - p).rowwise().squaredNorm().minCoeff(&nearest);
+    removed[nearest] = 1;
+  }
+  Mesh out;
+  out.V = sphere.V;
+  std::vector<int> kept;
+  for (int f = 0; f < sphere.num_faces(); ++f)
+    if (!removed[sphere.F(f, 0)] && !removed[sphere.F(f, 1)] && !removed[sphere.F(f, 2)]) kept.push_back(f);
+  out.F = sphere.F(kept, Eigen::all);
+  return out;
+}
+
+// `count` one-ring holes on an icosphere of 6 subdivisions: seconds a hole as they crowd.
+int run_one_ring_holes(int count) {
+  Mesh mesh = sphere_with_one_ring_holes(6, count);
+  FillReport report;
+  try {
+    report = fill_holes(mesh, FillOptions{});
+  } catch (const Error& e) {
+    std::printf("%d one-ring holes: failed: %s\n", count, e.what());
+    return 1;
+  }
+  std::size_t largest_group = 1;
+  for (const HoleReport& h : report.holes) largest_group = std::max(largest_group, h.filled_with.size() + 1);
+  const int holes = static_cast<int>(report.holes.size());
+  std::printf("%5d one-ring holes (%d filled, the largest group filled jointly %zu): fill_holes %.2f s, %.4f s a "
+              "hole; peak %.0f MB\n",
+              holes, report.filled, largest_group, report.seconds, holes > 0 ? report.seconds / holes : 0.0,
+              static_cast<double>(bench::peak_bytes()) / 1e6);
+  return report.filled == holes ? 0 : 1;
+}
+
 template <class Case>
 void in_child(Case run) {
   std::fflush(stdout);
@@ -154,14 +198,19 @@ void in_child(Case run) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool large = false, harmonic_only = false, small_holes = false;
+  bool large = false, harmonic_only = false, small_holes = false, one_ring_holes = false;
   for (int i = 1; i < argc; ++i) {
     large = large || std::strcmp(argv[i], "large") == 0;
     harmonic_only = harmonic_only || std::strcmp(argv[i], "harmonic") == 0;
     small_holes = small_holes || std::strcmp(argv[i], "small-holes") == 0;
+    one_ring_holes = one_ring_holes || std::strcmp(argv[i], "one-ring-holes") == 0;
   }
   if (small_holes) {
     for (int subdivisions : {5, 6, 7, 8}) in_child([=] { return run_small_holes(subdivisions); });
+    return 0;
+  }
+  if (one_ring_holes) {
+    for (int count : {100, 400, 1600}) in_child([=] { return run_one_ring_holes(count); });
     return 0;
   }
   struct Case {

@@ -13,18 +13,51 @@
 namespace fairsurf {
 namespace {
 
-// Fitted normals and mean curvatures at `vertices` on the faces of one side only. The side keeps
-// every vertex (`all`: each its own parent index), so its connectivity derives from the mesh's.
-SurfaceGeometry one_sided_geometry(const Vertices& V, const Faces& F, const Topology& mesh_topo,
-                                   const std::vector<int>& all, const std::vector<char>& side,
-                                   const std::vector<int>& vertices, std::vector<FitStatus>& status) {
-  Faces part(std::count(side.begin(), side.end(), 1), 3);
-  for (Eigen::Index f = 0, row = 0; f < F.rows(); ++f)
-    if (side[f]) part.row(row++) = F.row(f);
-  const Topology topo = derive_topology(mesh_topo, part, all);
-  const QuadraticFits fits = fit_quadratics(V, part, topo, {}, vertices);
+// The part of the mesh the fits at the border vertices see. A fit reaches its vertex's 2-ring and no
+// farther (quadratic_fit.h), so the faces among the vertices within 2 rings of the border hold every
+// neighbourhood they take: the measure costs in proportion to the border, not to the mesh (each hole
+// of a joint group of hundreds was measured on the whole group's neighbourhood).
+struct NearBorder {
+  std::vector<int> vertices;  ///< the mesh's vertices within 2 rings of the border, ascending
+  Vertices V;                 ///< their positions
+  Faces F;                    ///< the faces among them, in the mesh's order, over local indices
+  std::vector<char> inside;   ///< per face of F: it touches a free vertex
+  std::vector<int> border;    ///< the border vertices, local
+};
+
+NearBorder near_border(const Vertices& V, const Faces& F, const Topology& topo, const std::vector<int>& border,
+                       const std::vector<char>& inside) {
+  NearBorder near;
+  near.vertices = k_ring(topo, border, 2);
+  std::vector<int> local(V.rows(), -1);
+  near.V.resize(static_cast<Eigen::Index>(near.vertices.size()), 3);
+  for (std::size_t i = 0; i < near.vertices.size(); ++i) {
+    local[near.vertices[i]] = static_cast<int>(i);
+    near.V.row(static_cast<Eigen::Index>(i)) = V.row(near.vertices[i]);
+  }
+  std::vector<Eigen::Index> faces;
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    if (local[F(f, 0)] >= 0 && local[F(f, 1)] >= 0 && local[F(f, 2)] >= 0) faces.push_back(f);
+  near.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    for (int k = 0; k < 3; ++k) near.F(static_cast<Eigen::Index>(i), k) = local[F(faces[i], k)];
+    near.inside.push_back(inside[faces[i]]);
+  }
+  for (int v : border) near.border.push_back(local[v]);
+  return near;
+}
+
+// Fitted normals and mean curvatures at the border vertices on the faces of one side only (those
+// touching a free vertex, or the others), whose connectivity derives from the mesh's.
+SurfaceGeometry one_sided_geometry(const NearBorder& near, const Topology& mesh_topo, bool inside,
+                                   std::vector<FitStatus>& status) {
+  Faces part(std::count(near.inside.begin(), near.inside.end(), static_cast<char>(inside)), 3);
+  for (Eigen::Index f = 0, row = 0; f < near.F.rows(); ++f)
+    if (near.inside[f] == static_cast<char>(inside)) part.row(row++) = near.F.row(f);
+  const Topology topo = derive_topology(mesh_topo, part, near.vertices);
+  const QuadraticFits fits = fit_quadratics(near.V, part, topo, {}, near.border);
   status = fits.status;
-  return compute_geometry(fits, V);
+  return compute_geometry(fits, near.V);
 }
 
 bool usable(FitStatus s) { return s == FitStatus::kOk || s == FitStatus::kIllConditioned; }
@@ -40,12 +73,12 @@ ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F, const To
                                      std::span<const int> free_vertices, std::span<const int> at) {
   if (topo.num_vertices != V.rows() || topo.num_faces != F.rows())
     throw InvalidArgument("measure_continuity: the topology was built for another mesh");
-  std::vector<char> is_free(V.rows(), 0), inside(F.rows(), 0), outside(F.rows(), 0);
+  std::vector<char> is_free(V.rows(), 0), inside(F.rows(), 0);
   for (int v : free_vertices) is_free[v] = 1;
   std::vector<char> border(V.rows(), 0);
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
     const bool touches = is_free[F(f, 0)] || is_free[F(f, 1)] || is_free[F(f, 2)];
-    (touches ? inside : outside)[f] = 1;
+    inside[f] = touches;
     if (touches)
       for (int k = 0; k < 3; ++k)
         if (!is_free[F(f, k)]) border[F(f, k)] = 1;
@@ -63,13 +96,12 @@ ContinuityMeasure measure_continuity(const Vertices& V, const Faces& F, const To
   for (Eigen::Index v = 0; v < V.rows(); ++v)
     if (border[v]) border_vertices.push_back(static_cast<int>(v));
 
-  std::vector<int> all(V.rows());
-  std::iota(all.begin(), all.end(), 0);
+  const NearBorder near = near_border(V, F, topo, border_vertices, inside);
   std::vector<FitStatus> in_status, out_status;
-  const SurfaceGeometry in = one_sided_geometry(V, F, topo, all, inside, border_vertices, in_status);
-  const SurfaceGeometry out = one_sided_geometry(V, F, topo, all, outside, border_vertices, out_status);
+  const SurfaceGeometry in = one_sided_geometry(near, topo, true, in_status);
+  const SurfaceGeometry out = one_sided_geometry(near, topo, false, out_status);
   ContinuityMeasure m;
-  for (int v : border_vertices) {
+  for (int v : near.border) {
     if (!usable(in_status[v]) || !usable(out_status[v])) continue;
     const double cosine = std::clamp(in.normal.row(v).dot(out.normal.row(v)), -1.0, 1.0);
     const double angle = std::acos(cosine), jump = std::abs(in.H[v] - out.H[v]);
