@@ -3,14 +3,16 @@
 // checked. The protocol and figures are in docs/fill.md, "Stress benchmark".
 //
 // fill:  1–3 balls of 4–17 h cut out (they may overlap, sever a thin part or bite into its side);
-//        with --cut irregular, a blob or a slit of faces instead (bench::cut_irregular).
+//        with --cut irregular, a blob or a slit of faces instead (bench::cut_irregular); with
+//        --cut small-balls, 1–200 balls of 1–2.5 h (a scan's missing vertices, crowding into
+//        holes that touch and groups filled jointly).
 // fair:  the same balls' vertices freed on the uncut mesh, clean and with 0.1 h of normal noise
 //        (with --cut irregular, the vertices inside the blob or slit).
 // blend: a slab 4 h wide at a random orientation through a random vertex, where it leaves exactly
 //        two loops of at most 200 edges.
 //
 // Usage: bench_stress [--section fill|fair|blend|all] [--mesh NAME | --mesh-file PATH...]
-//                     [--trials N] [--seed S] [--cut balls|irregular] [--write DIR]
+//                     [--trials N] [--seed S] [--cut balls|irregular|small-balls] [--write DIR]
 #include <fairsurf/applications/blend.h>
 #include <fairsurf/applications/fair_region.h>
 #include <fairsurf/applications/fill.h>
@@ -56,7 +58,7 @@ struct Args {
   std::vector<std::string> mesh_files;  // closed meshes to use instead of the bundled ones
   int trials = 40;                      // per mesh and section
   std::uint64_t seed = 1;               // of the first trial; trial t draws from seed + t
-  std::string cut = "balls";            // fill and fair: balls, or irregular blobs and slits
+  std::string cut = "balls";            // fill and fair: balls, irregular blobs and slits, or small balls
   std::string write_dir;                // where each trial's input and output meshes go
 };
 
@@ -71,8 +73,9 @@ void add_options(CLI::App& app, Args& args) {
       ->type_name("S")
       ->capture_default_str();
   app.add_option("--cut", args.cut,
-                 "Fill and fair: balls, or irregular blobs and slits of faces (their inner vertices freed for fair)")
-      ->check(CLI::IsMember({"balls", "irregular"}))
+                 "Fill and fair: balls, irregular blobs and slits of faces, or 1-200 small balls of 1-2.5 h (their "
+                 "inner vertices freed for fair)")
+      ->check(CLI::IsMember({"balls", "irregular", "small-balls"}))
       ->capture_default_str();
   app.add_option("--write", args.write_dir,
                  "Write each trial's input and output into DIR, to look at with fairsurf render or run again with "
@@ -83,24 +86,36 @@ void add_options(CLI::App& app, Args& args) {
       ->check(CLI::ExistingDirectory);
 }
 
-// 1–3 balls, each centred at a vertex of `mesh` as cut so far (`cut`: cut each ball out, else keep
-// the mesh whole), of radius 4–17 h, all drawn from std::mt19937_64(seed) (whose output the
-// standard fixes). Returns the mesh as cut with each of its vertices' index in the uncut mesh, and
-// the vertices inside the balls (of the uncut mesh) or, when cut, those the cut dropped.
+// How many balls a trial cuts and how large: 1 to `most` balls, of radius smallest_h + k · step_h
+// (k < steps) mean edges.
+struct BallSizes {
+  int most;
+  double smallest_h, step_h;
+  int steps;
+};
+constexpr BallSizes kBalls{3, 4.0, 1.0, 14};        // 1–3 balls of 4–17 h
+constexpr BallSizes kSmallBalls{200, 1.0, 0.5, 4};  // 1–200 balls of 1–2.5 h
+
+// Balls as `sizes` says, each centred at a vertex of `mesh` as cut so far (`cut`: cut each ball
+// out, else keep the mesh whole), all drawn from std::mt19937_64(seed) (whose output the standard
+// fixes). Returns the mesh as cut with each of its vertices' index in the uncut mesh, and the
+// vertices inside the balls (of the uncut mesh) or, when cut, those the cut dropped.
 struct Balls {
   Mesh cut;
   std::vector<int> kept;  ///< cut: for each vertex of `cut`, its index in the uncut mesh
   std::vector<int> inside;
 };
 
-Balls draw_balls(const ClosedMesh& m, std::uint64_t seed, bool cut) {
+Balls draw_balls(const ClosedMesh& m, std::uint64_t seed, bool cut, const BallSizes& sizes) {
   std::mt19937_64 draw(seed);
   Balls b{m.mesh, bench::rows_from(0, m.mesh.num_vertices()), {}};
   std::set<int> inside;
-  const int balls = 1 + static_cast<int>(draw() % 3);
+  const int balls = 1 + static_cast<int>(draw() % static_cast<std::uint64_t>(sizes.most));
   for (int k = 0; k < balls && b.cut.num_faces() > 0; ++k) {
     const int centre = static_cast<int>(draw() % static_cast<std::uint64_t>(b.cut.num_vertices()));
-    const double radius = static_cast<double>(4 + draw() % 14) * m.h;
+    const double radius =
+        (sizes.smallest_h + sizes.step_h * static_cast<double>(draw() % static_cast<std::uint64_t>(sizes.steps))) *
+        m.h;
     const Eigen::Vector3d c = b.cut.V.row(centre).transpose();
     if (cut) {
       bench::CutMesh next = bench::cut_ball(b.cut, c, radius);
@@ -181,17 +196,29 @@ void write_trial(const std::string& dir, const std::string& trial, const char* w
 
 std::string seed_name(const ClosedMesh& m, std::uint64_t seed) { return m.name + "_seed" + std::to_string(seed); }
 
-void fill_trial(const ClosedMesh& m, std::uint64_t seed, bool irregular, const std::string& write_dir,
+// The trial's cut as --cut names it (`shape`), cut out (`cut`) or only marked; `label` says which.
+Balls draw_cut(const ClosedMesh& m, std::uint64_t seed, const std::string& shape, bool cut, std::string& label) {
+  if (shape == "irregular") {
+    bool slit = false;
+    Balls b = draw_irregular(m, seed, slit);
+    label = slit ? "slit, " : "blob, ";
+    return b;
+  }
+  label = shape == "small-balls" ? "small balls, " : "";
+  return draw_balls(m, seed, cut, shape == "small-balls" ? kSmallBalls : kBalls);
+}
+
+void fill_trial(const ClosedMesh& m, std::uint64_t seed, const std::string& shape, const std::string& write_dir,
                 FillTally& tally) {
-  bool slit = false;
-  const Balls balls = irregular ? draw_irregular(m, seed, slit) : draw_balls(m, seed, true);
+  std::string label;
+  const Balls balls = draw_cut(m, seed, shape, true, label);
   const Mesh& cut = balls.cut;
   std::printf("fill  %-26s seed %3llu: ", m.name.c_str(), static_cast<unsigned long long>(seed));
   if (cut.num_faces() == 0) {  // the balls took the whole mesh: nothing to fill (fill_holes refuses it)
     std::printf("the cut left no face, not run\n");
     return;
   }
-  std::printf("%sloops %s", irregular ? (slit ? "slit, " : "blob, ") : "", bench::border_sizes(cut).c_str());
+  std::printf("%sloops %s", label.c_str(), bench::border_sizes(cut).c_str());
   ++tally.trials;
   if (!write_dir.empty()) write_trial(write_dir, seed_name(m, seed), "cut", cut);
   Mesh filled = cut;
@@ -297,16 +324,15 @@ Mesh with_region_property(Mesh mesh, const std::vector<int>& region) {
   return mesh;
 }
 
-void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, bool irregular, const std::string& write_dir,
-                FairTally& tally) {
+void fair_trial(const ClosedMesh& m, std::uint64_t seed, bool noisy, const std::string& shape,
+                const std::string& write_dir, FairTally& tally) {
   Mesh mesh = m.mesh;
   if (noisy) bench::add_normal_noise(mesh, kNoise * m.h, seed);
   ClosedMesh drawn{m.name, mesh, m.h};
-  bool slit = false;
-  const std::vector<int> region =
-      irregular ? draw_irregular(drawn, seed, slit).inside : draw_balls(drawn, seed, false).inside;
+  std::string label;
+  const std::vector<int> region = draw_cut(drawn, seed, shape, false, label).inside;
   std::printf("fair  %-26s seed %3llu%s: %s%zu free: ", m.name.c_str(), static_cast<unsigned long long>(seed),
-              noisy ? ", noise" : "", irregular ? (slit ? "slit, " : "blob, ") : "", region.size());
+              noisy ? ", noise" : "", label.c_str(), region.size());
   if (region.empty()) {  // a cut with no vertex inside marks no region
     std::printf("no vertex inside the cut, not run\n");
     return;
@@ -439,7 +465,7 @@ int main(int argc, char** argv) {
       FillTally tally;
       for (const ClosedMesh& m : meshes)
         for (int t = 0; t < args.trials; ++t)
-          fill_trial(m, args.seed + static_cast<std::uint64_t>(t), args.cut == "irregular", args.write_dir, tally);
+          fill_trial(m, args.seed + static_cast<std::uint64_t>(t), args.cut, args.write_dir, tally);
       summaries.push_back(fill_summary(tally));
     }
     if (wanted("fair")) {
@@ -447,8 +473,7 @@ int main(int argc, char** argv) {
       for (const ClosedMesh& m : meshes)
         for (bool noisy : {false, true})
           for (int t = 0; t < args.trials; ++t)
-            fair_trial(m, args.seed + static_cast<std::uint64_t>(t), noisy, args.cut == "irregular", args.write_dir,
-                       tally);
+            fair_trial(m, args.seed + static_cast<std::uint64_t>(t), noisy, args.cut, args.write_dir, tally);
       summaries.push_back(fair_summary(tally));
     }
     if (wanted("blend")) {
