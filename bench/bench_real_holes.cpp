@@ -228,18 +228,16 @@ void fill_cgal([[maybe_unused]] const Mesh& cut, [[maybe_unused]] const Truth& t
   const bench::CgalResult result = bench::cgal_fill_holes(cut);
   row.has_cgal = !result.moved.empty();
   row.cgal_ok = result.ok && row.has_cgal;
+  if (row.has_cgal) {
+    row.cgal = measure(truth, result.V, result.moved, h);
+    const ContinuityMeasure border = measure_continuity(result.V, result.F, result.moved);
+    if (border.border_vertices > 0) row.cgal_angle = border.max_normal_angle;
+  }
   if (result.ok) {
     Mesh filled;
     filled.V = result.V;
     filled.F = result.F;
     row.cgal.removed_mean = bench::removed_mean(truth, filled, h);
-  }
-  if (row.has_cgal) {
-    const double removed = row.cgal.removed_mean;
-    row.cgal = measure(truth, result.V, result.moved, h);
-    row.cgal.removed_mean = removed;
-    const ContinuityMeasure border = measure_continuity(result.V, result.F, result.moved);
-    if (border.border_vertices > 0) row.cgal_angle = border.max_normal_angle;
   }
   if (!result.ok) add_note(row, "CGAL: " + std::string(result.error));
   else if (!row.has_cgal) add_note(row, "CGAL: no new vertex");

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -15,8 +14,9 @@ namespace {
 
 // The part of the mesh the fits at the border vertices see. A fit reaches its vertex's 2-ring and no
 // farther (quadratic_fit.h), so the faces among the vertices within 2 rings of the border hold every
-// neighbourhood they take: the measure costs in proportion to the border, not to the mesh (each hole
-// of a joint group of hundreds was measured on the whole group's neighbourhood).
+// neighbourhood they take: the connectivity and the fits cost in proportion to the border, and only
+// flat passes over the mesh's arrays remain in proportion to the mesh (each hole of a joint group of
+// hundreds had two connectivities derived over the whole group's neighbourhood).
 struct NearBorder {
   std::vector<int> vertices;  ///< the mesh's vertices within 2 rings of the border, ascending
   Vertices V;                 ///< their positions

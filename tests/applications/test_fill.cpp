@@ -1170,8 +1170,6 @@ TEST(FaceIntersection, FindsExactlyTheCrossingPairsOfTwoSheets) {
   EXPECT_EQ(find_face_intersections(m.V, m.F, query, 2).size(), 2u);
 }
 
-// A loop small enough that its patch has no interior vertex is closed by its triangulation alone:
-// nothing is faired, so it is labelled C0 (linear), not the continuity that was asked for.
 // The faces of one vertex removed: the fill puts a vertex back (patch_refinement.h) and fairs it
 // onto the sphere, where the loop's triangulation alone would lie flat, a sagitta below it.
 TEST(FillOneRing, AOneRingHoleIsFilledWithAVertexOnTheSurfaceNotFlat) {
@@ -1202,6 +1200,8 @@ TEST(FillOneRing, AOneRingHoleIsFilledWithAVertexOnTheSurfaceNotFlat) {
   EXPECT_LT(off_sphere, 0.1 * sagitta) << "sagitta " << sagitta;
 }
 
+// A loop small enough that its patch has no interior vertex is closed by its triangulation alone:
+// nothing is faired, so it is labelled C0 (linear), not the continuity that was asked for.
 TEST(FillLabels, APatchWithoutInteriorVertexIsLabelledC0Linear) {
   const Mesh sphere = test::icosphere(2);
   Mesh holed = sphere;
