@@ -204,16 +204,61 @@ bool takes_in_a_lone_triangle(const std::vector<HoleReport>& reports, const std:
 }
 
 bool filled_alone_instead(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
-                          const std::vector<int>& group, const FillOptions& options, const FillObserver& observer,
-                          const std::vector<HoleReport>& unfilled, std::vector<HoleReport>& reports,
-                          std::optional<Topology>& filled, std::vector<CommittedFlows>& flows);
+                          const std::vector<int>& group, const std::string& joint_outcome, const FillOptions& options,
+                          const FillObserver& observer, const std::vector<HoleReport>& unfilled,
+                          std::vector<HoleReport>& reports, std::optional<Topology>& filled,
+                          std::vector<CommittedFlows>& flows);
+
+// The order of continuity a hole's fill delivers: 2, 1, 0 for G2 or C2 (linear), G1 or C1, G0 or C0;
+// −1 for a patch left unfaired.
+int delivered_order(const HoleReport& r) { return r.unfaired ? -1 : static_cast<int>(r.supported); }
+
+// The orders of continuity the holes of `group` are delivered at, summed weighed by border edges.
+long weighed_order(const std::vector<HoleReport>& reports, const std::vector<int>& group) {
+  long sum = 0;
+  for (int h : group) sum += static_cast<long>(reports[h].border_edges) * delivered_order(reports[h]);
+  return sum;
+}
+
+// Whether the holes of `group` filled one by one (`alone`) fare better than their joint fill
+// (`joint`): every hole closes, none unfaired or folding back where the joint fill was not, and the
+// orders of continuity rise, summed over the holes weighed by their border edges, or they stay and
+// the joint fill's fold back is gone. A hole may come out lower alone, where a neighbour still open
+// when it is filled leaves it fewer complete rings than the joint patch had (bench_stress --cut
+// small-balls on spot, seed 95001: a 64-edge hole G0 instead of C1, while 19 holes beside it rise
+// from C1 to G2 or C2 and a 116-edge one no longer folds back at 145°).
+bool better_alone(const std::vector<HoleReport>& joint, const std::vector<HoleReport>& alone,
+                  const std::vector<int>& group) {
+  for (int h : group) {
+    if (alone[h].status != HoleStatus::filled) return false;
+    if ((alone[h].unfaired && !joint[h].unfaired) || (folds_back(alone[h]) && !folds_back(joint[h]))) return false;
+  }
+  const long gain = weighed_order(alone, group) - weighed_order(joint, group);
+  return gain > 0 || (gain == 0 && group_folds_back(joint, group) && !group_folds_back(alone, group));
+}
+
+// Why a joint group's fill is tried again hole by hole, or "" where it is not: the group closed
+// only unfaired, or below the requested order after its requested fairing failed (the ∆³ floor
+// crossed the mesh too, and ∆² or ∆ closed it), which one crossing among many holes can cause.
+std::string joint_shortfall(const ChainOutcome& outcome, const std::vector<HoleReport>& reports,
+                            const std::vector<int>& group, const FillOptions& options) {
+  if (group.size() < 2) return "";
+  if (outcome.start == PatchStart::unfaired) return "closed only as its refined triangulation, unfaired";
+  if (outcome.first_failure.empty()) return "";
+  const auto below = [&](int h) { return delivered_order(reports[h]) < static_cast<int>(options.continuity); };
+  const auto h = std::find_if(group.begin(), group.end(), below);
+  if (h == group.end()) return "";
+  return "closed only " + delivered_label(reports[*h].supported, reports[*h].linear) + " after its " +
+         to_string(options.continuity) + " fill failed (" + outcome.first_failure + ")";
+}
 
 // Fills `group` from the membrane and the refined triangulation (fill_from_membrane), triangulated
 // again where that fill folds back (retriangulate_if_folded_back) or fails (retriangulate_if_failed),
 // and all that again where it still fails or is delivered unfaired, with the earlier flows in its
 // way at their floors (fill_again_with_earlier_floors, FillOptions::floor_earlier_flows); commits
-// the fill, unless it folds back against a lone triangle it takes in or, left unfaired, its holes
-// close better one by one (filled_alone_instead), and keeps its flows' floors in `flows`.
+// the fill, unless it folds back against a lone triangle it takes in or, closed short of what was
+// asked (joint_shortfall), its holes close better one by one (filled_alone_instead), and keeps its
+// flows' floors in `flows`.
 void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                              const std::vector<int>& group, const std::vector<std::vector<int>>& patch_loops,
                              const FillOptions& options, const FillObserver& observer,
@@ -251,8 +296,9 @@ void fill_group_falling_back(Mesh& mesh, const Topology& topo, const std::vector
     return;
   }
   if (!outcome.reason.empty()) return;
-  if (group.size() > 1 && outcome.start == PatchStart::unfaired &&
-      filled_alone_instead(mesh, topo, loops, group, options, observer, unfilled, reports, filled, flows))
+  if (const std::string shortfall = joint_shortfall(outcome, reports, group, options);
+      !shortfall.empty() &&
+      filled_alone_instead(mesh, topo, loops, group, shortfall, options, observer, unfilled, reports, filled, flows))
     return;
   const int first_face = mesh.num_faces();
   std::vector<HoleFloor> floors = std::move(outcome.filled.floors);
@@ -287,10 +333,10 @@ bool beside_a_lone_triangle(const std::vector<std::vector<int>>& loops, const st
   return fill_detail::flagged_loop_at_a_pinch(loops, h, lone).first >= 0;
 }
 
-// A joint group that failed as a whole (fill_group_falling_back), or that only its refined
-// triangulation unfaired closed (filled_alone_instead): each hole again alone, in order, the others
-// open or as filled before it, so that one hole no fairing can close (the outer border of an open
-// surface) does not keep the holes whose rings overlap its own open or unfaired. A hole filled alone
+// A joint group that failed as a whole (fill_group_falling_back), or that closed short of what was
+// asked (filled_alone_instead): each hole again alone, in the order of `group`, the others open or
+// as filled before it, so that one hole no fairing can close (the outer border of an open surface)
+// does not keep the holes whose rings overlap its own open or unfaired. A hole filled alone
 // says what the joint fill did (`joint_outcome`: "failed (...)"); one that fails alone keeps its own
 // reason with the joint one, which it does not repeat where it failed for the same (`joint_failure`).
 void fill_group_one_by_one(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
@@ -320,32 +366,53 @@ void fill_group_one_by_one(Mesh& mesh, const Topology& topo, const std::vector<s
   }
 }
 
-// A joint group that only its refined triangulation unfaired closed (C0: every fairing of the joint
-// patch failed or crossed the mesh), filled again hole by hole (fill_group_one_by_one) on a copy of
-// `mesh`, before the group's fill is committed. The copy replaces it where every hole of the group
-// closes and one at least is faired: one opening no fairing closes no longer leaves the openings
-// beside it unfaired (bench_stress on Demosthenes, seed 21005: a 43-edge hole beside a 146-edge
-// one closes C2 (linear) alone). `unfilled`: the group's reports before its fill. Returns whether
-// it replaced the group's fill.
+// A joint group's holes filled one by one on a copy of the mesh (fill_group_one_by_one).
+struct AloneFill {
+  Mesh mesh;
+  std::optional<Topology> topology;
+  std::vector<CommittedFlows> flows;
+  std::vector<HoleReport> reports;
+};
+
+// A joint group that closed short of what was asked (joint_shortfall, said by `joint_outcome`: only
+// its refined triangulation unfaired, or ∆² or ∆ after every higher fairing of the joint patch
+// crossed the mesh), filled again hole by hole (fill_group_one_by_one) on a copy of `mesh`, before
+// the group's fill is committed: one opening no fairing closes no longer leaves the openings beside
+// it unfaired (bench_stress on Demosthenes, seed 21005: a 43-edge hole beside a 146-edge one closes
+// C2 (linear) alone), and one crossing among 81 small holes no longer leaves them all at the
+// membrane (bench_stress --cut small-balls on blub, seed 95005). The holes go in index order and
+// shortest first: a hole filled later has its neighbours' patches in its fixed rings, where an open
+// neighbour leaves it fewer complete rings and a lower order. Which order serves best depends on the
+// group (on Demosthenes the 146-edge hole, unfaired, gives its small neighbour its rings; on spot,
+// seed 95001, a 64-edge hole comes out G0 in index order and G2 shortest first). The copy with the
+// higher weighed order that fares better than the joint fill (better_alone) replaces it; ties go to
+// index order. `unfilled`: the group's reports before its fill. Returns whether it replaced the
+// group's fill.
 bool filled_alone_instead(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
-                          const std::vector<int>& group, const FillOptions& options, const FillObserver& observer,
-                          const std::vector<HoleReport>& unfilled, std::vector<HoleReport>& reports,
-                          std::optional<Topology>& filled, std::vector<CommittedFlows>& flows) {
-  Mesh alone = mesh;
-  std::optional<Topology> alone_topology = filled;
-  std::vector<CommittedFlows> alone_flows = flows;
-  std::vector<HoleReport> alone_reports = reports;
-  for (std::size_t k = 0; k < group.size(); ++k) alone_reports[group[k]] = unfilled[k];
-  fill_group_one_by_one(alone, topo, loops, group, "closed only as its refined triangulation, unfaired", "",
-                        options, observer, alone_reports, alone_topology, alone_flows);
-  const auto closed = [&](int h) { return alone_reports[h].status == HoleStatus::filled; };
-  const auto faired = [&](int h) { return closed(h) && !alone_reports[h].unfaired; };
-  if (!std::all_of(group.begin(), group.end(), closed) || !std::any_of(group.begin(), group.end(), faired))
-    return false;
-  mesh = std::move(alone);
-  filled = std::move(alone_topology);
-  flows = std::move(alone_flows);
-  reports = std::move(alone_reports);
+                          const std::vector<int>& group, const std::string& joint_outcome, const FillOptions& options,
+                          const FillObserver& observer, const std::vector<HoleReport>& unfilled,
+                          std::vector<HoleReport>& reports, std::optional<Topology>& filled,
+                          std::vector<CommittedFlows>& flows) {
+  std::optional<AloneFill> best;
+  const auto fill_alone = [&](const std::vector<int>& order) {
+    AloneFill alone{mesh, filled, flows, reports};
+    for (std::size_t k = 0; k < group.size(); ++k) alone.reports[group[k]] = unfilled[k];
+    fill_group_one_by_one(alone.mesh, topo, loops, order, joint_outcome, "", options, observer, alone.reports,
+                          alone.topology, alone.flows);
+    if (better_alone(reports, alone.reports, group) &&
+        (!best || weighed_order(alone.reports, group) > weighed_order(best->reports, group)))
+      best = std::move(alone);
+  };
+  fill_alone(group);
+  std::vector<int> shortest_first = group;
+  std::stable_sort(shortest_first.begin(), shortest_first.end(),
+                   [&](int a, int b) { return loops[a].size() < loops[b].size(); });
+  if (shortest_first != group) fill_alone(shortest_first);
+  if (!best) return false;
+  mesh = std::move(best->mesh);
+  filled = std::move(best->topology);
+  flows = std::move(best->flows);
+  reports = std::move(best->reports);
   return true;
 }
 

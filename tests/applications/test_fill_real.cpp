@@ -1698,3 +1698,37 @@ TEST(RealHoleJointGroup, AGroupLeftUnfairedIsFilledAgainHoleByHole) {
   EXPECT_TRUE(boundary_loops(filled.F, build_topology(filled.F, filled.num_vertices())).empty());
   EXPECT_FALSE(test::new_faces_cross(holed, filled));
 }
+
+// Five holes of a stress run on spot (bench_stress --cut small-balls, seed 95001; the other holes
+// of that run filled beforehand) whose rings overlap, one of 116 edges round a horn. Filled jointly,
+// every G2 and ∆³ fairing of the joint patch crossed the mesh and ∆² closed them, all C1 (linear).
+// Each hole is now filled again alone, shortest loop first, and the group comes out higher: the
+// horn's hole C2 (linear) and clear of folding back (in index order, filled before its neighbours,
+// it stays C1), one hole at G2.
+TEST(RealHoleJointGroup, AGroupClosedBelowItsOrderAfterACrossingIsFilledAgainHoleByHole) {
+  const Mesh holed = read_mesh(FAIRSURF_TEST_DATA_DIR "/spot_joint_holes_short.ply");
+  Mesh filled = holed;
+  const FillReport r = fill_holes(filled, FillOptions{});
+  ASSERT_EQ(r.holes.size(), 6u);
+  EXPECT_EQ(r.filled, 5);
+  int g2 = 0;
+  for (const HoleReport& hole : r.holes) {
+    if (hole.around_a_face) continue;  // a lone triangle's loop, never filled alone
+    SCOPED_TRACE(hole.note);
+    ASSERT_EQ(hole.status, HoleStatus::filled) << hole.reason;
+    EXPECT_NE(hole.note.find("closed only C1 (linear) after its G2 fill failed (the faired patch crosses the mesh"),
+              std::string::npos);
+    EXPECT_NE(hole.note.find("; filled alone"), std::string::npos);
+    EXPECT_TRUE(hole.filled_with.empty());
+    EXPECT_FALSE(folds_back(hole));
+    g2 += delivered_label(hole.supported, hole.linear) == "G2";
+  }
+  const HoleReport& horn = r.holes[0];
+  EXPECT_EQ(horn.border_edges, 116);
+  EXPECT_EQ(delivered_label(horn.supported, horn.linear), "C2 (linear)") << horn.note;
+  EXPECT_GE(g2, 1);
+  EXPECT_FALSE(test::new_faces_cross(holed, filled));
+  const ValidationReport checked = validate(filled);
+  EXPECT_TRUE(checked.manifold());
+  EXPECT_TRUE(checked.orientable());
+}
