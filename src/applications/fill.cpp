@@ -407,7 +407,9 @@ bool filled_alone_instead(Mesh& mesh, const Topology& topo, const std::vector<st
   std::vector<int> shortest_first = group;
   std::stable_sort(shortest_first.begin(), shortest_first.end(),
                    [&](int a, int b) { return loops[a].size() < loops[b].size(); });
-  if (shortest_first != group) fill_alone(shortest_first);
+  long highest = 0;  // every hole at the requested order: no order can do better
+  for (int h : group) highest += static_cast<long>(reports[h].border_edges) * static_cast<int>(options.continuity);
+  if (shortest_first != group && !(best && weighed_order(best->reports, group) == highest)) fill_alone(shortest_first);
   if (!best) return false;
   mesh = std::move(best->mesh);
   filled = std::move(best->topology);
