@@ -239,16 +239,19 @@ bool better_alone(const std::vector<HoleReport>& joint, const std::vector<HoleRe
 
 // Why a joint group's fill is tried again hole by hole, or "" where it is not: the group closed
 // only unfaired, or below the requested order after its requested fairing failed (the ∆³ floor
-// crossed the mesh too, and ∆² or ∆ closed it), which one crossing among many holes can cause.
+// crossed the mesh too, and ∆² or ∆ closed it), which one crossing among many holes can cause. A
+// group whose retried flow or ∆³ closed it is not, though its loops without interior vertex are C0.
 std::string joint_shortfall(const ChainOutcome& outcome, const std::vector<HoleReport>& reports,
                             const std::vector<int>& group, const FillOptions& options) {
   if (group.size() < 2) return "";
   if (outcome.start == PatchStart::unfaired) return "closed only as its refined triangulation, unfaired";
   if (outcome.first_failure.empty()) return "";
-  const auto below = [&](int h) { return delivered_order(reports[h]) < static_cast<int>(options.continuity); };
-  const auto h = std::find_if(group.begin(), group.end(), below);
-  if (h == group.end()) return "";
-  return "closed only " + delivered_label(reports[*h].supported, reports[*h].linear) + " after its " +
+  // The group's fairing is its highest order: a loop without interior vertex is C0 under any.
+  const auto h = *std::max_element(group.begin(), group.end(), [&](int a, int b) {
+    return delivered_order(reports[a]) < delivered_order(reports[b]);
+  });
+  if (delivered_order(reports[h]) >= static_cast<int>(options.continuity)) return "";
+  return "closed only " + delivered_label(reports[h].supported, reports[h].linear) + " after its " +
          to_string(options.continuity) + " fill failed (" + outcome.first_failure + ")";
 }
 
