@@ -383,14 +383,15 @@ struct AloneFill {
 // the group's fill is committed: one opening no fairing closes no longer leaves the openings beside
 // it unfaired (bench_stress on Demosthenes, seed 21005: a 43-edge hole beside a 146-edge one closes
 // C2 (linear) alone), and one crossing among 81 small holes no longer leaves them all at the
-// membrane (bench_stress --cut small-balls on blub, seed 95005). The holes go in index order and
-// shortest first: a hole filled later has its neighbours' patches in its fixed rings, where an open
-// neighbour leaves it fewer complete rings and a lower order. Which order serves best depends on the
-// group (on Demosthenes the 146-edge hole, unfaired, gives its small neighbour its rings; on spot,
-// seed 95001, a 64-edge hole comes out G0 in index order and G2 shortest first). The copy with the
-// higher weighed order that fares better than the joint fill (better_alone) replaces it; ties go to
-// index order. `unfilled`: the group's reports before its fill. Returns whether it replaced the
-// group's fill.
+// membrane (bench_stress --cut small-balls on blub, seed 95005). The holes go once in index order
+// and once shortest first: a hole filled later has its neighbours' patches in its fixed rings,
+// where an open neighbour leaves it fewer complete rings and a lower order. Which order serves best
+// depends on the group (on Demosthenes the 146-edge hole, unfaired, gives its small neighbour its
+// rings; on spot, seed 95001, a 64-edge hole comes out G0 in index order and G2 shortest first).
+// The copy with the higher weighed order that fares better than the joint fill (better_alone)
+// replaces it; ties go to index order, and the second order is skipped where the first delivers
+// every hole at the requested order. `unfilled`: the group's reports before its fill. Returns
+// whether it replaced the group's fill.
 bool filled_alone_instead(Mesh& mesh, const Topology& topo, const std::vector<std::vector<int>>& loops,
                           const std::vector<int>& group, const std::string& joint_outcome, const FillOptions& options,
                           const FillObserver& observer, const std::vector<HoleReport>& unfilled,
@@ -410,7 +411,7 @@ bool filled_alone_instead(Mesh& mesh, const Topology& topo, const std::vector<st
   std::vector<int> shortest_first = group;
   std::stable_sort(shortest_first.begin(), shortest_first.end(),
                    [&](int a, int b) { return loops[a].size() < loops[b].size(); });
-  long highest = 0;  // every hole at the requested order: no order can do better
+  long highest = 0;
   for (int h : group) highest += static_cast<long>(reports[h].border_edges) * static_cast<int>(options.continuity);
   if (shortest_first != group && !(best && weighed_order(best->reports, group) == highest)) fill_alone(shortest_first);
   if (!best) return false;
