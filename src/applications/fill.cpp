@@ -221,17 +221,21 @@ long weighed_order(const std::vector<HoleReport>& reports, const std::vector<int
 }
 
 // Whether the holes of `group` filled one by one (`alone`) fare better than their joint fill
-// (`joint`): every hole closes, none unfaired or folding back where the joint fill was not, and the
-// orders of continuity rise, summed over the holes weighed by their border edges, or they stay and
-// the joint fill's fold back is gone. A hole may come out lower alone, where a neighbour still open
-// when it is filled leaves it fewer complete rings than the joint patch had (bench_stress --cut
-// small-balls on spot, seed 95001: a 64-edge hole G0 instead of C1, while 19 holes beside it rise
-// from C1 to G2 or C2 and a 116-edge one no longer folds back at 145°).
+// (`joint`): every hole closes, none unfaired where the joint fill was not, none folding back where
+// it did not or further than it did (the edges of fins, data/triple_vierbein.obj repaired: a G2
+// fill at 158° is no better than the joint C0 at 153°), and the orders of continuity rise, summed
+// over the holes weighed by their border edges, or they stay and the joint fill's fold back is
+// gone. A hole may come out lower alone, where a neighbour still open when it is filled leaves it
+// fewer complete rings than the joint patch had (bench_stress --cut small-balls on spot, seed
+// 95001: a 64-edge hole G0 instead of C1, while 19 holes beside it rise from C1 to G2 or C2 and a
+// 116-edge one no longer folds back at 145°).
 bool better_alone(const std::vector<HoleReport>& joint, const std::vector<HoleReport>& alone,
                   const std::vector<int>& group) {
   for (int h : group) {
-    if (alone[h].status != HoleStatus::filled) return false;
-    if ((alone[h].unfaired && !joint[h].unfaired) || (folds_back(alone[h]) && !folds_back(joint[h]))) return false;
+    if (alone[h].status != HoleStatus::filled || (alone[h].unfaired && !joint[h].unfaired)) return false;
+    if (folds_back(alone[h]) && (!folds_back(joint[h]) || alone[h].continuity.max_normal_angle >
+                                                              joint[h].continuity.max_normal_angle))
+      return false;
   }
   const long gain = weighed_order(alone, group) - weighed_order(joint, group);
   return gain > 0 || (gain == 0 && group_folds_back(joint, group) && !group_folds_back(alone, group));
