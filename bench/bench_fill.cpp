@@ -25,6 +25,7 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,22 +36,45 @@ namespace {
 
 using namespace fairsurf;
 
-// The icosphere of `subdivisions` without the faces for which `removed(corners)` holds (the
-// vertices stay, unused).
+// `mesh` without the faces for which `removed(f)` holds (the vertices stay, unused).
+Mesh without_faces(const Mesh& mesh, const std::function<bool(int)>& removed) {
+  Mesh out;
+  out.V = mesh.V;
+  std::vector<int> kept;
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    if (!removed(f)) kept.push_back(f);
+  out.F = mesh.F(kept, Eigen::all);
+  return out;
+}
+
+// The icosphere of `subdivisions` without the faces for which `removed(corners)` holds.
 Mesh icosphere_without(int subdivisions, const std::function<bool(const std::array<Eigen::Vector3d, 3>&)>& removed) {
   const Mesh sphere = bench::icosphere(subdivisions);
-  Mesh out;
-  out.V = sphere.V;
-  std::vector<int> kept;
-  for (int f = 0; f < sphere.num_faces(); ++f) {
-    const std::array<Eigen::Vector3d, 3> corners{sphere.V.row(sphere.F(f, 0)).transpose(),
-                                                  sphere.V.row(sphere.F(f, 1)).transpose(),
-                                                  sphere.V.row(sphere.F(f, 2)).transpose()};
-    if (!removed(corners)) kept.push_back(f);
+  return without_faces(sphere, [&](int f) {
+    return removed({sphere.V.row(sphere.F(f, 0)).transpose(), sphere.V.row(sphere.F(f, 1)).transpose(),
+                    sphere.V.row(sphere.F(f, 2)).transpose()});
+  });
+}
+
+// `count` points spread evenly over the unit sphere (a Fibonacci lattice).
+std::vector<Eigen::Vector3d> fibonacci_points(int count) {
+  std::vector<Eigen::Vector3d> points;
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < count; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / count, r = std::sqrt(1.0 - z * z);
+    points.emplace_back(r * std::cos(golden * i), r * std::sin(golden * i), z);
   }
-  out.F.resize(static_cast<int>(kept.size()), 3);
-  for (int i = 0; i < static_cast<int>(kept.size()); ++i) out.F.row(i) = sphere.F.row(kept[i]);
-  return out;
+  return points;
+}
+
+// fill_holes with the defaults on `mesh`, or nullopt after saying why it threw (`what`: the case).
+std::optional<FillReport> fill_or_say(Mesh& mesh, const std::string& what) {
+  try {
+    return fill_holes(mesh, FillOptions{});
+  } catch (const Error& e) {
+    std::printf("%s: failed: %s\n", what.c_str(), e.what());
+    return std::nullopt;
+  }
 }
 
 // The icosphere without the faces that have a vertex above z = cap.
@@ -98,12 +122,7 @@ int run_case(int subdivisions, double cap, FairMethod method) {
 // The icosphere without the faces whose three vertices lie within `radius` of one of ten points
 // spread over it (a Fibonacci lattice).
 Mesh sphere_with_small_holes(int subdivisions, double radius) {
-  std::vector<Eigen::Vector3d> centres;
-  const double golden = M_PI * (3.0 - std::sqrt(5.0));
-  for (int i = 0; i < 10; ++i) {
-    const double z = 1.0 - (2.0 * i + 1.0) / 10.0, r = std::sqrt(1.0 - z * z);
-    centres.emplace_back(r * std::cos(golden * i), r * std::sin(golden * i), z);
-  }
+  const std::vector<Eigen::Vector3d> centres = fibonacci_points(10);
   return icosphere_without(subdivisions, [&](const std::array<Eigen::Vector3d, 3>& corners) {
     return std::any_of(centres.begin(), centres.end(), [&](const Eigen::Vector3d& c) {
       return std::all_of(corners.begin(), corners.end(),
@@ -118,13 +137,9 @@ int run_small_holes(int subdivisions) {
   const double edge = 1.1 * std::pow(0.5, subdivisions);  // the icosphere's mean edge, to a few percent
   Mesh mesh = sphere_with_small_holes(subdivisions, 4 * edge);
   const int input_vertices = mesh.num_vertices();
-  FillReport report;
-  try {
-    report = fill_holes(mesh, FillOptions{});
-  } catch (const Error& e) {
-    std::printf("%d subdivisions, small holes: failed: %s\n", subdivisions, e.what());
-    return 1;
-  }
+  const std::optional<FillReport> filled = fill_or_say(mesh, std::to_string(subdivisions) + " subdivisions, small holes");
+  if (!filled) return 1;
+  const FillReport& report = *filled;
   double total = 0, slowest = 0;
   int g2 = 0;
   for (const HoleReport& h : report.holes) {
@@ -145,33 +160,22 @@ int run_small_holes(int subdivisions) {
 Mesh sphere_with_one_ring_holes(int subdivisions, int count) {
   const Mesh sphere = bench::icosphere(subdivisions);
   std::vector<char> removed(sphere.num_vertices(), 0);
-  const double golden = M_PI * (3.0 - std::sqrt(5.0));
-  for (int i = 0; i < count; ++i) {
-    const double z = 1.0 - (2.0 * i + 1.0) / count, r = std::sqrt(1.0 - z * z);
-    const Eigen::RowVector3d p(r * std::cos(golden * i), r * std::sin(golden * i), z);
+  for (const Eigen::Vector3d& p : fibonacci_points(count)) {
     Eigen::Index nearest = 0;
-    (sphere.V.rowwise() - p).rowwise().squaredNorm().minCoeff(&nearest);
+    (sphere.V.rowwise() - p.transpose()).rowwise().squaredNorm().minCoeff(&nearest);
     removed[nearest] = 1;
   }
-  Mesh out;
-  out.V = sphere.V;
-  std::vector<int> kept;
-  for (int f = 0; f < sphere.num_faces(); ++f)
-    if (!removed[sphere.F(f, 0)] && !removed[sphere.F(f, 1)] && !removed[sphere.F(f, 2)]) kept.push_back(f);
-  out.F = sphere.F(kept, Eigen::all);
-  return out;
+  return without_faces(sphere, [&](int f) {
+    return removed[sphere.F(f, 0)] || removed[sphere.F(f, 1)] || removed[sphere.F(f, 2)];
+  });
 }
 
 // `count` one-ring holes on an icosphere of 6 subdivisions: seconds a hole as they crowd.
 int run_one_ring_holes(int count) {
   Mesh mesh = sphere_with_one_ring_holes(6, count);
-  FillReport report;
-  try {
-    report = fill_holes(mesh, FillOptions{});
-  } catch (const Error& e) {
-    std::printf("%d one-ring holes: failed: %s\n", count, e.what());
-    return 1;
-  }
+  const std::optional<FillReport> filled = fill_or_say(mesh, std::to_string(count) + " one-ring holes");
+  if (!filled) return 1;
+  const FillReport& report = *filled;
   std::size_t largest_group = 1;
   for (const HoleReport& h : report.holes) largest_group = std::max(largest_group, h.filled_with.size() + 1);
   const int holes = static_cast<int>(report.holes.size());
