@@ -29,21 +29,62 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 Vec3 point(const Vertices& V, int v) { return V.row(v).transpose(); }
 
-// Unnormalized normal of the triangle (a, b, c), counter-clockwise; zero if degenerate.
-Vec3 triangle_normal(const Vertices& V, int a, int b, int c) {
-  const Vec3 pa = point(V, a), pb = point(V, b), pc = point(V, c);
+// Unnormalized normal of the triangle (pa, pb, pc), counter-clockwise; zero if degenerate.
+Vec3 triangle_normal(const Vec3& pa, const Vec3& pb, const Vec3& pc) {
   const Vec3 n = (pb - pa).cross(pc - pa);
   const double longest = std::max({(pb - pa).squaredNorm(), (pc - pb).squaredNorm(),
                                    (pa - pc).squaredNorm()});
   return n.norm() <= 1e-12 * longest ? Vec3::Zero() : n;
 }
 
+Vec3 triangle_normal(const Vertices& V, int a, int b, int c) {
+  return triangle_normal(point(V, a), point(V, b), point(V, c));
+}
+
+// The angle between two normals by its sine and cosine, each times |n1||n2|; `missing` where either
+// normal is (a degenerate triangle).
+struct Turn {
+  double sine = 0, cosine = 1;
+  bool missing = false;
+};
+
+Turn turn_between(const Vec3& n1, const Vec3& n2) {
+  if (n1.isZero() || n2.isZero()) return {0, 1, true};
+  return {n1.cross(n2).norm(), n1.dot(n2), false};
+}
+
+// The angle, in [0, π]; π where a normal is missing.
+double angle_of(const Turn& t) { return t.missing ? std::numbers::pi : std::atan2(t.sine, t.cosine); }
+
 // Angle between two normals, in [0, π]; π when either is missing (degenerate triangle). atan2 of
 // the sine and cosine stays accurate near 0, where acos of the dot product would lose half the digits.
-double dihedral(const Vec3& n1, const Vec3& n2) {
-  if (n1.isZero() || n2.isZero()) return std::numbers::pi;
-  return std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+double dihedral(const Vec3& n1, const Vec3& n2) { return angle_of(turn_between(n1, n2)); }
+
+// The sign of the turn's angle minus `limit` (in [0, π), given by its cosine and sine) where it is
+// sure, 0 where it is too close to tell or a normal is missing: the sign of sin(angle − limit)
+// times |n1||n2|, without the arctangent. The margin is far above the rounding of both sides, so a
+// sure sign is the sign that angle_of(t) − limit has as computed.
+int sure_sign(const Turn& t, double cos_limit, double sin_limit) {
+  if (t.missing) return 0;
+  const double x = t.sine * cos_limit - t.cosine * sin_limit, margin = 1e-12 * (t.sine + std::abs(t.cosine));
+  return x > margin ? 1 : x < -margin ? -1 : 0;
 }
+
+// The cosine and sine of the last angle asked for: the programme asks for the same few angles
+// (a sub-polygon's largest, the best candidate's) over and over.
+class CachedSinCos {
+ public:
+  void set(double angle) {
+    if (angle == angle_) return;
+    angle_ = angle;
+    cos_ = std::cos(angle), sin_ = std::sin(angle);
+  }
+  double cos() const { return cos_; }
+  double sin() const { return sin_; }
+
+ private:
+  double angle_ = std::numeric_limits<double>::quiet_NaN(), cos_ = 1, sin_ = 0;
+};
 
 // Liepa's weight, preceded under the Delaunay restriction by the count of triangles that are not
 // faces of the loop's tetrahedralization (`outside`, 0 without the restriction).
@@ -403,8 +444,11 @@ class Triangulator {
     std::vector<Vec3> apex_normal(static_cast<std::size_t>(m) * m, Vec3::Zero());
     const auto at = [m](int i, int k) { return static_cast<std::size_t>(i) * m + k; };
     const auto vertex = [&](int i) { return poly.vertices[i]; };
+    std::vector<Vec3> position(static_cast<std::size_t>(m));
+    for (int i = 0; i < m; ++i) position[i] = point(V_, vertex(i));
     // New triangles list the loop positions i < j < k as (k, j, i): reversed loop order.
-    const auto normal = [&](int i, int j, int k) { return triangle_normal(V_, vertex(k), vertex(j), vertex(i)); };
+    const auto normal = [&](int i, int j, int k) { return triangle_normal(position[k], position[j], position[i]); };
+    CachedSinCos at_limit, at_below;
     // Normal of the face across the side or diagonal (i, k) seen from inside [i, k].
     const auto inner_normal = [&](int i, int k) -> const Vec3& {
       return k == i + 1 ? poly.side_normals[i] : apex_normal[at(i, k)];
@@ -416,9 +460,6 @@ class Triangulator {
         Weight best{kInfinity, kInfinity, kUnreached};
         if (top || admissible_diagonal(vertex(i), vertex(k)))
           for (int j = i + 1; j < k; ++j) {
-            if (!forbidden_.triangles.empty() &&
-                forbidden_.triangles.contains(triangle_key(vertex(i), vertex(j), vertex(k))))
-              continue;
             const Weight& left = weight[at(i, j)];
             const Weight& right = weight[at(j, k)];
             if (left.outside == kUnreached || right.outside == kUnreached) continue;
@@ -428,11 +469,30 @@ class Triangulator {
             // before any trigonometry (this prunes most candidates).
             const double below = std::max(left.angle, right.angle);
             if (below > bound || (outside == best.outside && below > best.angle + kAngleTie)) continue;
+            if (!forbidden_.triangles.empty() &&
+                forbidden_.triangles.contains(triangle_key(vertex(i), vertex(j), vertex(k))))
+              continue;
             const Vec3 n = normal(i, j, k);
-            double angle = std::max({left.angle, right.angle, dihedral(n, inner_normal(i, j)),
-                                     dihedral(n, inner_normal(j, k))});
-            if (top && !poly.side_normals[m - 1].isZero())
-              angle = std::max(angle, dihedral(n, poly.side_normals[m - 1]));
+            const bool closing = top && !poly.side_normals[m - 1].isZero();
+            const std::array<Turn, 3> turns{turn_between(n, inner_normal(i, j)), turn_between(n, inner_normal(j, k)),
+                                            closing ? turn_between(n, poly.side_normals[m - 1]) : Turn{}};
+            const int count = closing ? 3 : 2;
+            // Above `limit` the candidate is rejected (by `bound`, or as heavier than `best`): a turn
+            // surely above it rejects the candidate before any arctangent. A turn surely below the
+            // sub-polygons' largest angle cannot raise it: on a folded loop most candidates tie
+            // there, and area decides. The angle is the same as from every arctangent.
+            const double limit = outside == best.outside ? std::min(bound, best.angle + kAngleTie) : bound;
+            if (limit < std::numbers::pi) {
+              at_limit.set(limit);
+              if (std::any_of(turns.begin(), turns.begin() + count,
+                              [&](const Turn& t) { return sure_sign(t, at_limit.cos(), at_limit.sin()) > 0; }))
+                continue;
+            }
+            double angle = below;
+            if (below < std::numbers::pi) at_below.set(below);
+            for (int t = 0; t < count; ++t)
+              if (below >= std::numbers::pi || sure_sign(turns[t], at_below.cos(), at_below.sin()) >= 0)
+                angle = std::max(angle, angle_of(turns[t]));
             if (angle > bound) continue;
             const Weight w{angle, left.area + right.area + 0.5 * n.norm(), outside};
             if (lighter(w, best)) best = w, apex[at(i, k)] = j;
