@@ -150,28 +150,8 @@ EdgeLengths edge_lengths(const Mesh& input, const std::vector<std::vector<int>>&
   return e;
 }
 
-// An annulus whose inner border is an irregular, non-planar polygon of n vertices (random radii and
-// angles, fixed seed) and whose outer border is a circle of radius 3; the hole is the inner loop.
-Mesh irregular_annulus(int n, unsigned seed, double waviness) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> radius(0.6, 1.2), jitter(-0.3, 0.3);
-  Mesh m;
-  m.V.resize(2 * n, 3);
-  for (int i = 0; i < n; ++i) {
-    const double t = 2 * std::numbers::pi * (i + jitter(rng)) / n;
-    const double r = radius(rng);
-    m.V.row(i) << r * std::cos(t), r * std::sin(t), waviness * std::sin(3 * t) + 0.1 * waviness * jitter(rng);
-    const double u = 2 * std::numbers::pi * i / n;
-    m.V.row(n + i) << 3 * std::cos(u), 3 * std::sin(u), 0.0;
-  }
-  m.F.resize(2 * n, 3);
-  for (int i = 0; i < n; ++i) {
-    const int a = i, b = (i + 1) % n;
-    m.F.row(2 * i) << a, n + i, n + b;  // counter-clockwise seen from +z
-    m.F.row(2 * i + 1) << a, n + b, b;
-  }
-  return m;
-}
+// The annulus of hole_meshes.h round a gently waved polygon; the hole is the inner loop.
+Mesh irregular_annulus(int n, unsigned seed, double waviness) { return test::wavy_annulus(n, seed, waviness); }
 
 // The loop of a holed grid that is not the grid's outer border (vertex 0 is a grid corner).
 std::vector<int> grid_hole(const Mesh& m) {

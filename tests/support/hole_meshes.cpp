@@ -116,6 +116,27 @@ Mesh sphere_hole_with_lone_triangle(int* pinch) {
   return m;
 }
 
+Mesh wavy_annulus(int n, unsigned seed, double amplitude, int waves, double height_jitter) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> radius(0.6, 1.2), jitter(-0.3, 0.3);
+  Mesh m;
+  m.V.resize(2 * n, 3);
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * (i + jitter(rng)) / n;
+    const double r = radius(rng);
+    m.V.row(i) << r * std::cos(t), r * std::sin(t), amplitude * std::sin(waves * t) + height_jitter * amplitude * jitter(rng);
+    const double u = 2 * std::numbers::pi * i / n;
+    m.V.row(n + i) << 3 * std::cos(u), 3 * std::sin(u), 0.0;
+  }
+  m.F.resize(2 * n, 3);
+  for (int i = 0; i < n; ++i) {
+    const int a = i, b = (i + 1) % n;
+    m.F.row(2 * i) << a, n + i, n + b;  // counter-clockwise seen from +z
+    m.F.row(2 * i + 1) << a, n + b, b;
+  }
+  return m;
+}
+
 Mesh s_sheet_with_hole() {
   Mesh sheet = saddle_patch(12, 1.0);
   for (int v = 0; v < sheet.num_vertices(); ++v) sheet.V(v, 2) = 0.5 * std::sin(std::numbers::pi * sheet.V(v, 0));

@@ -31,6 +31,12 @@ Mesh cut_faces(const Mesh& mesh, std::span<const int> faces);
 /// faces `filled` keeps first) crosses a face of `filled` (face_intersection.h).
 bool new_faces_cross(const Mesh& holed, const Mesh& filled);
 
+/// An annulus whose inner border is an irregular, non-planar polygon of n vertices (random radii
+/// 0.6–1.2 and angles, fixed seed) at height `amplitude` sin(waves θ) plus up to `height_jitter`
+/// times `amplitude` at random, and whose outer border is a flat circle of radius 3; the hole is the
+/// inner loop (the one through vertex 0). High crowns (amplitude 3–8) fold every triangulation.
+Mesh wavy_annulus(int n, unsigned seed, double amplitude, int waves = 3, double height_jitter = 0.1);
+
 /// A sheet bent into an S, z = 0.5 sin(πx) over [-1, 1]² (12 × 12 squares), with a small hole near
 /// its edge: the rings of the hole and of the sheet's outer border overlap, so fill takes them as
 /// one group, and every patch of the outer border crosses the sheet where it passes through the
