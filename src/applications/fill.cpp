@@ -415,9 +415,12 @@ bool filled_alone_instead(Mesh& mesh, const Topology& topo, const std::vector<st
   std::vector<int> shortest_first = group;
   std::stable_sort(shortest_first.begin(), shortest_first.end(),
                    [&](int a, int b) { return loops[a].size() < loops[b].size(); });
-  long highest = 0;
-  for (int h : group) highest += static_cast<long>(reports[h].border_edges) * static_cast<int>(options.continuity);
-  if (shortest_first != group && !(best && weighed_order(best->reports, group) == highest)) fill_alone(shortest_first);
+  const auto every_hole_at_requested_order = [&](const AloneFill& fill) {
+    return std::all_of(group.begin(), group.end(), [&](int h) {
+      return delivered_order(fill.reports[h]) == static_cast<int>(options.continuity);
+    });
+  };
+  if (shortest_first != group && !(best && every_hole_at_requested_order(*best))) fill_alone(shortest_first);
   if (!best) return false;
   mesh = std::move(best->mesh);
   filled = std::move(best->topology);
